@@ -1,0 +1,76 @@
+#include "renderer/settings.h"
+
+#include <utility>
+
+namespace raylab {
+namespace {
+
+const std::pair<KeyStrategy, const char*> kStrategyNames[] = {
+    {KeyStrategy::None, "none"},
+    {KeyStrategy::DeadLast, "dead-last"},
+    {KeyStrategy::Fixed, "fixed"},
+    {KeyStrategy::Average, "average"},
+    {KeyStrategy::Ema, "ema"},
+    {KeyStrategy::Gaussian, "gaussian"},
+    {KeyStrategy::Origin, "origin"},
+    {KeyStrategy::Direction, "direction"},
+    {KeyStrategy::OriginDirection, "origin-direction"},
+    {KeyStrategy::TwoPoint, "two-point"},
+    {KeyStrategy::Oracle, "oracle"},
+};
+const std::pair<SortAlgorithm, const char*> kSortNames[] = {
+    {SortAlgorithm::None, "none"}, {SortAlgorithm::Bitonic, "bitonic"}, {SortAlgorithm::Radix, "radix"}};
+const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},
+                                                       {Kernel::Megakernel, "megakernel"}};
+
+template <class E, size_t N>
+std::string nameOf(const std::pair<E, const char*> (&table)[N], E value) {
+  for (const auto& [v, n] : table)
+    if (v == value) return n;
+  return "?";
+}
+
+template <class E, size_t N>
+std::optional<E> parse(const std::pair<E, const char*> (&table)[N], const std::string& name) {
+  for (const auto& [v, n] : table)
+    if (name == n) return v;
+  return std::nullopt;
+}
+
+}  // namespace
+
+const std::vector<KeyStrategy>& allKeyStrategies() {
+  static const std::vector<KeyStrategy> all = [] {
+    std::vector<KeyStrategy> v;
+    for (const auto& [s, n] : kStrategyNames) v.push_back(s);
+    return v;
+  }();
+  return all;
+}
+
+std::string toString(KeyStrategy s) { return nameOf(kStrategyNames, s); }
+std::string toString(SortAlgorithm s) { return nameOf(kSortNames, s); }
+std::string toString(Kernel k) { return nameOf(kKernelNames, k); }
+std::optional<KeyStrategy> parseKeyStrategy(const std::string& n) { return parse(kStrategyNames, n); }
+std::optional<SortAlgorithm> parseSortAlgorithm(const std::string& n) { return parse(kSortNames, n); }
+std::optional<Kernel> parseKernel(const std::string& n) { return parse(kKernelNames, n); }
+
+std::string keyStrategyNames() {
+  std::string s;
+  for (const auto& [v, n] : kStrategyNames) s += (s.empty() ? "" : "|") + std::string(n);
+  return s;
+}
+
+bool Settings::requiresAccumulationReset(const Settings& p) const {
+  // Key strategy, sort and grid parameters never change the image (the central invariant), so they keep
+  // the accumulation; everything that changes a sample does not.
+  return scene != p.scene || view != p.view || width != p.width || height != p.height || bounces != p.bounces ||
+         sppPerFrame != p.sppPerFrame || seed != p.seed;
+}
+
+bool Settings::requiresCacheReset(const Settings& p) const {
+  return scene != p.scene || strategy != p.strategy || grid != p.grid || clampToCamera != p.clampToCamera ||
+         clampDistance != p.clampDistance || fixedFactor != p.fixedFactor;
+}
+
+}  // namespace raylab

@@ -1,0 +1,99 @@
+// The one source of truth for what is rendered and how: the CLI parses into it, the UI edits it, the
+// benchmark sweeps it and a screenshot's sidecar records it. Comparing with the previous Settings decides
+// what must restart (accumulation, length caches).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace raylab {
+
+enum class KeyStrategy {
+  None,             // no key, no sort: the plain wavefront
+  DeadLast,         // 0 for live paths, max for finished ones
+  Fixed,            // end point at a fixed fraction of the scene's largest extent
+  Average,          // length cache: running average
+  Ema,              // length cache: exponential moving average
+  Gaussian,         // length cache: Welford mean/variance, sampled from N(mean, sigma)
+  Origin,           // Meister et al.: origin cell
+  Direction,        // Meister et al.: direction octahedral cell
+  OriginDirection,  // Meister et al.: origin and direction interleaved
+  TwoPoint,         // Meister et al.: origin and estimated end point interleaved
+  Oracle,           // the true hit point, found by tracing once more (upper bound)
+};
+
+enum class SortAlgorithm { None, Bitonic, Radix };
+enum class Kernel { Wavefront, Megakernel };
+
+const std::vector<KeyStrategy>& allKeyStrategies();
+std::string toString(KeyStrategy s);
+std::string toString(SortAlgorithm s);
+std::string toString(Kernel k);
+// Parsers return nothing for unknown names; the CLI lists the accepted ones.
+std::optional<KeyStrategy> parseKeyStrategy(const std::string& name);
+std::optional<SortAlgorithm> parseSortAlgorithm(const std::string& name);
+std::optional<Kernel> parseKernel(const std::string& name);
+std::string keyStrategyNames();  // "none|dead-last|fixed|..."
+
+// Grid resolution: automatic (near-cubic cells from the extents) or explicit cells per axis.
+struct GridSetting {
+  bool automatic = true;
+  uint32_t autoCells = 64;      // cells along the largest axis when automatic
+  glm::uvec3 cells{64, 64, 64};  // explicit cells per axis
+  bool operator==(const GridSetting&) const = default;
+};
+
+// Limits where the methods are defined; the CLI rejects values outside, the UI sliders clamp to them.
+struct SettingLimits {
+  static constexpr uint32_t kMaxSize = 8192;
+  static constexpr uint32_t kMaxBounces = 32;
+  static constexpr uint32_t kMaxSpp = 64;
+  static constexpr uint32_t kMaxGridCellsPerAxis = 1024;  // 10 bits per axis: 30-bit Morton keys
+  static constexpr float kMaxClampDistance = 1e6f;
+  static constexpr float kMinFixedFactor = 0.0f;
+  static constexpr float kMaxFixedFactor = 4.0f;
+  static constexpr float kMinEmaAlpha = 0.001f;
+  static constexpr float kMaxEmaAlpha = 1.0f;
+  static constexpr float kMaxGaussOutlier = 100.0f;
+};
+
+struct Settings {
+  // Scene and camera
+  std::string scene = "temple";  // built-in name or a .gltf/.glb path
+  std::string view;              // viewpoint name; empty: the scene's first
+  uint32_t width = 512;
+  uint32_t height = 256;
+  uint32_t bounces = 4;
+  uint32_t sppPerFrame = 1;
+  uint32_t frames = 1;
+  uint32_t seed = 1;
+  float exposure = 1.0f;
+  Kernel kernel = Kernel::Wavefront;
+
+  // Reordering
+  KeyStrategy strategy = KeyStrategy::None;
+  SortAlgorithm sort = SortAlgorithm::Radix;
+  GridSetting grid;
+  bool clampToCamera = false;
+  float clampDistance = 50.0f;
+  float fixedFactor = 0.5f;   // the study's; Meister et al. use 0.25
+  float emaAlpha = 0.2f;
+  float gaussOutlier = 3.0f;  // sigmas beyond which a sample is an outlier
+  float gaussReset = 20.0f;   // variance above which a cell restarts (the study's tuned value)
+
+  // Measurement
+  bool countSimt = false;  // subgroup-ballot counting in the traversal loop (not for timed runs)
+
+  bool sorts() const { return kernel == Kernel::Wavefront && strategy != KeyStrategy::None && sort != SortAlgorithm::None; }
+  // True when the image of `previous` cannot be accumulated into: anything that changes what a pixel converges to.
+  bool requiresAccumulationReset(const Settings& previous) const;
+  // True when length caches learned under `previous` no longer apply.
+  bool requiresCacheReset(const Settings& previous) const;
+  bool operator==(const Settings&) const = default;
+};
+
+}  // namespace raylab

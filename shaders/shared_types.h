@@ -1,0 +1,170 @@
+// Structs shared by C++ and GLSL: data and macros only. Included by every compute shader and by the host
+// code that fills the buffers; tests/test_shared_layout.cpp asserts sizes and offsets on the host so the
+// two sides cannot drift. Everything uses the GLSL scalar block layout (vec3 = 12 bytes, align 4), which
+// matches glm's C++ layout. Buffers are passed as device addresses (GL_EXT_buffer_reference), so no
+// descriptor sets exist: a stage's push constants hold the addresses it reads and writes.
+#ifndef RAYLAB_SHARED_TYPES_H
+#define RAYLAB_SHARED_TYPES_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+namespace raylab::gpu {
+using vec2 = glm::vec2;
+using vec3 = glm::vec3;
+using vec4 = glm::vec4;
+using uint = uint32_t;
+#define RL_REF(Type) uint64_t
+#else
+#define RL_REF(Type) Type
+#endif
+
+// Work-group size of every path stage (one thread per path).
+#define RL_PATH_GROUP_SIZE 64
+// Largest BVH traversal stack.
+#define RL_BVH_STACK 64
+// A key no live path gets: terminated and missed paths sort last.
+#define RL_DEAD_KEY 0xFFFFFFFFu
+
+// Flattened BVH node: interior when triCount == 0 (children at leftOrFirst and leftOrFirst + 1),
+// leaf otherwise (triangles leftOrFirst .. leftOrFirst + triCount - 1 in BVH order).
+struct BvhNode {
+  vec3 boundsMin;
+  uint leftOrFirst;
+  vec3 boundsMax;
+  uint triCount;
+};
+
+// Triangle in BVH order, stored for Moeller-Trumbore: v0 and the two edges.
+struct GpuTriangle {
+  vec3 v0;
+  uint materialId;
+  vec3 e1;
+  uint sourceIndex;  // index in the scene's triangle list (for texture coordinates)
+  vec3 e2;
+  float area;
+};
+
+struct GpuTriangleUv {
+  vec2 uv0;
+  vec2 uv1;
+  vec2 uv2;
+};
+
+struct GpuMaterial {
+  vec3 baseColor;
+  int baseColorTexture;  // -1: none
+  vec3 emissive;
+  float metallic;
+  float roughness;
+  float specularWeight;  // 0 turns the GGX lobe off (pure Lambert, e.g. the white furnace)
+  float emitterPdfScale;  // 1 / total emitted power, times luminance(emissive): area pdf of light sampling
+  float pad0;
+};
+
+struct GpuTextureInfo {
+  uint offset;  // first texel in the texel buffer (RGBA8 packed in a uint)
+  uint width;
+  uint height;
+  uint pad0;
+};
+
+// Emissive triangle for light sampling, chosen by a CDF over emitted power.
+struct GpuEmitter {
+  uint triangle;  // BVH-order triangle index
+  float cdf;      // inclusive cumulative probability
+};
+
+struct GpuCamera {
+  vec3 position;
+  float tanHalfFovY;
+  vec3 forward;
+  float aspect;
+  vec3 right;
+  float pad0;
+  vec3 up;
+  float pad1;
+};
+
+#ifndef __cplusplus
+layout(buffer_reference, scalar) buffer BvhNodeBuf { BvhNode v[]; };
+layout(buffer_reference, scalar) buffer TriangleBuf { GpuTriangle v[]; };
+layout(buffer_reference, scalar) buffer TriangleUvBuf { GpuTriangleUv v[]; };
+layout(buffer_reference, scalar) buffer MaterialBuf { GpuMaterial v[]; };
+layout(buffer_reference, scalar) buffer TextureInfoBuf { GpuTextureInfo v[]; };
+layout(buffer_reference, scalar) buffer EmitterBuf { GpuEmitter v[]; };
+layout(buffer_reference, scalar) buffer UintBuf { uint v[]; };
+layout(buffer_reference, scalar) buffer FloatBuf { float v[]; };
+layout(buffer_reference, scalar) buffer Vec2Buf { vec2 v[]; };
+layout(buffer_reference, scalar) buffer Vec4Buf { vec4 v[]; };
+#endif
+
+// Everything a traversal or shading function needs to know about the scene.
+struct GpuScene {
+  RL_REF(BvhNodeBuf) nodes;
+  RL_REF(TriangleBuf) triangles;
+  RL_REF(TriangleUvBuf) uvs;
+  RL_REF(MaterialBuf) materials;
+  RL_REF(TextureInfoBuf) textureInfos;
+  RL_REF(UintBuf) texels;
+  RL_REF(EmitterBuf) emitters;
+  uint emitterCount;
+  uint hasUvs;
+  vec3 skyColor;
+  float skyLightProbability;  // chance that next-event estimation samples the sky rather than a triangle
+};
+
+// One set of path state, structure of arrays. Two sets exist; the reorder pass gathers one into the other.
+struct GpuPathState {
+  RL_REF(Vec4Buf) origin;      // xyz ray origin, w = solid-angle pdf of the BSDF sample (0: camera ray)
+  RL_REF(Vec4Buf) direction;   // xyz ray direction (unit), w unused
+  RL_REF(Vec4Buf) throughput;  // xyz path throughput, w unused
+  RL_REF(Vec4Buf) radiance;    // xyz radiance gathered so far, w unused
+  RL_REF(UintBuf) pathId;      // pixel * sppPerFrame + sample: where the result goes, and the RNG stream
+  RL_REF(UintBuf) alive;       // 1 while the path continues
+};
+
+// Trace output for one bounce, in the order of the current path state.
+struct GpuHits {
+  RL_REF(FloatBuf) t;          // hit distance, negative on a miss
+  RL_REF(UintBuf) triangle;    // BVH-order triangle index
+  RL_REF(Vec2Buf) barycentric;
+  RL_REF(UintBuf) steps;       // traversal loop iterations of this path (virtual warp efficiency)
+};
+
+struct GpuFrame {
+  GpuCamera camera;
+  GpuScene scene;
+  GpuPathState state[2];
+  GpuHits hits;
+  RL_REF(Vec4Buf) results;      // per path id: radiance of the finished path
+  RL_REF(Vec4Buf) accumulation; // per pixel: sum of radiance (xyz) and sample count (w)
+  RL_REF(UintBuf) image;        // per pixel: tonemapped RGBA8
+  RL_REF(UintBuf) counters;     // [0] rays traced, [1] SIMT active lanes, [2] SIMT lane slots
+  uint width;
+  uint height;
+  uint sppPerFrame;
+  uint pathCount;
+  uint frameIndex;
+  uint bounceCount;
+  uint seed;
+  float exposure;
+};
+
+#ifndef __cplusplus
+layout(buffer_reference, scalar) buffer FrameBuf { GpuFrame f; };
+#endif
+
+// Push constants of the path stages: the frame block, this bounce and which state set is current.
+struct PathStagePush {
+  RL_REF(FrameBuf) frame;
+  uint bounce;
+  uint stateSet;
+  uint countSimt;  // 1: count active lanes with subgroup ballots (kept out of timed runs)
+  uint pad0;
+};
+
+#ifdef __cplusplus
+}  // namespace raylab::gpu
+#endif
+#endif
