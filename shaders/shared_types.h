@@ -122,6 +122,7 @@ struct GpuPathState {
   RL_REF(Vec4Buf) radiance;    // xyz radiance gathered so far, w unused
   RL_REF(UintBuf) pathId;      // pixel * sppPerFrame + sample: where the result goes, and the RNG stream
   RL_REF(UintBuf) alive;       // 1 while the path continues
+  RL_REF(FloatBuf) predictedLength;  // the key stage's estimate of this ray's length (-1: none)
 };
 
 // Trace output for one bounce, in the order of the current path state.

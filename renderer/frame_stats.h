@@ -1,0 +1,53 @@
+// What the renderer reports back each frame: the UI reads it, the CLI writes it as JSON, the benchmark
+// aggregates it. Plain data, filled by the renderer; nothing here reaches into it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+struct StageTime {
+  std::string stage;  // generate, trace, learn, shade, keys, oracle-trace, sort, reorder, accumulate, tonemap, megakernel
+  int bounce = -1;    // -1 for stages outside the bounce loop
+  double ms = 0.0;
+};
+
+struct BounceStats {
+  uint32_t rays = 0;                    // live paths traced
+  double simtEfficiency = -1.0;         // device subgroups, counting mode only (-1: not measured)
+  double virtualWarpEfficiency = -1.0;  // W = 32 from per-path traversal iterations (-1: not measured)
+  double meanTraversalSteps = 0.0;
+  // Key prediction (filled when sorting with a spatial key and stats are requested)
+  double predictionErrorMean = -1.0;    // |estimated - actual end point| / scene diagonal
+  double predictionErrorMedian = -1.0;
+  double cellHitRate = -1.0;            // estimated cell == actual cell
+  uint32_t distinctKeys = 0;
+};
+
+struct FrameStats {
+  uint32_t frameIndex = 0;
+  uint32_t samplesPerPixel = 0;  // accumulated so far
+  double frameMs = 0.0;          // GPU time of the whole frame (sum of stages)
+  double wallMs = 0.0;           // host wall time of the frame, submit to completion
+  std::vector<StageTime> stages;
+  std::vector<BounceStats> bounces;
+  uint64_t raysTraced = 0;
+  double raysPerSecond = 0.0;
+  uint32_t keyBits = 0;
+  uint64_t lengthCacheBytes = 0;
+  double lengthCacheOccupancy = 0.0;
+  uint64_t sortScratchBytes = 0;
+  uint64_t pathStateBytes = 0;
+  uint64_t sceneBytes = 0;
+
+  double stageTotal(const std::string& stage) const {
+    double ms = 0.0;
+    for (const StageTime& s : stages)
+      if (s.stage == stage) ms += s.ms;
+    return ms;
+  }
+};
+
+}  // namespace raylab

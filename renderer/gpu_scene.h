@@ -1,0 +1,43 @@
+// A scene on the GPU: its BVH, triangles in BVH order, materials, textures and the emitter CDF, plus the
+// GpuScene block of addresses the shaders read.
+#pragma once
+
+#include <vector>
+
+#include "renderer/bvh.h"
+#include "renderer/gpu_buffer.h"
+#include "scenes/scene.h"
+#include "shaders/shared_types.h"
+
+namespace raylab {
+
+class VulkanContext;
+
+class GpuSceneData {
+ public:
+  GpuSceneData(const VulkanContext& ctx, const Scene& scene);
+
+  const gpu::GpuScene& block() const { return block_; }
+  const BvhBuildStats& bvhStats() const { return bvhStats_; }
+  const Bounds& bounds() const { return bounds_; }
+  uint32_t triangleCount() const { return triangleCount_; }
+  uint32_t emitterCount() const { return block_.emitterCount; }
+  uint64_t memoryBytes() const;
+
+ private:
+  std::vector<GpuBuffer> buffers_;
+  gpu::GpuScene block_{};
+  BvhBuildStats bvhStats_;
+  Bounds bounds_;
+  uint32_t triangleCount_ = 0;
+};
+
+// Light-sampling tables of a scene, exposed for tests: emitter triangles (BVH order) with their CDF over
+// emitted power, and each material's area pdf scale.
+struct EmitterTable {
+  std::vector<gpu::GpuEmitter> emitters;
+  std::vector<float> materialPdfScale;
+};
+EmitterTable buildEmitterTable(const Scene& scene, const std::vector<uint32_t>& triangleOrder);
+
+}  // namespace raylab

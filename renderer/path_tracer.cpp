@@ -1,0 +1,256 @@
+#include "renderer/path_tracer.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "renderer/frame_reorder.h"
+#include "renderer/vk_check.h"
+#include "renderer/vk_context.h"
+#include "renderer/warp_efficiency.h"
+
+namespace raylab {
+namespace {
+
+constexpr uint32_t kGroup = RL_PATH_GROUP_SIZE;
+
+void bufferBarrier(VkCommandBuffer cmd) { computeBarrier(cmd); }
+
+}  // namespace
+
+gpu::GpuCamera makeGpuCamera(const Viewpoint& v, uint32_t width, uint32_t height) {
+  gpu::GpuCamera c{};
+  glm::vec3 forward = v.target - v.position;
+  if (glm::length(forward) < 1e-12f) forward = glm::vec3(0.0f, 0.0f, -1.0f);
+  forward = glm::normalize(forward);
+  glm::vec3 up = glm::length(v.up) > 0.0f ? glm::normalize(v.up) : glm::vec3(0.0f, 1.0f, 0.0f);
+  glm::vec3 right = glm::cross(forward, up);
+  if (glm::length(right) < 1e-6f) right = glm::cross(forward, std::abs(forward.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0));
+  right = glm::normalize(right);
+  c.position = v.position;
+  c.forward = forward;
+  c.right = right;
+  c.up = glm::cross(right, forward);
+  c.tanHalfFovY = std::tan(0.5f * v.yfovRadians);
+  c.aspect = static_cast<float>(width) / static_cast<float>(height);
+  return c;
+}
+
+PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera)
+    : ctx_(ctx),
+      settings_(settings),
+      camera_(camera),
+      scene_(std::make_unique<GpuSceneData>(ctx, scene)),
+      generate_(ctx, "generate", sizeof(gpu::PathStagePush), kGroup),
+      trace_(ctx, "trace", sizeof(gpu::PathStagePush), kGroup, {0}),
+      traceCounting_(ctx, "trace", sizeof(gpu::PathStagePush), kGroup, {1}),
+      shade_(ctx, "shade", sizeof(gpu::PathStagePush), kGroup),
+      accumulate_(ctx, "accumulate", sizeof(gpu::PathStagePush), kGroup),
+      tonemap_(ctx, "tonemap", sizeof(gpu::PathStagePush), kGroup),
+      megakernel_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup),
+      timer_(ctx) {
+  reorder_ = std::make_unique<FrameReorder>(ctx, scene, settings_, camera_.position);
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  poolInfo.queueFamilyIndex = ctx.queueFamily();
+  VK_CHECK(vkCreateCommandPool(ctx.device(), &poolInfo, nullptr, &commandPool_));
+  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  alloc.commandPool = commandPool_;
+  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  alloc.commandBufferCount = 1;
+  VK_CHECK(vkAllocateCommandBuffers(ctx.device(), &alloc, &commandBuffer_));
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VK_CHECK(vkCreateFence(ctx.device(), &fenceInfo, nullptr, &fence_));
+  allocate();
+}
+
+PathTracer::~PathTracer() {
+  vkDeviceWaitIdle(ctx_.device());
+  vkDestroyFence(ctx_.device(), fence_, nullptr);
+  vkDestroyCommandPool(ctx_.device(), commandPool_, nullptr);
+}
+
+void PathTracer::allocate() {
+  buffers_.reset();
+  buffers_ = std::make_unique<PathBuffers>(ctx_, settings_.width, settings_.height, settings_.sppPerFrame,
+                                           settings_.bounces);
+  reorder_->resize(buffers_->pathCount);
+  resetAccumulation();
+}
+
+void PathTracer::resetAccumulation() {
+  frameIndex_ = 0;
+  ctx_.submitAndWait([&](VkCommandBuffer cmd) { buffers_->accumulation.recordFill(cmd, 0); });
+}
+
+void PathTracer::applySettings(const Settings& next) {
+  Settings previous = settings_;
+  settings_ = next;
+  bool resized = next.width != previous.width || next.height != previous.height ||
+                 next.sppPerFrame != previous.sppPerFrame || next.bounces != previous.bounces;
+  reorder_->configure(settings_, camera_.position, next.requiresCacheReset(previous));
+  if (resized)
+    allocate();
+  else if (next.requiresAccumulationReset(previous))
+    resetAccumulation();
+}
+
+void PathTracer::setCamera(const Viewpoint& camera) {
+  camera_ = camera;
+  reorder_->configure(settings_, camera_.position, settings_.clampToCamera);
+  resetAccumulation();
+}
+
+void PathTracer::recordFrame(VkCommandBuffer cmd) {
+  timer_.reset(cmd);
+  gpu::GpuFrame frame = buffers_->addresses();
+  frame.camera = makeGpuCamera(camera_, settings_.width, settings_.height);
+  frame.scene = scene_->block();
+  frame.width = settings_.width;
+  frame.height = settings_.height;
+  frame.sppPerFrame = settings_.sppPerFrame;
+  frame.frameIndex = frameIndex_;
+  frame.bounceCount = settings_.bounces;
+  frame.seed = settings_.seed;
+  frame.exposure = settings_.exposure;
+  vkCmdUpdateBuffer(cmd, buffers_->frameBlock.handle(), 0, sizeof(frame), &frame);
+  buffers_->counters.recordFill(cmd, 0);
+  bufferBarrier(cmd);
+
+  gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0, settings_.countSimt ? 1u : 0u, 0};
+  if (settings_.kernel == Kernel::Megakernel) {
+    ScopedStage s(&timer_, cmd, "megakernel");
+    megakernel_.dispatchThreads(cmd, push, buffers_->pathCount);
+    bufferBarrier(cmd);
+    recordTraceCounters(cmd, 0);
+  } else {
+    recordWavefront(cmd, push);
+  }
+  {
+    ScopedStage s(&timer_, cmd, "accumulate");
+    accumulate_.dispatchThreads(cmd, push, buffers_->pixelCount);
+    bufferBarrier(cmd);
+  }
+  {
+    ScopedStage s(&timer_, cmd, "tonemap");
+    tonemap_.dispatchThreads(cmd, push, buffers_->pixelCount);
+    bufferBarrier(cmd);
+  }
+}
+
+// The bounce loop of DESIGN.md: trace, learn, shade, then keys, sort and reorder before the next bounce.
+void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& basePush) {
+  gpu::PathStagePush push = basePush;
+  const uint32_t n = buffers_->pathCount;
+  {
+    ScopedStage s(&timer_, cmd, "generate");
+    generate_.dispatchThreads(cmd, push, n);
+    bufferBarrier(cmd);
+  }
+  for (uint32_t b = 0; b < settings_.bounces; ++b) {
+    timer_.setBounce(static_cast<int>(b));
+    push.bounce = b;
+    {
+      ScopedStage s(&timer_, cmd, "trace");
+      (settings_.countSimt ? traceCounting_ : trace_).dispatchThreads(cmd, push, n);
+      bufferBarrier(cmd);
+    }
+    recordTraceCounters(cmd, b);
+    if (b > 0) reorder_->recordLearn(cmd, buffers_->frameBlock.address(), push.stateSet, b, n, &timer_);
+    {
+      ScopedStage s(&timer_, cmd, "shade");
+      shade_.dispatchThreads(cmd, push, n);
+      bufferBarrier(cmd);
+    }
+    if (b + 1 < settings_.bounces && settings_.sorts())
+      push.stateSet = reorder_->recordReorder(cmd, buffers_->frameBlock.address(), push.stateSet, b, n,
+                                              *buffers_, &timer_);
+  }
+  timer_.setBounce(-1);
+}
+
+// Saves this trace's counters (rays, SIMT lanes) into the bounce's history slot and clears them; in the
+// detailed mode also keeps the per-path traversal steps for the virtual warp efficiency.
+void PathTracer::recordTraceCounters(VkCommandBuffer cmd, uint32_t bounce) {
+  VkBufferCopy copy{0, VkDeviceSize(bounce) * kCounterCount * 4, kCounterCount * 4};
+  vkCmdCopyBuffer(cmd, buffers_->counters.handle(), buffers_->counterHistory.handle(), 1, &copy);
+  if (detailedStats_) {
+    if (stepsReadback_.size() <= bounce) stepsReadback_.resize(bounce + 1);
+    if (!stepsReadback_[bounce].valid() || stepsReadback_[bounce].size() < buffers_->hitSteps.size())
+      stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
+    VkBufferCopy steps{0, 0, VkDeviceSize(buffers_->pathCount) * 4};
+    vkCmdCopyBuffer(cmd, buffers_->hitSteps.handle(), stepsReadback_[bounce].handle(), 1, &steps);
+  }
+  bufferBarrier(cmd);
+  buffers_->counters.recordFill(cmd, 0);
+  bufferBarrier(cmd);
+}
+
+const FrameStats& PathTracer::renderFrame() {
+  auto start = std::chrono::steady_clock::now();
+  VK_CHECK(vkResetCommandBuffer(commandBuffer_, 0));
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  VK_CHECK(vkBeginCommandBuffer(commandBuffer_, &begin));
+  recordFrame(commandBuffer_);
+  VK_CHECK(vkEndCommandBuffer(commandBuffer_));
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &commandBuffer_;
+  VK_CHECK(vkResetFences(ctx_.device(), 1, &fence_));
+  VK_CHECK(vkQueueSubmit(ctx_.queue(), 1, &submit, fence_));
+  VK_CHECK(vkWaitForFences(ctx_.device(), 1, &fence_, VK_TRUE, UINT64_MAX));
+  double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return finishFrame(wall);
+}
+
+const FrameStats& PathTracer::finishFrame(double wallMs) {
+  stats_ = FrameStats{};
+  stats_.frameIndex = frameIndex_;
+  stats_.wallMs = wallMs;
+  stats_.stages = timer_.collect();
+  for (const StageTime& s : stats_.stages) stats_.frameMs += s.ms;
+  gatherCounters();
+  if (settings_.sorts()) reorder_->finishFrame(stats_, detailedStats_);
+  stats_.pathStateBytes = buffers_->pathStateBytes();
+  stats_.sceneBytes = scene_->memoryBytes();
+  double seconds = (stats_.frameMs > 0.0 ? stats_.frameMs : wallMs) * 1e-3;
+  stats_.raysPerSecond = seconds > 0.0 ? static_cast<double>(stats_.raysTraced) / seconds : 0.0;
+  ++frameIndex_;
+  stats_.samplesPerPixel = frameIndex_ * settings_.sppPerFrame;
+  return stats_;
+}
+
+void PathTracer::gatherCounters() {
+  const bool mega = settings_.kernel == Kernel::Megakernel;
+  const uint32_t rounds = mega ? 1 : settings_.bounces;
+  const auto* history = static_cast<const uint32_t*>(buffers_->counterHistory.mapped());
+  for (uint32_t b = 0; b < rounds; ++b) {
+    const uint32_t* c = history + b * kCounterCount;
+    BounceStats bs;
+    bs.rays = mega ? buffers_->pathCount : c[kCounterRays];
+    if (settings_.countSimt && c[kCounterSimtSlots] > 0)
+      bs.simtEfficiency = static_cast<double>(c[kCounterSimtActive]) /
+                          (static_cast<double>(c[kCounterSimtSlots]) * ctx_.info().subgroupSize);
+    if (detailedStats_ && b < stepsReadback_.size()) {
+      const auto* steps = static_cast<const uint32_t*>(stepsReadback_[b].mapped());
+      WarpEfficiency w = virtualWarpEfficiency(steps, buffers_->pathCount, 32);
+      bs.virtualWarpEfficiency = w.efficiency;
+      bs.meanTraversalSteps = w.meanSteps;
+    }
+    stats_.raysTraced += bs.rays;
+    stats_.bounces.push_back(bs);
+  }
+}
+
+std::vector<uint32_t> PathTracer::readImage() const {
+  return buffers_->image.downloadVector<uint32_t>(buffers_->pixelCount);
+}
+
+std::vector<glm::vec3> PathTracer::readRadiance() const {
+  std::vector<glm::vec4> acc = buffers_->accumulation.downloadVector<glm::vec4>(buffers_->pixelCount);
+  std::vector<glm::vec3> out(acc.size());
+  for (size_t i = 0; i < acc.size(); ++i) out[i] = acc[i].w > 0.0f ? glm::vec3(acc[i]) / acc[i].w : glm::vec3(0.0f);
+  return out;
+}
+
+}  // namespace raylab

@@ -1,0 +1,77 @@
+// The renderer: a scene on the GPU, the wavefront (or megakernel) frame loop, progressive accumulation
+// and tonemapping. Settings in, FrameStats out; the UI and the CLI use nothing else of it.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "renderer/compute_pipeline.h"
+#include "renderer/frame_stats.h"
+#include "renderer/gpu_scene.h"
+#include "renderer/gpu_timer.h"
+#include "renderer/path_buffers.h"
+#include "renderer/settings.h"
+#include "scenes/scene.h"
+
+namespace raylab {
+
+class VulkanContext;
+class FrameReorder;
+
+class PathTracer {
+ public:
+  PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera);
+  ~PathTracer();
+
+  // Applies new settings: restarts accumulation and caches only where `Settings` says it must.
+  void applySettings(const Settings& settings);
+  void setCamera(const Viewpoint& camera);
+  const Settings& settings() const { return settings_; }
+  const Viewpoint& camera() const { return camera_; }
+
+  // Records one frame (all bounces, accumulate, tonemap) into `cmd`; finishFrame() after it completed.
+  void recordFrame(VkCommandBuffer cmd);
+  const FrameStats& finishFrame(double wallMs);
+  // Records, submits and waits for one frame.
+  const FrameStats& renderFrame();
+  // Detailed statistics (per-path steps, prediction accuracy) cost readbacks; off for timed runs.
+  void setDetailedStats(bool on) { detailedStats_ = on; }
+
+  const FrameStats& stats() const { return stats_; }
+  uint32_t accumulatedFrames() const { return frameIndex_; }
+  uint32_t width() const { return settings_.width; }
+  uint32_t height() const { return settings_.height; }
+  const GpuSceneData& scene() const { return *scene_; }
+  const GpuBuffer& imageBuffer() const { return buffers_->image; }
+
+  std::vector<uint32_t> readImage() const;          // RGBA8 after tonemapping, row-major, top row first
+  std::vector<glm::vec3> readRadiance() const;      // accumulated mean radiance per pixel (linear)
+
+ private:
+  void allocate();
+  void resetAccumulation();
+  void recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& basePush);
+  void recordTraceCounters(VkCommandBuffer cmd, uint32_t bounce);
+  void gatherCounters();
+
+  const VulkanContext& ctx_;
+  Settings settings_;
+  Viewpoint camera_;
+  std::unique_ptr<GpuSceneData> scene_;
+  std::unique_ptr<PathBuffers> buffers_;
+  std::unique_ptr<FrameReorder> reorder_;
+  ComputePipeline generate_, trace_, traceCounting_, shade_, accumulate_, tonemap_, megakernel_;
+  GpuTimer timer_;
+  FrameStats stats_;
+  uint32_t frameIndex_ = 0;
+  bool detailedStats_ = false;
+  std::vector<std::vector<uint32_t>> stepsPerBounce_;
+  std::vector<GpuBuffer> stepsReadback_;
+  VkCommandPool commandPool_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+  VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
+};
+
+gpu::GpuCamera makeGpuCamera(const Viewpoint& v, uint32_t width, uint32_t height);
+
+}  // namespace raylab

@@ -1,0 +1,17 @@
+#version 460
+// Adds this frame's samples of each pixel to its running sum, in sample order: the same result whatever
+// order the paths finished in.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_scalar_block_layout : require
+#include "shared_types.h"
+#include "path_stage.glsl"
+
+void main() {
+  GpuFrame f = FrameBuf(pc.frame).f;
+  uint pixel = gl_GlobalInvocationID.x;
+  if (pixel >= f.width * f.height) return;
+  vec4 sum = f.accumulation.v[pixel];
+  for (uint s = 0u; s < f.sppPerFrame; ++s) sum += f.results.v[pixel * f.sppPerFrame + s];
+  f.accumulation.v[pixel] = sum;
+}

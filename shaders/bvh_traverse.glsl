@@ -1,0 +1,116 @@
+// Closest-hit and any-hit BVH traversal shared by the trace stage, the megakernel, shadow rays and the
+// oracle key. Stack-based, nearer child first. `steps` counts loop iterations: the per-path work whose
+// spread within a warp is what ray reordering tries to shrink.
+#ifndef RAYLAB_BVH_TRAVERSE_GLSL
+#define RAYLAB_BVH_TRAVERSE_GLSL
+
+// A stage may define RL_TRAVERSAL_STEP() before including this file to observe every loop iteration
+// (the trace stage's SIMT counting); by default it does nothing.
+#ifndef RL_TRAVERSAL_STEP
+#define RL_TRAVERSAL_STEP()
+#endif
+
+struct HitRecord {
+  float t;        // negative: no hit
+  uint triangle;  // BVH-order triangle index
+  vec2 bary;
+  uint steps;
+};
+
+// Slab test; returns the entry distance or a huge value when the box is missed or beyond tMax.
+float intersectBox(vec3 bmin, vec3 bmax, vec3 origin, vec3 invDir, float tMax) {
+  vec3 t0 = (bmin - origin) * invDir;
+  vec3 t1 = (bmax - origin) * invDir;
+  vec3 tn = min(t0, t1);
+  vec3 tf = max(t0, t1);
+  float enter = max(max(tn.x, tn.y), max(tn.z, 0.0));
+  float leave = min(min(tf.x, tf.y), min(tf.z, tMax));
+  return enter <= leave ? enter : 1e30;
+}
+
+// Moeller-Trumbore; updates hit when nearer.
+void intersectTriangle(GpuTriangle tri, uint index, vec3 origin, vec3 dir, inout HitRecord hit, inout float tMax) {
+  vec3 p = cross(dir, tri.e2);
+  float det = dot(tri.e1, p);
+  if (abs(det) < 1e-12) return;
+  float inv = 1.0 / det;
+  vec3 s = origin - tri.v0;
+  float u = dot(s, p) * inv;
+  if (u < 0.0 || u > 1.0) return;
+  vec3 q = cross(s, tri.e1);
+  float v = dot(dir, q) * inv;
+  if (v < 0.0 || u + v > 1.0) return;
+  float t = dot(tri.e2, q) * inv;
+  if (t > 0.0 && t < tMax) {
+    tMax = t;
+    hit.t = t;
+    hit.triangle = index;
+    hit.bary = vec2(u, v);
+  }
+}
+
+// Avoid division by zero in the slab test while keeping the sign of each direction component.
+vec3 safeInverse(vec3 d) {
+  const float eps = 1e-20;
+  return 1.0 / vec3(abs(d.x) > eps ? d.x : (d.x >= 0.0 ? eps : -eps),
+                    abs(d.y) > eps ? d.y : (d.y >= 0.0 ? eps : -eps),
+                    abs(d.z) > eps ? d.z : (d.z >= 0.0 ? eps : -eps));
+}
+
+// anyHit: stop at the first hit (shadow rays).
+HitRecord traverseBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool anyHit) {
+  HitRecord hit;
+  hit.t = -1.0;
+  hit.triangle = 0u;
+  hit.bary = vec2(0.0);
+  hit.steps = 0u;
+  vec3 invDir = safeInverse(dir);
+  uint stack[RL_BVH_STACK];
+  uint sp = 0u;
+  uint node = 0u;
+  if (intersectBox(scene.nodes.v[0].boundsMin, scene.nodes.v[0].boundsMax, origin, invDir, tMax) >= 1e30)
+    return hit;
+  while (true) {
+    hit.steps++;
+    RL_TRAVERSAL_STEP();
+    BvhNode n = scene.nodes.v[node];
+    if (n.triCount > 0u) {
+      for (uint i = 0u; i < n.triCount; ++i) {
+        uint index = n.leftOrFirst + i;
+        intersectTriangle(scene.triangles.v[index], index, origin, dir, hit, tMax);
+      }
+      if (anyHit && hit.t > 0.0) return hit;
+      if (sp == 0u) break;
+      node = stack[--sp];
+      continue;
+    }
+    uint left = n.leftOrFirst;
+    uint right = left + 1u;
+    BvhNode ln = scene.nodes.v[left];
+    BvhNode rn = scene.nodes.v[right];
+    float dl = intersectBox(ln.boundsMin, ln.boundsMax, origin, invDir, tMax);
+    float dr = intersectBox(rn.boundsMin, rn.boundsMax, origin, invDir, tMax);
+    if (dl > dr) {
+      float td = dl; dl = dr; dr = td;
+      uint tn = left; left = right; right = tn;
+    }
+    if (dl >= 1e30) {
+      if (sp == 0u) break;
+      node = stack[--sp];
+      continue;
+    }
+    node = left;
+    if (dr < 1e30 && sp < RL_BVH_STACK) stack[sp++] = right;
+  }
+  return hit;
+}
+
+HitRecord traceClosest(GpuScene scene, vec3 origin, vec3 dir, float tMax) {
+  return traverseBvh(scene, origin, dir, tMax, false);
+}
+
+bool occluded(GpuScene scene, vec3 origin, vec3 dir, float tMax) {
+  return traverseBvh(scene, origin, dir, tMax, true).t > 0.0;
+}
+
+#endif

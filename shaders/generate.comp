@@ -1,0 +1,20 @@
+#version 460
+// Bounce 0 setup: one camera path per (pixel, sample), its id = pixel * sppPerFrame + sample.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_scalar_block_layout : require
+#include "shared_types.h"
+#include "path_shading.glsl"
+#include "path_stage.glsl"
+
+void main() {
+  GpuFrame f = FrameBuf(pc.frame).f;
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= f.pathCount) return;
+  GpuPathState s = f.state[pc.stateSet];
+  uint rng = rngSeed(i, f.frameIndex, 0u, f.seed, 2u);
+  PathVars p = cameraPath(f.camera, i / f.sppPerFrame, f.width, f.height, rng);
+  storePath(s, i, p);
+  s.pathId.v[i] = i;
+  s.predictedLength.v[i] = -1.0;
+}

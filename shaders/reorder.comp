@@ -1,0 +1,32 @@
+#version 460
+// Gathers every path-state array of the current set through the sorted indices into the other set, so
+// the next bounce reads coherent memory (indexing through the permutation without moving the data made
+// the study's tracer slower).
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_scalar_block_layout : require
+#include "shared_types.h"
+
+layout(local_size_x_id = 0) in;
+layout(push_constant, scalar) uniform Push {
+  FrameBuf frame;
+  UintBuf sortedIndices;
+  uint stateSet;  // source set; the destination is the other one
+  uint count;
+} pc;
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= pc.count) return;
+  GpuFrame f = pc.frame.f;
+  GpuPathState src = f.state[pc.stateSet];
+  GpuPathState dst = f.state[1u - pc.stateSet];
+  uint j = pc.sortedIndices.v[i];
+  dst.origin.v[i] = src.origin.v[j];
+  dst.direction.v[i] = src.direction.v[j];
+  dst.throughput.v[i] = src.throughput.v[j];
+  dst.radiance.v[i] = src.radiance.v[j];
+  dst.pathId.v[i] = src.pathId.v[j];
+  dst.alive.v[i] = src.alive.v[j];
+  dst.predictedLength.v[i] = src.predictedLength.v[j];
+}

@@ -1,0 +1,88 @@
+// Push constants of the sort shaders, shared by C++ (renderer/gpu_sort.cpp) and GLSL (shaders/sort_*.comp):
+// data and macros only. Buffers are device addresses (uint64 on the host, buffer references in GLSL);
+// tests/test_gpu_sort.cpp asserts the host sizes so the two sides cannot drift.
+#ifndef RAYLAB_SORT_TYPES_H
+#define RAYLAB_SORT_TYPES_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace raylab::gpu {
+using uint = uint32_t;
+#define SORT_REF(Type) uint64_t
+#else
+#define SORT_REF(Type) Type
+layout(buffer_reference, scalar) buffer SortUintBuf { uint v[]; };
+#endif
+
+// Radix sort: digit width and bins. 8 bits keeps the pass count at 4 for the lab's 30-bit Morton keys
+// (31 effective bits with the dead-path bit) and the per-group histograms small enough to scan in one pass.
+#define SORT_RADIX_BITS 8
+#define SORT_RADIX 256
+#define SORT_RADIX_MASK 255u
+
+// Bitonic sort: elements per work group in shared memory (keys and values: 16 KiB, under lavapipe's 32 KiB).
+#define SORT_BITONIC_TILE 2048
+#define SORT_BITONIC_GROUP 256
+
+// sort_radix_histogram and sort_radix_scatter. `hist` holds SORT_RADIX * numGroups per-group digit counts,
+// digit-major (hist[digit * numGroups + group]) so that one work group scans one digit's row, followed by
+// SORT_RADIX digit totals written by sort_radix_scan.
+struct SortRadixPush {
+  SORT_REF(SortUintBuf) keysIn;
+  SORT_REF(SortUintBuf) valuesIn;
+  SORT_REF(SortUintBuf) keysOut;
+  SORT_REF(SortUintBuf) valuesOut;
+  SORT_REF(SortUintBuf) hist;
+  uint count;        // elements to sort
+  uint shift;        // lowest key bit of this pass's digit
+  uint keyBits;      // 1..32; keys >= 2^keyBits sort as 2^keyBits (after every real key)
+  uint numGroups;    // tiles of the whole sort (the width of a hist row)
+  uint groupOffset;  // first tile of this dispatch (dispatches are split at the device's group limit)
+  uint tile;         // elements per tile (the scatter's group size times keys per thread)
+};
+
+// sort_radix_scan: one work group per digit scans its row of `hist` in place.
+struct SortScanPush {
+  SORT_REF(SortUintBuf) hist;
+  uint numGroups;
+  uint pad0;
+};
+
+// sort_bitonic_local (mode 0: full sort of each tile; mode 1: the merge steps whose distance fits a tile)
+// and sort_bitonic_global (one compare-exchange step across tiles).
+struct SortBitonicPush {
+  SORT_REF(SortUintBuf) keys;
+  SORT_REF(SortUintBuf) values;
+  uint count;
+  uint keyBits;
+  uint mode;         // local: 0 sort, 1 merge. global: 0 flip step of block `block`, 1 half-cleaner of `distance`
+  uint block;        // global flip: block size k (pairs p and k-1-p of each block)
+  uint distance;     // global half-cleaner: pairs i and i+distance within blocks of 2*distance
+  uint comparators;  // number of compare-exchanges of a global step (padded count / 2)
+};
+
+// sort_copy: copies `count` keys and values (used when the radix pass count is odd).
+struct SortCopyPush {
+  SORT_REF(SortUintBuf) keysIn;
+  SORT_REF(SortUintBuf) valuesIn;
+  SORT_REF(SortUintBuf) keysOut;
+  SORT_REF(SortUintBuf) valuesOut;
+  uint count;
+  uint pad0;
+};
+
+// The key the sort compares: the caller guarantees key < 2^keyBits or key == 0xFFFFFFFF (a dead path);
+// clamping to 2^keyBits makes dead keys sort after every live key without tying with the largest live
+// one, at the price of one more key bit (keyBits + 1 bits are sorted when keyBits < 32).
+#ifdef __cplusplus
+inline uint sortEffectiveKey(uint key, uint keyBits) {
+  return keyBits >= 32 ? key : (key < (1u << keyBits) ? key : (1u << keyBits));
+}
+}  // namespace raylab::gpu
+#else
+uint sortEffectiveKey(uint key, uint keyBits) {
+  return keyBits >= 32 ? key : min(key, 1u << keyBits);
+}
+#endif
+
+#endif
