@@ -1,2 +1,47 @@
+// raylab: the lab's entry point. Wiring only: each mode lives in its own file.
 #include <cstdio>
-int main() { std::puts("raylab"); return 0; }
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "app/render_command.h"
+#include "app/scene_setup.h"
+
+namespace {
+
+void printHelp() {
+  std::puts(
+      "raylab: a lab for ray reordering in a wavefront path tracer\n\n"
+      "usage:\n"
+      "  raylab [options]            open the interactive lab (needs a display)\n"
+      "  raylab render [options]     render headless to a PNG (raylab render --help)\n"
+      "  raylab sortbench [options]  time the GPU sorts alone\n"
+      "  raylab bench [options]      sweep strategies and sorts, write CSV/JSON and charts\n"
+      "  raylab devices              list Vulkan devices");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  std::string mode = args.empty() || args[0].rfind("--", 0) == 0 ? "" : args[0];
+  std::vector<std::string> rest(args.begin() + (mode.empty() ? 0 : 1), args.end());
+  try {
+    if (mode == "render") return raylab::runRenderCommand(rest);
+    if (mode == "devices") {
+      for (const std::string& name : raylab::VulkanContext::listDevices()) std::puts(name.c_str());
+      return raylab::kExitOk;
+    }
+    if (mode == "help" || mode == "--help" || (!args.empty() && args[0] == "--help")) {
+      printHelp();
+      return raylab::kExitOk;
+    }
+    if (mode.empty()) return raylab::runRenderCommand(rest);  // the window comes later; render meanwhile
+    std::fprintf(stderr, "raylab: unknown mode '%s'\n\n", mode.c_str());
+    printHelp();
+    return raylab::kExitUsage;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "raylab: %s\n", e.what());
+    return raylab::kExitFailure;
+  }
+}

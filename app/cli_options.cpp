@@ -1,0 +1,145 @@
+#include "app/cli_options.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <map>
+
+namespace raylab {
+
+uint32_t parseUint(const std::string& flag, const std::string& text, uint32_t lo, uint32_t hi) {
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+    throw UsageError(flag + " expects a whole number, got '" + text + "'");
+  errno = 0;
+  unsigned long long v = std::strtoull(text.c_str(), nullptr, 10);
+  if (errno == ERANGE || v < lo || v > hi)
+    throw UsageError(flag + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " + text);
+  return static_cast<uint32_t>(v);
+}
+
+float parseFloat(const std::string& flag, const std::string& text, float lo, float hi) {
+  char* end = nullptr;
+  errno = 0;
+  double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v))
+    throw UsageError(flag + " expects a finite number, got '" + text + "'");
+  if (v < lo || v > hi)
+    throw UsageError(flag + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " + text);
+  return static_cast<float>(v);
+}
+
+namespace {
+
+using L = SettingLimits;
+
+void parseSize(const std::string& text, Settings& s) {
+  size_t x = text.find('x');
+  if (x == std::string::npos) throw UsageError("--size expects WxH (e.g. 512x256), got '" + text + "'");
+  s.width = parseUint("--size width", text.substr(0, x), 1, L::kMaxSize);
+  s.height = parseUint("--size height", text.substr(x + 1), 1, L::kMaxSize);
+}
+
+void parseGrid(const std::string& text, Settings& s) {
+  if (text == "auto") {
+    s.grid.automatic = true;
+    return;
+  }
+  std::vector<std::string> parts;
+  size_t start = 0;
+  for (size_t x; (x = text.find('x', start)) != std::string::npos; start = x + 1) parts.push_back(text.substr(start, x - start));
+  parts.push_back(text.substr(start));
+  if (parts.size() != 1 && parts.size() != 3) throw UsageError("--grid expects auto, N or NXxNYxNZ, got '" + text + "'");
+  s.grid.automatic = false;
+  for (int a = 0; a < 3; ++a)
+    s.grid.cells[a] = parseUint("--grid", parts[parts.size() == 1 ? 0 : a], 1, L::kMaxGridCellsPerAxis);
+}
+
+template <class E>
+E parseEnum(const std::string& flag, const std::string& text, std::optional<E> (*parse)(const std::string&),
+            const std::string& accepted) {
+  std::optional<E> v = parse(text);
+  if (!v) throw UsageError(flag + " must be one of " + accepted + ", got '" + text + "'");
+  return *v;
+}
+
+}  // namespace
+
+CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vector<std::string>* rest) {
+  CommonOptions o;
+  Settings& s = o.settings;
+  using Handler = std::function<void(const std::string&)>;
+  const std::map<std::string, Handler> valued = {
+      {"--scene", [&](const std::string& v) { s.scene = v; }},
+      {"--view", [&](const std::string& v) { s.view = v; }},
+      {"--size", [&](const std::string& v) { parseSize(v, s); }},
+      {"--bounces", [&](const std::string& v) { s.bounces = parseUint("--bounces", v, 1, L::kMaxBounces); }},
+      {"--spp", [&](const std::string& v) { s.sppPerFrame = parseUint("--spp", v, 1, L::kMaxSpp); }},
+      {"--frames", [&](const std::string& v) { s.frames = parseUint("--frames", v, 1, 1000000); }},
+      {"--seed", [&](const std::string& v) { s.seed = parseUint("--seed", v, 0, UINT32_MAX); }},
+      {"--exposure", [&](const std::string& v) { s.exposure = parseFloat("--exposure", v, 0.0f, 1e6f); }},
+      {"--kernel", [&](const std::string& v) { s.kernel = parseEnum("--kernel", v, &parseKernel, "wavefront|megakernel"); }},
+      {"--strategy", [&](const std::string& v) { s.strategy = parseEnum("--strategy", v, &parseKeyStrategy, keyStrategyNames()); }},
+      {"--sort", [&](const std::string& v) { s.sort = parseEnum("--sort", v, &parseSortAlgorithm, "none|bitonic|radix"); }},
+      {"--grid", [&](const std::string& v) { parseGrid(v, s); }},
+      {"--clamp", [&](const std::string& v) {
+         s.clampToCamera = true;
+         s.clampDistance = parseFloat("--clamp", v, 0.0f, L::kMaxClampDistance);
+       }},
+      {"--fixed-factor", [&](const std::string& v) { s.fixedFactor = parseFloat("--fixed-factor", v, L::kMinFixedFactor, L::kMaxFixedFactor); }},
+      {"--ema-alpha", [&](const std::string& v) { s.emaAlpha = parseFloat("--ema-alpha", v, L::kMinEmaAlpha, L::kMaxEmaAlpha); }},
+      {"--gauss-outlier", [&](const std::string& v) { s.gaussOutlier = parseFloat("--gauss-outlier", v, 0.0f, L::kMaxGaussOutlier); }},
+      {"--gauss-reset", [&](const std::string& v) {
+         s.gaussReset = v == "inf" ? INFINITY : parseFloat("--gauss-reset", v, 0.0f, 3.0e38f);
+       }},
+      {"--device", [&](const std::string& v) { o.device = v; }},
+      {"--out", [&](const std::string& v) { o.out = v; }},
+      {"--stats", [&](const std::string& v) { o.statsPath = v; }},
+  };
+  const std::map<std::string, std::function<void()>> switches = {
+      {"--validate", [&] { o.validate = true; }},
+      {"--count-simt", [&] { s.countSimt = true; }},
+  };
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (auto it = valued.find(a); it != valued.end()) {
+      if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+      it->second(args[++i]);
+    } else if (auto sw = switches.find(a); sw != switches.end()) {
+      sw->second();
+    } else if (rest && a.rfind("--", 0) == 0) {
+      rest->push_back(a);
+      if (i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) rest->push_back(args[++i]);
+    } else {
+      throw UsageError("unknown option '" + a + "'");
+    }
+  }
+  return o;
+}
+
+std::string commonOptionsHelp() {
+  return "  --scene temple|cornell|furnace|FILE.gltf|FILE.glb   scene (default temple)\n"
+         "  --view NAME            viewpoint (default: the scene's first)\n"
+         "  --size WxH             resolution, any size up to 8192x8192 (default 512x256)\n"
+         "  --bounces N            path length in bounces, 1..32 (default 4)\n"
+         "  --spp N                samples per pixel per frame, 1..64 (default 1)\n"
+         "  --frames N             frames to accumulate (default 1)\n"
+         "  --seed N               random seed (default 1)\n"
+         "  --kernel wavefront|megakernel\n"
+         "  --strategy " + keyStrategyNames() + "\n"
+         "  --sort none|bitonic|radix   sort used when a strategy is set (default radix)\n"
+         "  --grid auto|N|NXxNYxNZ  key grid (default auto, 64 cells on the largest axis)\n"
+         "  --clamp D              clamp the key grid to camera +- D\n"
+         "  --fixed-factor F       fixed length = F * largest extent (default 0.5; Meister et al. 0.25)\n"
+         "  --ema-alpha A          EMA weight of a new length (default 0.2)\n"
+         "  --gauss-outlier S      reject lengths beyond S sigmas (default 3)\n"
+         "  --gauss-reset V        reset a cell when its variance exceeds V (default 20, 'inf' never)\n"
+         "  --exposure E           display exposure (default 1)\n"
+         "  --count-simt           count active subgroup lanes in traversal (slower; not for timing)\n"
+         "  --device NAME          Vulkan device whose name contains NAME\n"
+         "  --validate             enable the Khronos validation layer\n"
+         "  --out FILE.png         output image\n"
+         "  --stats FILE.json      per-frame statistics as JSON\n";
+}
+
+}  // namespace raylab

@@ -1,0 +1,36 @@
+// Command-line flags shared by every mode, parsed into Settings. Bad values throw UsageError, which the
+// modes turn into a usage message and exit code 2.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "renderer/settings.h"
+
+namespace raylab {
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct CommonOptions {
+  Settings settings;
+  std::string device;     // --device NAME
+  bool validate = false;  // --validate
+  std::string out;        // --out FILE.png
+  std::string statsPath;  // --stats FILE.json
+};
+
+// Parses the flags in `args`; flags this function does not know are returned in `rest` (in order, with
+// their values) for the mode to handle, or rejected when `rest` is null.
+CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vector<std::string>* rest = nullptr);
+
+// Text of the flags parseCommonOptions accepts, for usage messages.
+std::string commonOptionsHelp();
+
+// Strict number parsing for flags: the whole string must be a number within [lo, hi].
+uint32_t parseUint(const std::string& flag, const std::string& text, uint32_t lo, uint32_t hi);
+float parseFloat(const std::string& flag, const std::string& text, float lo, float hi);
+
+}  // namespace raylab

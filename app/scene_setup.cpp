@@ -1,0 +1,37 @@
+#include "app/scene_setup.h"
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "scenes/scene_library.h"
+
+namespace raylab {
+
+const Viewpoint& resolveViewpoint(const Scene& scene, const std::string& name) {
+  if (scene.viewpoints.empty()) throw SceneLoadError(scene.name + ": the scene has no viewpoint");
+  if (name.empty()) return scene.viewpoints.front();
+  if (const Viewpoint* v = scene.findViewpoint(name)) return *v;
+  throw UsageError("--view '" + name + "' is not a viewpoint of " + scene.name + "; it has: " + scene.viewpointList());
+}
+
+LoadedScene loadSceneForSettings(const Settings& settings) {
+  LoadedScene loaded;
+  try {
+    loaded.scene = loadSceneByName(settings.scene);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  if (loaded.scene.triangles.empty()) throw SceneLoadError(settings.scene + ": the scene has no triangles");
+  loaded.view = resolveViewpoint(loaded.scene, settings.view);
+  return loaded;
+}
+
+ContextOptions contextOptionsFor(const CommonOptions& options) {
+  ContextOptions c;
+  c.deviceName = options.device;
+  const char* env = std::getenv("RAYLAB_VALIDATE");
+  c.validate = options.validate || (env && std::string(env) == "1");
+  return c;
+}
+
+}  // namespace raylab

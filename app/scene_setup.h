@@ -1,0 +1,24 @@
+// What every mode does first: resolve the scene and viewpoint named in Settings, and the Vulkan context
+// options (the RAYLAB_VALIDATE environment variable turns validation on, as the tests do).
+#pragma once
+
+#include "app/cli_options.h"
+#include "renderer/vk_context.h"
+#include "scenes/scene.h"
+
+namespace raylab {
+
+struct LoadedScene {
+  Scene scene;
+  Viewpoint view;
+};
+
+// Throws SceneLoadError for unusable files (exit 3) and UsageError for unknown names (exit 2).
+LoadedScene loadSceneForSettings(const Settings& settings);
+const Viewpoint& resolveViewpoint(const Scene& scene, const std::string& name);
+ContextOptions contextOptionsFor(const CommonOptions& options);
+
+// Exit codes shared by every mode.
+enum ExitCode : int { kExitOk = 0, kExitFailure = 1, kExitUsage = 2, kExitBadScene = 3, kExitValidation = 4 };
+
+}  // namespace raylab

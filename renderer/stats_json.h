@@ -1,0 +1,19 @@
+// JSON forms of Settings, FrameStats and the device, used by --stats, the benchmark and screenshot
+// sidecars. settingsFromJson reads back what toJson(Settings) wrote (sidecar round trip).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "renderer/frame_stats.h"
+#include "renderer/settings.h"
+#include "renderer/vk_context.h"
+
+namespace raylab {
+
+nlohmann::json toJson(const Settings& s);
+// Throws std::invalid_argument naming the field that is missing or invalid.
+Settings settingsFromJson(const nlohmann::json& j);
+nlohmann::json toJson(const FrameStats& s);
+nlohmann::json toJson(const DeviceInfo& d);
+
+}  // namespace raylab

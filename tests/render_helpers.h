@@ -1,0 +1,52 @@
+// Small helpers for tests that render whole images on the test device.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "renderer/path_tracer.h"
+#include "renderer/vk_context.h"
+
+namespace raylab::test {
+
+// Renders settings.frames frames and returns the accumulated mean radiance per pixel.
+inline std::vector<glm::vec3> renderRadiance(const VulkanContext& ctx, const Scene& scene, const Settings& settings,
+                                             const Viewpoint& view) {
+  PathTracer tracer(ctx, scene, settings, view);
+  for (uint32_t f = 0; f < settings.frames; ++f) tracer.renderFrame();
+  return tracer.readRadiance();
+}
+
+struct ImageMoments {
+  double mean = 0.0;
+  double standardError = 0.0;  // of the mean, from the spread of the pixels
+};
+
+// Mean of all channels of all pixels, and its standard error estimated from the pixel variance.
+inline ImageMoments moments(const std::vector<glm::vec3>& img) {
+  ImageMoments m;
+  double sum = 0.0, sum2 = 0.0;
+  for (const glm::vec3& p : img) {
+    double v = (p.x + p.y + p.z) / 3.0;
+    sum += v;
+    sum2 += v * v;
+  }
+  double n = static_cast<double>(img.size());
+  m.mean = sum / n;
+  double var = std::max(0.0, sum2 / n - m.mean * m.mean);
+  m.standardError = std::sqrt(var / n);
+  return m;
+}
+
+// Relative MSE of `a` against `b`, per channel, (a-b)^2 / (b^2 + 1e-2) averaged.
+inline double relativeMse(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
+  double sum = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      double d = a[i][c] - b[i][c];
+      sum += d * d / (double(b[i][c]) * b[i][c] + 1e-2);
+    }
+  return sum / (3.0 * a.size());
+}
+
+}  // namespace raylab::test
