@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/bench_command.h"
 #include "app/render_command.h"
 #include "app/scene_setup.h"
 
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> rest(args.begin() + (mode.empty() ? 0 : 1), args.end());
   try {
     if (mode == "render") return raylab::runRenderCommand(rest);
+    if (mode == "bench") return raylab::runBenchCommand(rest);
     if (mode == "devices") {
       for (const std::string& name : raylab::VulkanContext::listDevices()) std::puts(name.c_str());
       return raylab::kExitOk;

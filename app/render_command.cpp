@@ -24,6 +24,10 @@ void printUsage(const std::string& error) {
 int runRenderCommand(const std::vector<std::string>& args) {
   CommonOptions options;
   LoadedScene loaded;
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+    std::printf("usage: raylab render [options]\n%s", commonOptionsHelp().c_str());
+    return kExitOk;
+  }
   try {
     options = parseCommonOptions(args);
     loaded = loadSceneForSettings(options.settings);

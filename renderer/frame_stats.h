@@ -41,6 +41,10 @@ struct FrameStats {
   uint64_t sortScratchBytes = 0;
   uint64_t pathStateBytes = 0;
   uint64_t sceneBytes = 0;
+  // Value range of the heatmap shown this frame, for the colour legend (unit names the quantity).
+  double heatmapMin = 0.0;
+  double heatmapMax = 0.0;
+  std::string heatmapUnit;
 
   double stageTotal(const std::string& stage) const {
     double ms = 0.0;

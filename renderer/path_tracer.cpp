@@ -46,7 +46,8 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Setti
       shade_(ctx, "shade", sizeof(gpu::PathStagePush), kGroup),
       accumulate_(ctx, "accumulate", sizeof(gpu::PathStagePush), kGroup),
       tonemap_(ctx, "tonemap", sizeof(gpu::PathStagePush), kGroup),
-      megakernel_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup),
+      megakernel_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup, {0}),
+      megakernelCounting_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup, {1}),
       timer_(ctx) {
   reorder_ = std::make_unique<FrameReorder>(ctx, scene, settings_, camera_.position);
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -119,7 +120,7 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
   gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0, settings_.countSimt ? 1u : 0u, 0};
   if (settings_.kernel == Kernel::Megakernel) {
     ScopedStage s(&timer_, cmd, "megakernel");
-    megakernel_.dispatchThreads(cmd, push, buffers_->pathCount);
+    (settings_.countSimt ? megakernelCounting_ : megakernel_).dispatchThreads(cmd, push, buffers_->pathCount);
     bufferBarrier(cmd);
     recordTraceCounters(cmd, 0);
   } else {
@@ -227,7 +228,7 @@ void PathTracer::gatherCounters() {
   for (uint32_t b = 0; b < rounds; ++b) {
     const uint32_t* c = history + b * kCounterCount;
     BounceStats bs;
-    bs.rays = mega ? buffers_->pathCount : c[kCounterRays];
+    bs.rays = c[kCounterRays];
     if (settings_.countSimt && c[kCounterSimtSlots] > 0)
       bs.simtEfficiency = static_cast<double>(c[kCounterSimtActive]) /
                           (static_cast<double>(c[kCounterSimtSlots]) * ctx_.info().subgroupSize);

@@ -26,6 +26,8 @@ class PathTracer {
   // Applies new settings: restarts accumulation and caches only where `Settings` says it must.
   void applySettings(const Settings& settings);
   void setCamera(const Viewpoint& camera);
+  // Starts accumulating from zero (the frame index too, so a restarted run repeats its samples).
+  void restartAccumulation() { resetAccumulation(); }
   const Settings& settings() const { return settings_; }
   const Viewpoint& camera() const { return camera_; }
 
@@ -60,7 +62,8 @@ class PathTracer {
   std::unique_ptr<GpuSceneData> scene_;
   std::unique_ptr<PathBuffers> buffers_;
   std::unique_ptr<FrameReorder> reorder_;
-  ComputePipeline generate_, trace_, traceCounting_, shade_, accumulate_, tonemap_, megakernel_;
+  ComputePipeline generate_, trace_, traceCounting_, shade_, accumulate_, tonemap_, megakernel_,
+      megakernelCounting_;
   GpuTimer timer_;
   FrameStats stats_;
   uint32_t frameIndex_ = 0;

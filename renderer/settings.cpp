@@ -20,6 +20,11 @@ const std::pair<KeyStrategy, const char*> kStrategyNames[] = {
 };
 const std::pair<SortAlgorithm, const char*> kSortNames[] = {
     {SortAlgorithm::None, "none"}, {SortAlgorithm::Bitonic, "bitonic"}, {SortAlgorithm::Radix, "radix"}};
+const std::pair<HeatmapView, const char*> kHeatmapNames[] = {
+    {HeatmapView::None, "none"},          {HeatmapView::SortKey, "sort-key"},
+    {HeatmapView::CellHit, "cell-hit"},   {HeatmapView::TraversalSteps, "traversal-steps"},
+    {HeatmapView::WarpEfficiency, "warp-efficiency"}, {HeatmapView::CacheMean, "cache-mean"},
+    {HeatmapView::CacheVariance, "cache-variance"}};
 const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},
                                                        {Kernel::Megakernel, "megakernel"}};
 
@@ -49,6 +54,16 @@ const std::vector<KeyStrategy>& allKeyStrategies() {
 }
 
 std::string toString(KeyStrategy s) { return nameOf(kStrategyNames, s); }
+std::string toString(HeatmapView v) { return nameOf(kHeatmapNames, v); }
+std::optional<HeatmapView> parseHeatmapView(const std::string& n) { return parse(kHeatmapNames, n); }
+const std::vector<HeatmapView>& allHeatmapViews() {
+  static const std::vector<HeatmapView> all = [] {
+    std::vector<HeatmapView> v;
+    for (const auto& [h, n] : kHeatmapNames) v.push_back(h);
+    return v;
+  }();
+  return all;
+}
 std::string toString(SortAlgorithm s) { return nameOf(kSortNames, s); }
 std::string toString(Kernel k) { return nameOf(kKernelNames, k); }
 std::optional<KeyStrategy> parseKeyStrategy(const std::string& n) { return parse(kStrategyNames, n); }

@@ -27,6 +27,17 @@ enum class KeyStrategy {
 };
 
 enum class SortAlgorithm { None, Bitonic, Radix };
+
+// What the display shows instead of the render (per pixel, for one bounce).
+enum class HeatmapView {
+  None,            // the render itself
+  SortKey,         // the path's sort key, hashed to a colour so equal keys share one
+  CellHit,         // estimated end-point cell equals the actual cell (green) or not (red)
+  TraversalSteps,  // BVH traversal loop iterations
+  WarpEfficiency,  // efficiency of the 32-wide warp this path was traced in, over its pixels
+  CacheMean,       // length-cache mean at the path's (cell, octant)
+  CacheVariance,   // length-cache variance there
+};
 enum class Kernel { Wavefront, Megakernel };
 
 const std::vector<KeyStrategy>& allKeyStrategies();
@@ -38,6 +49,9 @@ std::optional<KeyStrategy> parseKeyStrategy(const std::string& name);
 std::optional<SortAlgorithm> parseSortAlgorithm(const std::string& name);
 std::optional<Kernel> parseKernel(const std::string& name);
 std::string keyStrategyNames();  // "none|dead-last|fixed|..."
+std::string toString(HeatmapView v);
+std::optional<HeatmapView> parseHeatmapView(const std::string& name);
+const std::vector<HeatmapView>& allHeatmapViews();
 
 // Grid resolution: automatic (near-cubic cells from the extents) or explicit cells per axis.
 struct GridSetting {
@@ -85,8 +99,10 @@ struct Settings {
   float gaussOutlier = 3.0f;  // sigmas beyond which a sample is an outlier
   float gaussReset = 20.0f;   // variance above which a cell restarts (the study's tuned value)
 
-  // Measurement
+  // Measurement and display
   bool countSimt = false;  // subgroup-ballot counting in the traversal loop (not for timed runs)
+  HeatmapView heatmap = HeatmapView::None;
+  uint32_t heatmapBounce = 1;  // which bounce the heatmap shows (0 = camera rays)
 
   bool sorts() const { return kernel == Kernel::Wavefront && strategy != KeyStrategy::None && sort != SortAlgorithm::None; }
   // True when the image of `previous` cannot be accumulated into: anything that changes what a pixel converges to.

@@ -5,22 +5,29 @@
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
 #include "shared_types.h"
+#include "simt_counting.glsl"
 #include "path_shading.glsl"
 #include "path_stage.glsl"
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
+  gCounters = f.counters;
   uint id = gl_GlobalInvocationID.x;
-  if (id >= f.pathCount) return;
+  if (id >= f.pathCount) {
+    countRays(0u);
+    return;
+  }
   uint rng = rngSeed(id, f.frameIndex, 0u, f.seed, 2u);
   PathVars p = cameraPath(f.camera, id / f.sppPerFrame, f.width, f.height, rng);
-  uint steps = 0u;
+  uint steps = 0u, rays = 0u;
   for (uint b = 0u; b < f.bounceCount && p.alive; ++b) {
     HitRecord hit = traceClosest(f.scene, p.origin, p.direction, 1e30);
     steps += hit.steps;
+    ++rays;
     rng = rngSeed(id, f.frameIndex, b, f.seed, 0u);
     shadePath(f.scene, p, hit, b, f.bounceCount, rng);
   }
   f.hits.steps.v[id] = steps;
   f.results.v[id] = finishedRadiance(p);
+  countRays(rays);
 }

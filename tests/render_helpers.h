@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "renderer/image_metrics.h"
 #include "renderer/path_tracer.h"
 #include "renderer/vk_context.h"
 
@@ -36,17 +37,6 @@ inline ImageMoments moments(const std::vector<glm::vec3>& img) {
   double var = std::max(0.0, sum2 / n - m.mean * m.mean);
   m.standardError = std::sqrt(var / n);
   return m;
-}
-
-// Relative MSE of `a` against `b`, per channel, (a-b)^2 / (b^2 + 1e-2) averaged.
-inline double relativeMse(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
-  double sum = 0.0;
-  for (size_t i = 0; i < a.size(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      double d = a[i][c] - b[i][c];
-      sum += d * d / (double(b[i][c]) * b[i][c] + 1e-2);
-    }
-  return sum / (3.0 * a.size());
 }
 
 }  // namespace raylab::test

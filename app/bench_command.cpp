@@ -1,0 +1,130 @@
+#include "app/bench_command.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include "app/bench_measure.h"
+#include "app/bench_sweep.h"
+#include "app/scene_setup.h"
+#include "renderer/stats_json.h"
+
+namespace raylab {
+namespace {
+
+// The reference image of a case: the megakernel with many samples.
+std::vector<glm::vec3> renderReference(PathTracer& tracer, const Settings& base, uint32_t spp) {
+  Settings ref = base;
+  ref.kernel = Kernel::Megakernel;
+  ref.strategy = KeyStrategy::None;
+  ref.seed = base.seed + 1000003;  // independent of the measured frames' samples
+  ref.sppPerFrame = std::min<uint32_t>(spp, SettingLimits::kMaxSpp);
+  tracer.applySettings(ref);
+  tracer.restartAccumulation();
+  for (uint32_t done = 0; done < spp; done += ref.sppPerFrame) tracer.renderFrame();
+  std::vector<glm::vec3> image = tracer.readRadiance();
+  tracer.applySettings(base);
+  return image;
+}
+
+double meanOf(const std::vector<BounceStats>& bounces, double BounceStats::*field, bool skipFirst) {
+  double sum = 0.0;
+  int n = 0;
+  for (size_t b = skipFirst ? 1 : 0; b < bounces.size(); ++b)
+    if (bounces[b].*field >= 0.0) {
+      sum += bounces[b].*field;
+      ++n;
+    }
+  return n ? sum / n : -1.0;
+}
+
+const char* kStages[] = {"generate", "trace", "learn", "shade", "keys", "oracle-trace", "sort", "reorder",
+                         "accumulate", "tonemap", "megakernel"};
+
+void writeCsvHeader(std::ofstream& csv) {
+  csv << "device,driver,git_revision,scene,view,width,height,bounces,spp_per_frame,kernel,strategy,sort,label,"
+         "frame_ms_median,frame_ms_min,frame_ms_max,trace_after_first_ms";
+  for (const char* s : kStages) csv << "," << s << "_ms";
+  csv << ",rays_per_second,simt_efficiency,virtual_warp_efficiency,virtual_warp_efficiency_after_first,"
+         "prediction_error_mean,prediction_error_median,cell_hit_rate,key_bits,length_cache_bytes,final_rel_mse\n";
+}
+
+std::string csvQuote(const std::string& s) { return "\"" + s + "\""; }
+
+void writeCsvRow(std::ofstream& csv, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
+                 const CellResult& r) {
+  const Settings& s = cell.settings;
+  const auto& b = r.detailed.bounces;
+  csv << csvQuote(ctx.info().name) << "," << csvQuote(ctx.info().driver) << "," << RAYLAB_GIT_REV << ","
+      << csvQuote(s.scene) << "," << view << "," << s.width << "," << s.height << "," << s.bounces << ","
+      << s.sppPerFrame << "," << toString(s.kernel) << "," << toString(s.strategy) << "," << toString(s.sort) << ","
+      << csvQuote(cell.label) << "," << r.frameMs.median << "," << r.frameMs.min << "," << r.frameMs.max << ","
+      << r.traceAfterFirstMs.median;
+  for (const char* st : kStages) csv << "," << (r.stageMs.count(st) ? r.stageMs.at(st).median : 0.0);
+  csv << "," << r.raysPerSecond << "," << meanOf(b, &BounceStats::simtEfficiency, false) << ","
+      << meanOf(b, &BounceStats::virtualWarpEfficiency, false) << ","
+      << meanOf(b, &BounceStats::virtualWarpEfficiency, true) << ","
+      << meanOf(b, &BounceStats::predictionErrorMean, true) << ","
+      << meanOf(b, &BounceStats::predictionErrorMedian, true) << "," << meanOf(b, &BounceStats::cellHitRate, true)
+      << "," << r.detailed.keyBits << "," << r.detailed.lengthCacheBytes << ","
+      << (r.errorCurveRelMse.empty() ? -1.0 : r.errorCurveRelMse.back()) << "\n";
+  csv.flush();
+}
+
+}  // namespace
+
+int runBenchCommand(const std::vector<std::string>& args) {
+  BenchPlan plan;
+  try {
+    plan = parseBenchPlan(args);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "raylab bench: %s\n\n%s", e.what(), benchHelp().c_str());
+    return kExitUsage;
+  }
+  std::filesystem::create_directories(plan.outDir);
+  VulkanContext ctx(contextOptionsFor(plan.common));
+  std::ofstream csv(plan.outDir + "/results.csv");
+  std::ofstream jsonl(plan.outDir + "/results.jsonl");
+  writeCsvHeader(csv);
+
+  size_t done = 0, failed = 0;
+  auto start = std::chrono::steady_clock::now();
+  for (size_t ci = 0; ci < plan.cases.size(); ++ci) {
+    std::vector<const BenchCell*> cells;
+    for (const BenchCell& c : plan.cells)
+      if (c.caseIndex == ci) cells.push_back(&c);
+    try {
+      Settings caseSettings = cells.front()->settings;
+      LoadedScene loaded = loadSceneForSettings(caseSettings);
+      PathTracer tracer(ctx, loaded.scene, caseSettings, loaded.view);
+      std::vector<glm::vec3> reference = renderReference(tracer, caseSettings, plan.referenceSpp);
+      for (const BenchCell* cell : cells) {
+        ++done;
+        CellResult r = measureCell(tracer, cell->settings, plan.warmupFrames, plan.timedFrames, reference);
+        writeCsvRow(csv, ctx, *cell, loaded.view.name, r);
+        nlohmann::json row = {{"device", toJson(ctx.info())}, {"git_revision", RAYLAB_GIT_REV},
+                              {"view", loaded.view.name},      {"label", cell->label},
+                              {"settings", toJson(cell->settings)}, {"result", toJson(r)}};
+        jsonl << row.dump() << "\n";
+        jsonl.flush();
+        double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::fprintf(stderr, "[%zu/%zu %.0fs] %s@%s %-32s frame %.2f ms, trace(b>=1) %.2f ms\n", done,
+                     plan.cells.size(), elapsed, loaded.scene.name.c_str(), loaded.view.name.c_str(),
+                     cell->label.c_str(), r.frameMs.median, r.traceAfterFirstMs.median);
+      }
+    } catch (const std::exception& e) {
+      failed += cells.size();
+      done += cells.size();
+      std::fprintf(stderr, "raylab bench: case %s@%s failed: %s\n", plan.cases[ci].scene.c_str(),
+                   plan.cases[ci].view.c_str(), e.what());
+    }
+  }
+  std::printf("bench: %zu cells, %zu failed; results in %s/results.csv and results.jsonl\n", plan.cells.size(),
+              failed, plan.outDir.c_str());
+  if (ctx.validationErrors() > 0) return kExitValidation;
+  return failed == 0 ? kExitOk : kExitFailure;
+}
+
+}  // namespace raylab

@@ -1,0 +1,80 @@
+#include "app/bench_measure.h"
+
+#include <algorithm>
+
+#include "renderer/image_metrics.h"
+#include "renderer/stats_json.h"
+
+namespace raylab {
+
+Spread spreadOf(std::vector<double> v) {
+  Spread s;
+  if (v.empty()) return s;
+  std::sort(v.begin(), v.end());
+  s.min = v.front();
+  s.max = v.back();
+  s.median = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+  return s;
+}
+
+CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t warmup, uint32_t timed,
+                       const std::vector<glm::vec3>& reference) {
+  CellResult r;
+  tracer.setDetailedStats(false);
+  tracer.applySettings(settings);
+  for (uint32_t f = 0; f < warmup; ++f) tracer.renderFrame();
+  tracer.restartAccumulation();
+
+  std::vector<double> frame, wall, traceLater;
+  std::map<std::string, std::vector<double>> stages;
+  double cumulative = 0.0;
+  uint64_t rays = 0;
+  for (uint32_t f = 0; f < timed; ++f) {
+    const FrameStats& st = tracer.renderFrame();
+    frame.push_back(st.frameMs);
+    wall.push_back(st.wallMs);
+    rays += st.raysTraced;
+    std::map<std::string, double> perStage;
+    double later = 0.0;
+    for (const StageTime& s : st.stages) {
+      perStage[s.stage] += s.ms;
+      if (s.stage == "trace" && s.bounce >= 1) later += s.ms;
+    }
+    for (const auto& [name, ms] : perStage) stages[name].push_back(ms);
+    traceLater.push_back(later);
+    cumulative += st.frameMs > 0.0 ? st.frameMs : st.wallMs;
+    r.errorCurveMs.push_back(cumulative);
+    r.errorCurveRelMse.push_back(reference.empty() ? -1.0 : relativeMse(tracer.readRadiance(), reference));
+  }
+  r.frameMs = spreadOf(frame);
+  r.wallMs = spreadOf(wall);
+  r.traceAfterFirstMs = spreadOf(traceLater);
+  for (auto& [name, v] : stages) r.stageMs[name] = spreadOf(v);
+  r.raysPerSecond = cumulative > 0.0 ? rays / (cumulative * 1e-3) : 0.0;
+
+  // Counting and readbacks slow the frame down, so they get their own frame, outside the timed ones.
+  Settings counting = settings;
+  counting.countSimt = true;
+  tracer.applySettings(counting);
+  tracer.setDetailedStats(true);
+  r.detailed = tracer.renderFrame();
+  tracer.setDetailedStats(false);
+  tracer.applySettings(settings);
+  return r;
+}
+
+nlohmann::json toJson(const CellResult& r) {
+  auto spread = [](const Spread& s) { return nlohmann::json{{"median", s.median}, {"min", s.min}, {"max", s.max}}; };
+  nlohmann::json stages;
+  for (const auto& [name, s] : r.stageMs) stages[name] = spread(s);
+  return {{"frame_ms", spread(r.frameMs)},
+          {"wall_ms", spread(r.wallMs)},
+          {"trace_after_first_ms", spread(r.traceAfterFirstMs)},
+          {"stage_ms", stages},
+          {"rays_per_second", r.raysPerSecond},
+          {"error_curve_ms", r.errorCurveMs},
+          {"error_curve_rel_mse", r.errorCurveRelMse},
+          {"detailed_frame", toJson(r.detailed)}};
+}
+
+}  // namespace raylab

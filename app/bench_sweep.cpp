@@ -1,0 +1,175 @@
+#include "app/bench_sweep.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace raylab {
+namespace {
+
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  for (std::string item; std::getline(ss, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+// Reads `name = value` lines (# comments) into flag/value pairs.
+std::vector<std::string> readSweepFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw UsageError("--sweep: cannot read " + path);
+  std::vector<std::string> args;
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    line = line.substr(0, line.find('#'));
+    size_t eq = line.find('=');
+    auto trim = [](std::string s) {
+      size_t a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t\r");
+      return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+    };
+    if (trim(line).empty()) continue;
+    if (eq == std::string::npos) throw UsageError(path + ":" + std::to_string(n) + ": expected name = value");
+    args.push_back("--" + trim(line.substr(0, eq)));
+    args.push_back(trim(line.substr(eq + 1)));
+  }
+  return args;
+}
+
+struct Axes {
+  std::vector<std::string> strategies{"all"}, sorts{"radix"}, grids{"auto"}, clamps{"off"}, resets{}, factors{};
+};
+
+// Applies one sweep-axis value to a Settings copy through the same parser as the CLI.
+Settings withFlag(const Settings& base, const std::string& flag, const std::string& value) {
+  if (flag == "--clamp" && value == "off") {
+    Settings s = base;
+    s.clampToCamera = false;
+    return s;
+  }
+  std::vector<std::string> rest;
+  CommonOptions o = parseCommonOptions({flag, value}, &rest);
+  Settings s = base;
+  const Settings& d = o.settings;
+  if (flag == "--strategy") s.strategy = d.strategy;
+  if (flag == "--sort") s.sort = d.sort;
+  if (flag == "--grid") s.grid = d.grid;
+  if (flag == "--clamp") { s.clampToCamera = true; s.clampDistance = d.clampDistance; }
+  if (flag == "--gauss-reset") s.gaussReset = d.gaussReset;
+  if (flag == "--fixed-factor") s.fixedFactor = d.fixedFactor;
+  return s;
+}
+
+bool usesGrid(KeyStrategy s) { return s != KeyStrategy::None && s != KeyStrategy::DeadLast; }
+
+}  // namespace
+
+BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
+  std::vector<std::string> args;
+  for (size_t i = 0; i < rawArgs.size(); ++i) {
+    if (rawArgs[i] == "--sweep") {
+      if (i + 1 >= rawArgs.size()) throw UsageError("--sweep needs a file");
+      std::vector<std::string> file = readSweepFile(rawArgs[++i]);
+      args.insert(args.end(), file.begin(), file.end());
+    } else {
+      args.push_back(rawArgs[i]);
+    }
+  }
+  BenchPlan plan;
+  Axes axes;
+  std::vector<std::string> rest;
+  std::vector<std::string> caseList{"temple@alley", "temple@hall", "temple@openings"};
+  plan.common = parseCommonOptions(args, &rest);
+  for (size_t i = 0; i < rest.size(); ++i) {
+    const std::string& flag = rest[i];
+    if (i + 1 >= rest.size()) throw UsageError(flag + " needs a value");
+    const std::string& v = rest[++i];
+    if (flag == "--cases") caseList = splitList(v);
+    else if (flag == "--strategies") axes.strategies = splitList(v);
+    else if (flag == "--sorts") axes.sorts = splitList(v);
+    else if (flag == "--grids") axes.grids = splitList(v);
+    else if (flag == "--clamps") axes.clamps = splitList(v);
+    else if (flag == "--gauss-resets") axes.resets = splitList(v);
+    else if (flag == "--fixed-factors") axes.factors = splitList(v);
+    else if (flag == "--timed-frames") plan.timedFrames = parseUint(flag, v, 1, 10000);
+    else if (flag == "--warmup") plan.warmupFrames = parseUint(flag, v, 0, 10000);
+    else if (flag == "--reference-spp") plan.referenceSpp = parseUint(flag, v, 1, 1 << 16);
+    else if (flag == "--out-dir") plan.outDir = v;
+    else throw UsageError("unknown option '" + flag + "'");
+  }
+  for (const std::string& c : caseList) {
+    size_t at = c.rfind('@');
+    plan.cases.push_back(at == std::string::npos ? BenchCase{c, ""} : BenchCase{c.substr(0, at), c.substr(at + 1)});
+  }
+  if (axes.strategies.size() == 1 && axes.strategies[0] == "all") {
+    axes.strategies.clear();
+    for (KeyStrategy s : allKeyStrategies())
+      if (s != KeyStrategy::None) axes.strategies.push_back(toString(s));
+  }
+
+  const Settings& base = plan.common.settings;
+  for (size_t ci = 0; ci < plan.cases.size(); ++ci) {
+    Settings caseBase = base;
+    caseBase.scene = plan.cases[ci].scene;
+    caseBase.view = plan.cases[ci].view;
+    // Baselines first: the megakernel and the unsorted wavefront are in every sweep.
+    Settings mega = caseBase;
+    mega.kernel = Kernel::Megakernel;
+    mega.strategy = KeyStrategy::None;
+    plan.cells.push_back({ci, mega, "megakernel"});
+    Settings plain = caseBase;
+    plain.kernel = Kernel::Wavefront;
+    plain.strategy = KeyStrategy::None;
+    plan.cells.push_back({ci, plain, "none"});
+    for (const std::string& strategy : axes.strategies) {
+      Settings st = withFlag(plain, "--strategy", strategy);
+      if (st.strategy == KeyStrategy::None) continue;
+      for (const std::string& sort : axes.sorts) {
+        Settings so = withFlag(st, "--sort", sort);
+        std::vector<Settings> variants{so};
+        auto expand = [&](const std::vector<std::string>& values, const char* flag) {
+          if (values.empty() || !usesGrid(so.strategy)) return;
+          std::vector<Settings> next;
+          for (const Settings& v : variants)
+            for (const std::string& value : values) next.push_back(withFlag(v, flag, value));
+          variants = next;
+        };
+        expand(axes.grids, "--grid");
+        expand(axes.clamps, "--clamp");
+        if (so.strategy == KeyStrategy::Gaussian) expand(axes.resets, "--gauss-reset");
+        if (so.strategy == KeyStrategy::Fixed || so.strategy == KeyStrategy::TwoPoint) expand(axes.factors, "--fixed-factor");
+        for (const Settings& v : variants) {
+          std::string label = strategy + "/" + sort;
+          if (usesGrid(v.strategy)) {
+            label += v.grid.automatic ? " grid=auto" : " grid=" + std::to_string(v.grid.cells.x) + "x" +
+                                                         std::to_string(v.grid.cells.y) + "x" + std::to_string(v.grid.cells.z);
+            label += v.clampToCamera ? " clamp=" + std::to_string(int(v.clampDistance)) : " clamp=off";
+          }
+          if (!axes.resets.empty() && v.strategy == KeyStrategy::Gaussian) label += " reset=" + std::to_string(v.gaussReset);
+          if (!axes.factors.empty() && (v.strategy == KeyStrategy::Fixed || v.strategy == KeyStrategy::TwoPoint))
+            label += " factor=" + std::to_string(v.fixedFactor);
+          plan.cells.push_back({ci, v, label});
+        }
+      }
+    }
+  }
+  return plan;
+}
+
+std::string benchHelp() {
+  return "usage: raylab bench [render flags] [sweep flags]\n"
+         "  --cases SCENE@VIEW,...    default temple@alley,temple@hall,temple@openings\n"
+         "  --strategies all|a,b,...  key strategies besides the baselines (default all)\n"
+         "  --sorts radix,bitonic     sorts to sweep (default radix)\n"
+         "  --grids auto,32x8x32      grid settings to sweep\n"
+         "  --clamps off,50           camera clamp distances to sweep\n"
+         "  --gauss-resets 20,inf     Gaussian reset thresholds to sweep\n"
+         "  --fixed-factors 0.5,0.25  fixed-length factors to sweep\n"
+         "  --timed-frames N          measured frames per cell (default 8)\n"
+         "  --warmup N                unmeasured frames first (default 2)\n"
+         "  --reference-spp N         samples of the megakernel reference image (default 64)\n"
+         "  --out-dir DIR             results.csv, results.jsonl and charts (default bench-out)\n"
+         "  --sweep FILE              the same flags as `name = value` lines\n"
+         "The megakernel and the unsorted wavefront are always measured.\n";
+}
+
+}  // namespace raylab

@@ -1,0 +1,37 @@
+// The benchmark's sweep: which (scene, viewpoint) cases, and which method settings to run on each.
+// Parsed from flags or a sweep file of `flag = value` lines (same names as the flags, without dashes).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/cli_options.h"
+
+namespace raylab {
+
+struct BenchCase {
+  std::string scene;
+  std::string view;  // empty: the scene's first viewpoint
+};
+
+struct BenchCell {
+  size_t caseIndex = 0;
+  Settings settings;
+  std::string label;  // e.g. "fixed/radix grid=auto clamp=off"
+};
+
+struct BenchPlan {
+  CommonOptions common;  // base settings, device, validation
+  std::vector<BenchCase> cases;
+  std::vector<BenchCell> cells;  // every case x method combination, baselines first
+  uint32_t timedFrames = 8;
+  uint32_t warmupFrames = 2;
+  uint32_t referenceSpp = 64;
+  std::string outDir = "bench-out";
+};
+
+// Throws UsageError for unknown names or values.
+BenchPlan parseBenchPlan(const std::vector<std::string>& args);
+std::string benchHelp();
+
+}  // namespace raylab
