@@ -22,9 +22,11 @@ layout(buffer_reference, scalar) buffer SortUintBuf { uint v[]; };
 
 // Bitonic sort: elements per work group in shared memory (keys and values: 16 KiB, under lavapipe's 32 KiB).
 #define SORT_BITONIC_TILE 2048
+#define SORT_BITONIC_TILE_LOG 11
 #define SORT_BITONIC_GROUP 256
 
-// sort_radix_histogram and sort_radix_scatter. `hist` holds SORT_RADIX * numGroups per-group digit counts,
+// sort_radix_histogram and sort_radix_scatter (both tile the keys by their group size times keys per
+// invocation, specialization constants). `hist` holds SORT_RADIX * numGroups per-group digit counts,
 // digit-major (hist[digit * numGroups + group]) so that one work group scans one digit's row, followed by
 // SORT_RADIX digit totals written by sort_radix_scan.
 struct SortRadixPush {
@@ -38,14 +40,15 @@ struct SortRadixPush {
   uint keyBits;      // 1..32; keys >= 2^keyBits sort as 2^keyBits (after every real key)
   uint numGroups;    // tiles of the whole sort (the width of a hist row)
   uint groupOffset;  // first tile of this dispatch (dispatches are split at the device's group limit)
-  uint tile;         // elements per tile (the scatter's group size times keys per thread)
+  uint pad0;
 };
 
-// sort_radix_scan: one work group per digit scans its row of `hist` in place.
+// sort_radix_scan: each work group scans `rowsPerGroup` digits' rows of `hist` in place (1 on GPUs; more on
+// CPU devices, where every work group has a fixed cost).
 struct SortScanPush {
   SORT_REF(SortUintBuf) hist;
   uint numGroups;
-  uint pad0;
+  uint rowsPerGroup;
 };
 
 // sort_bitonic_local (mode 0: full sort of each tile; mode 1: the merge steps whose distance fits a tile)
@@ -55,10 +58,12 @@ struct SortBitonicPush {
   SORT_REF(SortUintBuf) values;
   uint count;
   uint keyBits;
-  uint mode;         // local: 0 sort, 1 merge. global: 0 flip step of block `block`, 1 half-cleaner of `distance`
-  uint block;        // global flip: block size k (pairs p and k-1-p of each block)
-  uint distance;     // global half-cleaner: pairs i and i+distance within blocks of 2*distance
+  uint mode;         // local: 0 sort, 1 merge. global: 0 flip step of block 2^blockLog, 1 half-cleaner
+  uint blockLog;     // global flip: log2 of the block size k (pairs p and k-1-p of each block)
+  uint distanceLog;  // global half-cleaner: log2 of d (pairs i and i+d within blocks of 2d)
   uint comparators;  // number of compare-exchanges of a global step (padded count / 2)
+  uint tileOffset;   // local: first tile of this dispatch (dispatches are split at the group limit)
+  uint pad0;
 };
 
 // sort_copy: copies `count` keys and values (used when the radix pass count is odd).

@@ -1,0 +1,317 @@
+#include "app/sortbench_command.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <memory>
+#include <numeric>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "renderer/gpu_buffer.h"
+#include "renderer/gpu_sort.h"
+#include "renderer/vk_check.h"
+#include "renderer/vk_context.h"
+#include "shaders/sort_types.h"
+
+namespace raylab {
+namespace {
+
+constexpr uint32_t kMaxN = 1u << 27;
+constexpr int kWarmups = 2;
+
+const char* kUsage =
+    "usage: raylab sortbench [options]\n"
+    "  --n N[,N...]        pair counts (1 .. 2^27; default 2^21)\n"
+    "  --n-range A:B       powers of two 2^A .. 2^B\n"
+    "  --bits B            key bits, 1..32 (default 30; keys are uniform below 2^B unless --dist says otherwise)\n"
+    "  --dist D            uniform|sorted|reversed|equal|few (default uniform)\n"
+    "  --sort S            bitonic|radix|both (default both)\n"
+    "  --repeat R          timed runs per (sort, n), after 2 warm-up runs (default 10)\n"
+    "  --device NAME       substring of the Vulkan device name\n"
+    "  --validate          enable the Khronos validation layer (exit 1 on any error)\n"
+    "  --csv FILE          also write the results as CSV\n"
+    "  --radix-group G     radix scatter work-group size (tuning; default: device's)\n"
+    "  --radix-kpt K       radix keys per invocation (tuning; default 15)\n";
+
+struct BenchUsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct BenchOptions {
+  std::vector<uint32_t> counts;
+  uint32_t bits = 30;
+  std::string dist = "uniform";
+  std::vector<SortAlgorithm> sorts{SortAlgorithm::Bitonic, SortAlgorithm::Radix};
+  uint32_t repeat = 10;
+  std::string device;
+  bool validate = false;
+  std::string csv;
+  GpuSorter::Tuning tuning;
+};
+
+uint32_t parseNumber(const std::string& flag, const std::string& text, uint64_t lo, uint64_t hi) {
+  size_t used = 0;
+  unsigned long long v = 0;
+  try {
+    v = std::stoull(text, &used, 10);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || text[0] == '-' || v < lo || v > hi)
+    throw BenchUsageError(flag + ": '" + text + "' is not a number in " + std::to_string(lo) + ".." +
+                          std::to_string(hi));
+  return static_cast<uint32_t>(v);
+}
+
+BenchOptions parseOptions(int argc, char** argv) {
+  BenchOptions o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (flag == "--help" || flag == "-h") throw BenchUsageError("");
+    if (flag == "--validate") {
+      o.validate = true;
+      continue;
+    }
+    if (i + 1 >= argc) throw BenchUsageError(flag + " needs a value");
+    const std::string value = argv[++i];
+    if (flag == "--n") {
+      size_t start = 0;
+      while (start <= value.size()) {
+        size_t comma = value.find(',', start);
+        if (comma == std::string::npos) comma = value.size();
+        o.counts.push_back(parseNumber(flag, value.substr(start, comma - start), 1, kMaxN));
+        start = comma + 1;
+      }
+    } else if (flag == "--n-range") {
+      const size_t colon = value.find(':');
+      if (colon == std::string::npos) throw BenchUsageError("--n-range wants A:B, e.g. 16:23");
+      const uint32_t a = parseNumber(flag, value.substr(0, colon), 0, 27);
+      const uint32_t b = parseNumber(flag, value.substr(colon + 1), a, 27);
+      for (uint32_t e = a; e <= b; ++e) o.counts.push_back(1u << e);
+    } else if (flag == "--bits") {
+      o.bits = parseNumber(flag, value, 1, 32);
+    } else if (flag == "--dist") {
+      if (value != "uniform" && value != "sorted" && value != "reversed" && value != "equal" && value != "few")
+        throw BenchUsageError("--dist: unknown distribution '" + value + "'");
+      o.dist = value;
+    } else if (flag == "--sort") {
+      if (value == "both") o.sorts = {SortAlgorithm::Bitonic, SortAlgorithm::Radix};
+      else if (value == "bitonic") o.sorts = {SortAlgorithm::Bitonic};
+      else if (value == "radix") o.sorts = {SortAlgorithm::Radix};
+      else throw BenchUsageError("--sort: unknown sort '" + value + "'");
+    } else if (flag == "--repeat") {
+      o.repeat = parseNumber(flag, value, 1, 100000);
+    } else if (flag == "--device") {
+      o.device = value;
+    } else if (flag == "--csv") {
+      o.csv = value;
+    } else if (flag == "--radix-group") {
+      o.tuning.radixGroupSize = parseNumber(flag, value, 1, 256);
+    } else if (flag == "--radix-kpt") {
+      o.tuning.radixKeysPerThread = parseNumber(flag, value, 1, 32);
+    } else {
+      throw BenchUsageError("unknown flag '" + flag + "'");
+    }
+  }
+  if (o.counts.empty()) o.counts.push_back(1u << 21);
+  return o;
+}
+
+std::vector<uint32_t> makeKeys(const std::string& dist, uint32_t n, uint32_t bits) {
+  std::mt19937 rng(12345u + n);
+  const uint32_t mask = bits == 32 ? ~0u : (1u << bits) - 1u;
+  std::vector<uint32_t> keys(n);
+  if (dist == "equal") {
+    std::fill(keys.begin(), keys.end(), rng() & mask);
+    return keys;
+  }
+  if (dist == "few") {
+    uint32_t values[5];
+    for (uint32_t& v : values) v = rng() & mask;
+    for (uint32_t& k : keys) k = values[rng() % 5];
+    return keys;
+  }
+  for (uint32_t& k : keys) k = rng() & mask;
+  if (dist == "sorted") std::sort(keys.begin(), keys.end());
+  if (dist == "reversed") std::sort(keys.begin(), keys.end(), std::greater<>());
+  return keys;
+}
+
+// Empty string when the GPU result is right: radix must equal the stable order exactly; bitonic must have
+// the keys in that order and carry each value (the input index) with its key.
+std::string checkResult(SortAlgorithm sort, const std::vector<uint32_t>& keys, uint32_t bits,
+                        const std::vector<uint32_t>& gotKeys, const std::vector<uint32_t>& gotValues) {
+  const uint32_t n = static_cast<uint32_t>(keys.size());
+  std::vector<uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    return gpu::sortEffectiveKey(keys[a], bits) < gpu::sortEffectiveKey(keys[b], bits);
+  });
+  std::vector<bool> seen(n, false);
+  for (uint32_t i = 0; i < n; ++i) {
+    if (gotKeys[i] != keys[order[i]]) return "key mismatch at index " + std::to_string(i);
+    if (sort == SortAlgorithm::Radix) {
+      if (gotValues[i] != order[i]) return "value (stability) mismatch at index " + std::to_string(i);
+    } else {
+      const uint32_t v = gotValues[i];
+      if (v >= n || seen[v] || keys[v] != gotKeys[i]) return "value not carried with its key at " + std::to_string(i);
+      seen[v] = true;
+    }
+  }
+  return "";
+}
+
+struct Row {
+  std::string sort;
+  uint32_t n = 0;
+  double medianMs = 0, minMs = 0, maxMs = 0;
+  bool ok = true;
+};
+
+// Times `repeat` sorts of a fresh copy of the input, each bracketed by timestamps; the copy is outside them.
+class Bench {
+ public:
+  Bench(const VulkanContext& ctx) : ctx_(ctx) {
+    VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    info.queryCount = 2;
+    VK_CHECK(vkCreateQueryPool(ctx.device(), &info, nullptr, &pool_));
+  }
+  ~Bench() { vkDestroyQueryPool(ctx_.device(), pool_, nullptr); }
+  Bench(const Bench&) = delete;
+  Bench& operator=(const Bench&) = delete;
+
+  double timeOnce(GpuSorter& sorter, const GpuBuffer& srcKeys, const GpuBuffer& srcValues, const GpuBuffer& keys,
+                  const GpuBuffer& values, uint32_t n, uint32_t bits) {
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+      vkCmdResetQueryPool(cmd, pool_, 0, 2);
+      VkBufferCopy region{0, 0, VkDeviceSize(n) * 4};
+      vkCmdCopyBuffer(cmd, srcKeys.handle(), keys.handle(), 1, &region);
+      vkCmdCopyBuffer(cmd, srcValues.handle(), values.handle(), 1, &region);
+      computeBarrier(cmd);
+      // Bottom of pipe for both: the first is written once the copies are done, the second once the sort is.
+      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, 0);
+      sorter.record(cmd, keys.address(), values.address(), n, bits);
+      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, 1);
+    });
+    uint64_t stamps[2];
+    VK_CHECK(vkGetQueryPoolResults(ctx_.device(), pool_, 0, 2, sizeof(stamps), stamps, sizeof(uint64_t),
+                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    return double(stamps[1] - stamps[0]) * ctx_.info().timestampPeriodNs * 1e-6;
+  }
+
+ private:
+  const VulkanContext& ctx_;
+  VkQueryPool pool_ = VK_NULL_HANDLE;
+};
+
+void printRow(std::FILE* f, const Row& r, bool csv, const std::string& extra = "") {
+  const double pairsPerSec = r.medianMs > 0 ? r.n / (r.medianMs * 1e-3) : 0.0;
+  if (csv)
+    std::fprintf(f, "%s,%u,%.6f,%.6f,%.6f,%.0f,%s%s\n", r.sort.c_str(), r.n, r.medianMs, r.minMs, r.maxMs,
+                 pairsPerSec, r.ok ? "ok" : "MISMATCH", extra.c_str());
+  else
+    std::fprintf(f, "%-8s %10u %11.4f %11.4f %11.4f %12.1f  %s\n", r.sort.c_str(), r.n, r.medianMs, r.minMs,
+                 r.maxMs, pairsPerSec * 1e-6, r.ok ? "ok" : "MISMATCH");
+}
+
+int runBench(const BenchOptions& o) {
+  ContextOptions co;
+  co.validate = o.validate;
+  co.deviceName = o.device;
+  co.quiet = true;
+  VulkanContext ctx(co);
+  const DeviceInfo& dev = ctx.info();
+  if (!dev.timestamps || dev.timestampPeriodNs <= 0) {
+    std::fprintf(stderr, "raylab sortbench: %s has no timestamp queries on its compute queue\n", dev.name.c_str());
+    return 1;
+  }
+  const uint32_t maxN = *std::max_element(o.counts.begin(), o.counts.end());
+  std::printf("sortbench: device %s (driver %s), subgroup %u, %u-bit keys, %s, %u runs (+%d warm-up)\n",
+              dev.name.c_str(), dev.driver.c_str(), dev.subgroupSize, o.bits, o.dist.c_str(), o.repeat, kWarmups);
+  std::printf("%-8s %10s %11s %11s %11s %12s  %s\n", "sort", "n", "median_ms", "min_ms", "max_ms", "Mpairs/s",
+              "check");
+  std::fflush(stdout);
+
+  std::vector<Row> rows;
+  bool allOk = true;
+  Bench bench(ctx);
+  GpuBuffer keys(ctx, VkDeviceSize(maxN) * 4), values(ctx, VkDeviceSize(maxN) * 4);
+  for (SortAlgorithm sort : o.sorts) {
+    GpuSorter sorter(ctx, sort, maxN, o.tuning);
+    for (uint32_t n : o.counts) {
+      const std::vector<uint32_t> hostKeys = makeKeys(o.dist, n, o.bits);
+      std::vector<uint32_t> hostValues(n);
+      std::iota(hostValues.begin(), hostValues.end(), 0u);
+      GpuBuffer srcKeys = makeBufferFrom(ctx, hostKeys), srcValues = makeBufferFrom(ctx, hostValues);
+      Row row{toString(sort), n};
+      std::vector<double> ms;
+      for (uint32_t run = 0; run < o.repeat + kWarmups; ++run) {
+        const double t = bench.timeOnce(sorter, srcKeys, srcValues, keys, values, n, o.bits);
+        if (run == 0) {  // check the first result: every later run sorts the same input the same way
+          const std::string err = checkResult(sort, hostKeys, o.bits, keys.downloadVector<uint32_t>(n),
+                                              values.downloadVector<uint32_t>(n));
+          if (!err.empty()) {
+            std::fprintf(stderr, "raylab sortbench: %s n=%u: %s\n", row.sort.c_str(), n, err.c_str());
+            row.ok = allOk = false;
+          }
+        }
+        if (run >= uint32_t(kWarmups)) ms.push_back(t);
+      }
+      std::sort(ms.begin(), ms.end());
+      row.minMs = ms.front();
+      row.maxMs = ms.back();
+      row.medianMs = ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
+      printRow(stdout, row, false);
+      std::fflush(stdout);
+      rows.push_back(row);
+    }
+  }
+  if (!o.csv.empty()) {
+    std::FILE* f = std::fopen(o.csv.c_str(), "w");
+    if (!f) {
+      std::fprintf(stderr, "raylab sortbench: cannot write %s\n", o.csv.c_str());
+      return 1;
+    }
+    std::fprintf(f, "sort,n,median_ms,min_ms,max_ms,pairs_per_s,check,bits,dist,repeat,device,driver\n");
+    auto quoted = [](std::string s) {
+      std::replace(s.begin(), s.end(), '"', '\'');
+      return "\"" + s + "\"";
+    };
+    const std::string extra = "," + std::to_string(o.bits) + "," + o.dist + "," + std::to_string(o.repeat) + "," +
+                              quoted(dev.name) + "," + quoted(dev.driver);
+    for (const Row& r : rows) printRow(f, r, true, extra);
+    std::fclose(f);
+  }
+  if (o.validate && ctx.validationErrors() > 0) {
+    std::fprintf(stderr, "raylab sortbench: the validation layer reported %u errors\n", ctx.validationErrors());
+    return 1;
+  }
+  return allOk ? 0 : 1;
+}
+
+}  // namespace
+
+int runSortBenchCommand(int argc, char** argv) {
+  BenchOptions options;
+  try {
+    options = parseOptions(argc, argv);
+  } catch (const BenchUsageError& e) {
+    const bool help = std::string(e.what()).empty();
+    if (!help) std::fprintf(stderr, "raylab sortbench: %s\n\n", e.what());
+    std::fputs(kUsage, help ? stdout : stderr);
+    return help ? 0 : 2;
+  }
+  try {
+    return runBench(options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "raylab sortbench: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace raylab

@@ -1,0 +1,46 @@
+#version 460
+// Radix sort, step (a) of a pass: the digit histogram of one tile, written to the tile's column of the
+// digit-major count table (hist[digit * numGroups + tile]). Same group size, keys per invocation and tiles
+// as the scatter; all of an invocation's keys are loaded before any is counted, so the loads overlap.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_ballot : require
+#include "sort_types.h"
+
+layout(local_size_x_id = 0) in;
+layout(constant_id = 1) const uint KPT = 15;  // keys per invocation
+layout(push_constant, scalar) uniform Push { SortRadixPush pc; };
+
+shared uint sHist[SORT_RADIX];
+
+void main() {
+  uint t = gl_LocalInvocationID.x;
+  uint group = gl_WorkGroupID.x + pc.groupOffset;
+  for (uint d = t; d < SORT_RADIX; d += gl_WorkGroupSize.x) sHist[d] = 0;
+
+  uint begin = group * gl_WorkGroupSize.x * KPT + t;
+  uint digits[KPT];
+  for (uint k = 0; k < KPT; ++k) {
+    uint i = begin + k * gl_WorkGroupSize.x;
+    digits[k] = i < pc.count ? (sortEffectiveKey(pc.keysIn.v[i], pc.keyBits) >> pc.shift) & SORT_RADIX_MASK
+                             : 0xFFFFFFFFu;
+  }
+  barrier();  // histogram cleared
+  for (uint k = 0; k < KPT; ++k) {
+    uint d = digits[k];
+    if (d == 0xFFFFFFFFu) continue;
+    // Runs of equal digits (sorted or nearly constant keys, the high digits of small keys) would
+    // serialise on one shared counter; a subgroup that agrees adds once.
+    if (subgroupAllEqual(d)) {
+      uint n = subgroupBallotBitCount(subgroupBallot(true));
+      if (subgroupElect()) atomicAdd(sHist[d], n);
+    } else {
+      atomicAdd(sHist[d], 1u);
+    }
+  }
+  barrier();
+  for (uint d = t; d < SORT_RADIX; d += gl_WorkGroupSize.x) pc.hist.v[d * pc.numGroups + group] = sHist[d];
+}
