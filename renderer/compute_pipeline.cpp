@@ -80,9 +80,13 @@ void ComputePipeline::dispatchGroups(VkCommandBuffer cmd, const void* push, uint
   if (groups == 0) return;
   if (groups > ctx_->info().maxGroupCountX)
     throw VulkanError(name_ + ": " + std::to_string(groups) + " work groups exceed the device limit");
+  bindAndPush(cmd, push);
+  vkCmdDispatch(cmd, groups, 1, 1);
+}
+
+void ComputePipeline::bindAndPush(VkCommandBuffer cmd, const void* push) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
   if (pushBytes_) vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes_, push);
-  vkCmdDispatch(cmd, groups, 1, 1);
 }
 
 void ComputePipeline::dispatchThreads(VkCommandBuffer cmd, const void* push, uint64_t threads) const {

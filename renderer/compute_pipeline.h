@@ -33,6 +33,13 @@ class ComputePipeline {
   // Binds, pushes constants and dispatches exactly `groups` work groups.
   void dispatchGroups(VkCommandBuffer cmd, const void* push, uint32_t groups) const;
 
+  // Binds, pushes constants and dispatches the group counts stored at `offset` in `args` (x, y, z uints).
+  template <class Push>
+  void dispatchIndirect(VkCommandBuffer cmd, const Push& push, VkBuffer args, VkDeviceSize offset) const {
+    checkPushSize(sizeof(Push));
+    bindAndPush(cmd, &push);
+    vkCmdDispatchIndirect(cmd, args, offset);
+  }
   template <class Push>
   void dispatchThreads(VkCommandBuffer cmd, const Push& push, uint64_t threads) const {
     checkPushSize(sizeof(Push));
@@ -46,6 +53,7 @@ class ComputePipeline {
 
  private:
   void checkPushSize(size_t bytes) const;
+  void bindAndPush(VkCommandBuffer cmd, const void* push) const;
   void release();
 
   const VulkanContext* ctx_ = nullptr;

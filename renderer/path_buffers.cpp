@@ -21,6 +21,7 @@ PathBuffers::PathBuffers(const VulkanContext& ctx, uint32_t width, uint32_t heig
   counterHistory = GpuBuffer(ctx, VkDeviceSize(kCounterCount) * 4 * (bounces + 1), MemoryKind::HostVisible);
   keys = GpuBuffer(ctx, n * 4);
   values = GpuBuffer(ctx, n * 4);
+  live = GpuBuffer(ctx, 4 * 4);
   frameBlock = GpuBuffer(ctx, sizeof(gpu::GpuFrame));
 }
 
@@ -43,6 +44,7 @@ gpu::GpuFrame PathBuffers::addresses() const {
   f.accumulation = accumulation.address();
   f.image = image.address();
   f.counters = counters.address();
+  f.live = live.address();
   f.pathCount = pathCount;
   return f;
 }

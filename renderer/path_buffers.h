@@ -25,6 +25,7 @@ struct PathBuffers {
   GpuBuffer counters;         // live counters, cleared after every trace
   GpuBuffer counterHistory;   // kCounterCount per bounce, copied after every trace (host visible)
   GpuBuffer keys, values;     // sort input/output
+  GpuBuffer live;             // live-path count and indirect dispatch size (GpuFrame::live)
   GpuBuffer frameBlock;       // GpuFrame
 
   // The GpuFrame block with every address filled in; the caller sets camera, scene and frame parameters.

@@ -139,6 +139,8 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
 }
 
 // The bounce loop of DESIGN.md: trace, learn, shade, then keys, sort and reorder before the next bounce.
+// Trace and shade are dispatched indirectly over the live paths: all of them until a sort has moved the
+// finished paths behind the live ones (GpuFrame::live).
 void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& basePush) {
   gpu::PathStagePush push = basePush;
   const uint32_t n = buffers_->pathCount;
@@ -152,14 +154,14 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
     push.bounce = b;
     {
       ScopedStage s(&timer_, cmd, "trace");
-      (settings_.countSimt ? traceCounting_ : trace_).dispatchThreads(cmd, push, n);
+      (settings_.countSimt ? traceCounting_ : trace_).dispatchIndirect(cmd, push, buffers_->live.handle(), 4);
       bufferBarrier(cmd);
     }
     recordTraceCounters(cmd, b);
     if (b > 0) reorder_->recordLearn(cmd, buffers_->frameBlock.address(), push.stateSet, b, n, &timer_);
     {
       ScopedStage s(&timer_, cmd, "shade");
-      shade_.dispatchThreads(cmd, push, n);
+      shade_.dispatchIndirect(cmd, push, buffers_->live.handle(), 4);
       bufferBarrier(cmd);
     }
     if (b + 1 < settings_.bounces && settings_.sorts())

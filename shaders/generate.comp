@@ -10,6 +10,12 @@
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   uint i = gl_GlobalInvocationID.x;
+  if (i == 0u) {
+    f.live.v[0] = f.pathCount;
+    f.live.v[1] = (f.pathCount + RL_PATH_GROUP_SIZE - 1u) / RL_PATH_GROUP_SIZE;
+    f.live.v[2] = 1u;
+    f.live.v[3] = 1u;
+  }
   if (i >= f.pathCount) return;
   GpuPathState s = f.state[pc.stateSet];
   uint rng = rngSeed(i, f.frameIndex, 0u, f.seed, 2u);

@@ -12,7 +12,7 @@
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   uint i = gl_GlobalInvocationID.x;
-  if (i >= f.pathCount) return;
+  if (i >= f.live.v[0]) return;
   GpuPathState s = f.state[pc.stateSet];
   if (s.alive.v[i] == 0u) return;
   PathVars p = loadPath(s, i);

@@ -142,6 +142,9 @@ struct GpuFrame {
   RL_REF(Vec4Buf) accumulation; // per pixel: sum of radiance (xyz) and sample count (w)
   RL_REF(UintBuf) image;        // per pixel: tonemapped RGBA8
   RL_REF(UintBuf) counters;     // [0] rays traced, [1] SIMT active lanes, [2] SIMT lane slots
+  // [0] paths a stage must visit (all until a sort moved the finished ones behind the live ones), [1..3]
+  // the indirect dispatch size for RL_PATH_GROUP_SIZE groups. Paths at or past [0] count as finished.
+  RL_REF(UintBuf) live;
   uint width;
   uint height;
   uint sppPerFrame;

@@ -13,9 +13,10 @@ void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   gCounters = f.counters;
   uint i = gl_GlobalInvocationID.x;
-  bool live = i < f.pathCount && f.state[pc.stateSet].alive.v[i] != 0u;
+  uint count = f.live.v[0];
+  bool live = i < count && f.state[pc.stateSet].alive.v[i] != 0u;
   countRays(live ? 1u : 0u);
-  if (i >= f.pathCount) return;
+  if (i >= count) return;
   HitRecord hit;
   hit.t = -1.0;
   hit.triangle = 0u;
