@@ -1,0 +1,37 @@
+#version 460
+// Sort keys of the current path set: key, payload (the path's index) and the predicted ray length, one
+// thread per path. The strategy is specialization constant 1 (RL_KEY_*), so each variant compiles to
+// only its own key function (keys.glsl, twin of renderer/key_functions.cpp).
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_scalar_block_layout : require
+#include "key_types.h"
+#include "rng.glsl"
+#include "keys.glsl"
+
+layout(local_size_x_id = 0) in;
+layout(constant_id = 1) const uint kStrategy = RL_KEY_FIXED;
+layout(push_constant, scalar) uniform Push { KeyPush pc; };
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= pc.count) return;
+  FrameBuf frame = FrameBuf(pc.frame);
+  GpuPathState state = frame.f.state[pc.stateSet];
+  GpuKeyParams params = KeyParamsBuf(pc.params).p;
+  uint alive = state.alive.v[i];
+  KeyPath path;
+  path.origin = state.origin.v[i].xyz;
+  path.direction = state.direction.v[i].xyz;
+  path.pathId = state.pathId.v[i];
+  path.oracleT = kStrategy == RL_KEY_ORACLE && alive != 0u ? params.oracleT.v[i] : -1.0;
+  KeyEnv env;
+  env.frameIndex = frame.f.frameIndex;
+  env.bounce = pc.bounce;
+  env.seed = frame.f.seed;
+  float len;
+  uint key = computeKey(kStrategy, params, env, path, alive, len);
+  UintBuf(pc.keys).v[i] = key;
+  UintBuf(pc.values).v[i] = i;
+  state.predictedLength.v[i] = len;
+}
