@@ -1,15 +1,20 @@
-// Everything between shade and the next trace when sorting is on: sort keys (KeyStage), the GPU sort, and
-// the gather of the path state into the other ping-pong set. Also the length-cache learning after a trace.
+// Everything between shade and the next trace when sorting is on: sort keys (KeyStage), the GPU sort, the
+// live-prefix count and the gather of the path state into the other ping-pong set. Also the length-cache
+// learning after a trace, and, in the detailed mode, the readbacks that measure prediction accuracy.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
 #include "renderer/compute_pipeline.h"
 #include "renderer/frame_stats.h"
+#include "renderer/gpu_buffer.h"
+#include "renderer/gpu_sort.h"
+#include "renderer/key_stage.h"
 #include "renderer/settings.h"
 #include "scenes/scene.h"
 
@@ -21,25 +26,35 @@ struct PathBuffers;
 
 class FrameReorder {
  public:
-  FrameReorder(const VulkanContext& ctx, const Scene& scene, const Settings& settings, glm::vec3 cameraPos);
+  FrameReorder(const VulkanContext& ctx, const Scene& scene, const Settings& settings, glm::vec3 cameraPos,
+               uint32_t maxPaths);
   ~FrameReorder();
 
-  // Rebuilds the grid and caches when the settings or camera need it.
-  void configure(const Settings& settings, glm::vec3 cameraPos, bool resetCaches);
+  // Rebuilds the grid, caches and sorter when the settings or the camera need it.
+  void configure(const Settings& settings, glm::vec3 cameraPos);
   void resize(uint32_t maxPaths);
 
-  void recordLearn(VkCommandBuffer cmd, VkDeviceAddress frame, uint32_t stateSet, uint32_t bounce, uint32_t count,
-                   StageTimer* timer);
-  // Keys, sort and gather; returns the state set that holds the reordered paths.
-  uint32_t recordReorder(VkCommandBuffer cmd, VkDeviceAddress frame, uint32_t stateSet, uint32_t bounce,
-                         uint32_t count, const PathBuffers& buffers, StageTimer* timer);
-  // Adds key width, cache and sort memory (and, in detailed mode, prediction accuracy) to the stats.
+  // After the trace of `bounce`: the learn stage, and in detailed mode the accuracy readbacks.
+  void recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
+                        bool detailed, StageTimer* timer);
+  // Keys, sort, live count and gather; returns the state set that holds the reordered paths.
+  uint32_t recordReorder(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
+                         bool detailed, StageTimer* timer);
+  // Adds key width, cache and sort memory and, in detailed mode, prediction accuracy to the stats.
   void finishFrame(FrameStats& stats, bool detailed);
 
+  const KeyStage& keys() const { return keys_; }
+
  private:
+  struct Capture;  // host-visible copies of one bounce's rays, predictions, hits and keys
+
   const VulkanContext& ctx_;
   Settings settings_;
-  ComputePipeline gather_;
+  KeyStage keys_;
+  std::unique_ptr<GpuSorter> sorter_;
+  uint32_t maxPaths_;
+  ComputePipeline gather_, liveCount_;
+  std::vector<std::unique_ptr<Capture>> captures_;
 };
 
 }  // namespace raylab

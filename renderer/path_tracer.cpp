@@ -49,7 +49,8 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Setti
       megakernel_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup, {0}),
       megakernelCounting_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup, {1}),
       timer_(ctx) {
-  reorder_ = std::make_unique<FrameReorder>(ctx, scene, settings_, camera_.position);
+  reorder_ = std::make_unique<FrameReorder>(ctx, scene, settings_, camera_.position,
+                                            settings_.width * settings_.height * settings_.sppPerFrame);
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   poolInfo.queueFamilyIndex = ctx.queueFamily();
@@ -88,7 +89,7 @@ void PathTracer::applySettings(const Settings& next) {
   settings_ = next;
   bool resized = next.width != previous.width || next.height != previous.height ||
                  next.sppPerFrame != previous.sppPerFrame || next.bounces != previous.bounces;
-  reorder_->configure(settings_, camera_.position, next.requiresCacheReset(previous));
+  reorder_->configure(settings_, camera_.position);
   if (resized)
     allocate();
   else if (next.requiresAccumulationReset(previous))
@@ -97,7 +98,7 @@ void PathTracer::applySettings(const Settings& next) {
 
 void PathTracer::setCamera(const Viewpoint& camera) {
   camera_ = camera;
-  reorder_->configure(settings_, camera_.position, settings_.clampToCamera);
+  reorder_->configure(settings_, camera_.position);
   resetAccumulation();
 }
 
@@ -158,15 +159,14 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
       bufferBarrier(cmd);
     }
     recordTraceCounters(cmd, b);
-    if (b > 0) reorder_->recordLearn(cmd, buffers_->frameBlock.address(), push.stateSet, b, n, &timer_);
+    if (settings_.sorts()) reorder_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
     {
       ScopedStage s(&timer_, cmd, "shade");
       shade_.dispatchIndirect(cmd, push, buffers_->live.handle(), 4);
       bufferBarrier(cmd);
     }
     if (b + 1 < settings_.bounces && settings_.sorts())
-      push.stateSet = reorder_->recordReorder(cmd, buffers_->frameBlock.address(), push.stateSet, b, n,
-                                              *buffers_, &timer_);
+      push.stateSet = reorder_->recordReorder(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
   }
   timer_.setBounce(-1);
 }

@@ -1,7 +1,8 @@
 #version 460
 // Gathers every path-state array of the current set through the sorted indices into the other set, so
 // the next bounce reads coherent memory (indexing through the permutation without moving the data made
-// the study's tracer slower).
+// the study's tracer slower). Only the live prefix (GpuFrame::live, after the sort) is moved; the slots
+// behind it are marked finished so no stale state from an earlier bounce looks alive to the key stage.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
@@ -19,8 +20,12 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= pc.count) return;
   GpuFrame f = pc.frame.f;
-  GpuPathState src = f.state[pc.stateSet];
   GpuPathState dst = f.state[1u - pc.stateSet];
+  if (i >= f.live.v[0]) {
+    dst.alive.v[i] = 0u;
+    return;
+  }
+  GpuPathState src = f.state[pc.stateSet];
   uint j = pc.sortedIndices.v[i];
   dst.origin.v[i] = src.origin.v[j];
   dst.direction.v[i] = src.direction.v[j];
