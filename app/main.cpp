@@ -7,6 +7,7 @@
 #include "app/bench_command.h"
 #include "app/render_command.h"
 #include "app/scene_setup.h"
+#include "app/window_command.h"
 
 namespace {
 
@@ -38,7 +39,7 @@ int main(int argc, char** argv) {
       printHelp();
       return raylab::kExitOk;
     }
-    if (mode.empty()) return raylab::runRenderCommand(rest);  // the window comes later; render meanwhile
+    if (mode.empty()) return raylab::runWindowCommand(rest);
     std::fprintf(stderr, "raylab: unknown mode '%s'\n\n", mode.c_str());
     printHelp();
     return raylab::kExitUsage;

@@ -1,0 +1,44 @@
+// The JSON sidecar written next to every screenshot (settings, the last frame's statistics, device,
+// driver, git revision, camera) and read back by `--settings FILE.json`, so a screenshot can be
+// reproduced headless: `raylab render --settings shot.json` renders the same image.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli_options.h"
+#include "renderer/frame_stats.h"
+#include "renderer/settings.h"
+#include "renderer/vk_context.h"
+#include "scenes/scene.h"
+
+namespace raylab {
+
+struct SidecarContent {
+  std::string kind;   // "render" (the image alone) or "window" (with the panels)
+  std::string image;  // file name of the PNG beside it
+  uint32_t imageWidth = 0, imageHeight = 0;
+  Settings settings;  // frames = the frames accumulated in the image, so a re-render matches it
+  Viewpoint camera;
+  FrameStats stats;
+  DeviceInfo device;
+};
+
+nlohmann::json makeSidecar(const SidecarContent& content);
+
+struct Sidecar {
+  Settings settings;
+  std::optional<Viewpoint> camera;  // absent in a plain settings file
+};
+// Reads a sidecar, or a bare toJson(Settings) object. Throws UsageError naming the file and problem.
+Sidecar readSidecar(const std::string& path);
+
+// parseCommonOptions with `--settings FILE.json`: the file's settings are the base, the other flags
+// change only what they name. `camera` receives the file's camera unless --view overrides it.
+CommonOptions parseOptionsWithSettingsFile(const std::vector<std::string>& args, std::optional<Viewpoint>* camera,
+                                           std::vector<std::string>* rest = nullptr);
+
+}  // namespace raylab

@@ -1,0 +1,101 @@
+#include "app/ui_script.h"
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+#include "app/cli_options.h"
+#include "app/fly_camera.h"
+#include "app/setting_flags.h"
+
+namespace raylab {
+namespace {
+
+std::vector<std::string> words(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> w;
+  for (std::string s; in >> s;) w.push_back(s);
+  return w;
+}
+
+// Screenshot names become file names in the screenshot folder: no paths, nothing a shell would mangle.
+bool validFileName(const std::string& name) {
+  if (name.empty() || name[0] == '.') return false;
+  for (char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.')) return false;
+  return true;
+}
+
+ScriptAction parseLine(const std::vector<std::string>& w) {
+  using K = ScriptAction::Kind;
+  ScriptAction a;
+  const std::string& verb = w[0];
+  auto expectArgs = [&](size_t n, const char* form) {
+    if (w.size() != n + 1) throw ScriptError(std::string("expected '") + form + "'");
+  };
+  if (verb == "set") {
+    expectArgs(2, "set KEY VALUE");
+    a.kind = K::Set, a.key = w[1], a.value = w[2];
+    Settings probe;
+    applySettingFlag(probe, a.key, a.value);  // the CLI's validation, now rather than mid-run
+  } else if (verb == "camera") {
+    std::string text;
+    for (const std::string& s : w) text += (text.empty() ? "" : " ") + s;
+    std::string error;
+    if (!cameraFromText(text, Viewpoint{}, &error)) throw ScriptError(error);
+    a.kind = K::Camera, a.value = text;
+  } else if (verb == "view") {
+    expectArgs(1, "view NAME");
+    a.kind = K::View, a.value = w[1];
+  } else if (verb == "wait") {
+    expectArgs(1, "wait FRAMES");
+    a.kind = K::Wait, a.frames = parseUint("wait", w[1], 0, 1000000);
+  } else if (verb == "screenshot" || verb == "screenshot-window") {
+    expectArgs(1, "screenshot NAME");
+    if (!validFileName(w[1])) throw ScriptError("screenshot name '" + w[1] + "' must be letters, digits, '-', '_' or '.'");
+    a.kind = verb == "screenshot" ? K::Screenshot : K::ScreenshotWindow, a.value = w[1];
+  } else if (verb == "quit") {
+    expectArgs(0, "quit");
+    a.kind = K::Quit;
+  } else {
+    throw ScriptError("unknown action '" + verb + "' (set, camera, view, wait, screenshot, screenshot-window, quit)");
+  }
+  return a;
+}
+
+}  // namespace
+
+std::vector<ScriptAction> parseScript(const std::string& text, const std::string& source) {
+  std::vector<ScriptAction> actions;
+  std::istringstream in(text);
+  int number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    std::vector<std::string> w = words(line);
+    if (w.empty() || w[0][0] == '#') continue;
+    try {
+      actions.push_back(parseLine(w));
+    } catch (const std::exception& e) {  // ScriptError and the CLI's UsageError alike
+      throw ScriptError(source + ":" + std::to_string(number) + ": " + e.what());
+    }
+    actions.back().line = number;
+  }
+  return actions;
+}
+
+std::vector<ScriptAction> loadScript(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ScriptError("cannot open script '" + path + "'");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseScript(text.str(), path);
+}
+
+const ScriptAction* ScriptRunner::next() {
+  if (waitFrames_ > 0 || pos_ >= actions_.size()) return nullptr;
+  const ScriptAction* a = &actions_[pos_++];
+  if (a->kind == ScriptAction::Kind::Wait) waitFrames_ = a->frames;
+  return a;
+}
+
+}  // namespace raylab

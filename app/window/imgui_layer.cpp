@@ -1,0 +1,143 @@
+#include "app/window/imgui_layer.h"
+
+#include <algorithm>
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_vulkan.h>
+
+#include "app/window/swapchain.h"
+#include "renderer/vk_check.h"
+#include "renderer/vk_context.h"
+#include "ui/settings_ini.h"
+
+namespace raylab {
+namespace {
+
+void checkVk(VkResult r) {
+  if (r < 0) throw VulkanError("Dear ImGui's Vulkan backend: " + vkResultName(r));
+}
+
+}  // namespace
+
+ImGuiSession::ImGuiSession(const std::string& iniPath, bool load, IniState* ini) : iniPath_(iniPath) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::StyleColorsDark();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = iniPath_.empty() ? nullptr : iniPath_.c_str();
+  installIniHandler(ini);
+  // Reading now marks the settings loaded, so ImGui does not read them again at the first frame;
+  // with --reset an empty text does the same and the file is overwritten on exit.
+  if (load && !iniPath_.empty()) ImGui::LoadIniSettingsFromDisk(iniPath_.c_str());
+  else ImGui::LoadIniSettingsFromMemory("");
+}
+
+// DestroyContext writes imgui.ini (through the lab's handler too, so its IniState must still be alive).
+ImGuiSession::~ImGuiSession() { ImGui::DestroyContext(); }
+
+ImGuiLayer::ImGuiLayer(const VulkanContext& ctx, GLFWwindow* window, const Swapchain& swapchain) : ctx_(ctx) {
+  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
+  poolInfo.maxSets = 16;
+  poolInfo.poolSizeCount = 1;
+  poolInfo.pPoolSizes = &size;
+  VK_CHECK(vkCreateDescriptorPool(ctx.device(), &poolInfo, nullptr, &pool_));
+  createRenderPass(swapchain.format());
+  createFramebuffers(swapchain);
+
+  ImGui_ImplGlfw_InitForVulkan(window, true);
+  ImGui_ImplVulkan_InitInfo info{};
+  info.Instance = ctx.instance();
+  info.PhysicalDevice = ctx.physicalDevice();
+  info.Device = ctx.device();
+  info.QueueFamily = ctx.queueFamily();
+  info.Queue = ctx.queue();
+  info.DescriptorPool = pool_;
+  info.MinImageCount = swapchain.minImageCount();
+  info.ImageCount = std::max(swapchain.imageCount(), swapchain.minImageCount());
+  info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+  info.CheckVkResultFn = checkVk;
+  ImGui_ImplVulkan_Init(&info, renderPass_);
+  ctx.submitAndWait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+  ImGui_ImplVulkan_DestroyFontUploadObjects();
+}
+
+ImGuiLayer::~ImGuiLayer() {
+  vkDeviceWaitIdle(ctx_.device());
+  ImGui_ImplVulkan_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  destroyFramebuffers();
+  vkDestroyRenderPass(ctx_.device(), renderPass_, nullptr);
+  vkDestroyDescriptorPool(ctx_.device(), pool_, nullptr);
+}
+
+// One colour attachment that keeps what the blit wrote (LOAD) and stays ready for more transfers.
+void ImGuiLayer::createRenderPass(VkFormat format) {
+  VkAttachmentDescription color{};
+  color.format = format;
+  color.samples = VK_SAMPLE_COUNT_1_BIT;
+  color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  color.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  color.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &ref;
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = 1;
+  info.pAttachments = &color;
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  VK_CHECK(vkCreateRenderPass(ctx_.device(), &info, nullptr, &renderPass_));
+}
+
+void ImGuiLayer::createFramebuffers(const Swapchain& swapchain) {
+  extent_ = swapchain.extent();
+  for (uint32_t i = 0; i < swapchain.imageCount(); ++i) {
+    VkImageView view = swapchain.view(i);
+    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    info.renderPass = renderPass_;
+    info.attachmentCount = 1;
+    info.pAttachments = &view;
+    info.width = extent_.width;
+    info.height = extent_.height;
+    info.layers = 1;
+    framebuffers_.push_back(VK_NULL_HANDLE);
+    VK_CHECK(vkCreateFramebuffer(ctx_.device(), &info, nullptr, &framebuffers_.back()));
+  }
+}
+
+void ImGuiLayer::destroyFramebuffers() {
+  for (VkFramebuffer f : framebuffers_) vkDestroyFramebuffer(ctx_.device(), f, nullptr);
+  framebuffers_.clear();
+}
+
+void ImGuiLayer::onSwapchainRecreated(const Swapchain& swapchain) {
+  destroyFramebuffers();
+  createFramebuffers(swapchain);
+  ImGui_ImplVulkan_SetMinImageCount(swapchain.minImageCount());
+}
+
+void ImGuiLayer::newFrame() {
+  ImGui_ImplVulkan_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+}
+
+void ImGuiLayer::record(VkCommandBuffer cmd, uint32_t index, ImDrawData* data) {
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = renderPass_;
+  begin.framebuffer = framebuffers_[index];
+  begin.renderArea.extent = extent_;
+  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  ImGui_ImplVulkan_RenderDrawData(data, cmd);
+  vkCmdEndRenderPass(cmd);
+}
+
+}  // namespace raylab

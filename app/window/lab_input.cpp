@@ -1,0 +1,82 @@
+#include "app/window/lab_input.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+namespace raylab {
+namespace {
+
+LabInput* self(GLFWwindow* window) { return static_cast<LabInput*>(glfwGetWindowUserPointer(window)); }
+
+}  // namespace
+
+LabInput::LabInput(GLFWwindow* window) : window_(window) {
+  glfwSetWindowUserPointer(window, this);
+  glfwSetKeyCallback(window, onKey);
+  glfwSetScrollCallback(window, onScroll);
+  glfwSetMouseButtonCallback(window, onMouseButton);
+}
+
+void LabInput::onKey(GLFWwindow* window, int key, int, int action, int mods) {
+  if (action != GLFW_PRESS) return;
+  LabInput* in = self(window);
+  // Function keys work even while a text field has focus; letters belong to the field then.
+  const bool typing = ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput;
+  switch (key) {
+    case GLFW_KEY_F1: in->hotkeys_.push_back(Hotkey::Help); break;
+    case GLFW_KEY_F12:
+      in->hotkeys_.push_back(mods & GLFW_MOD_SHIFT ? Hotkey::ScreenshotWindow : Hotkey::ScreenshotRender);
+      break;
+    case GLFW_KEY_ESCAPE: in->hotkeys_.push_back(Hotkey::CloseHelp); break;
+    case GLFW_KEY_TAB:
+      if (!typing) in->hotkeys_.push_back(Hotkey::TogglePanels);
+      break;
+    case GLFW_KEY_O:
+      if (!typing) in->hotkeys_.push_back(Hotkey::ToggleOrbit);
+      break;
+    default: break;
+  }
+}
+
+void LabInput::onScroll(GLFWwindow* window, double, double dy) {
+  if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) return;
+  self(window)->scroll_ += static_cast<float>(dy);
+}
+
+// Looking starts only when the right button goes down over the render, not over a panel.
+void LabInput::onMouseButton(GLFWwindow* window, int button, int action, int) {
+  if (button != GLFW_MOUSE_BUTTON_RIGHT) return;
+  LabInput* in = self(window);
+  if (action == GLFW_PRESS && !(ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse)) {
+    in->looking_ = true;
+    glfwGetCursorPos(window, &in->lastX_, &in->lastY_);
+  } else if (action == GLFW_RELEASE) {
+    in->looking_ = false;
+  }
+}
+
+std::vector<Hotkey> LabInput::takeHotkeys() {
+  std::vector<Hotkey> out;
+  out.swap(hotkeys_);
+  return out;
+}
+
+CameraInput LabInput::cameraInput(float seconds) {
+  CameraInput in;
+  in.seconds = seconds;
+  in.zoom = scroll_;
+  scroll_ = 0.0f;
+  if (looking_) {
+    double x, y;
+    glfwGetCursorPos(window_, &x, &y);
+    in.look = {static_cast<float>(x - lastX_), static_cast<float>(y - lastY_)};
+    lastX_ = x, lastY_ = y;
+  }
+  if (ImGui::GetIO().WantCaptureKeyboard) return in;
+  auto held = [&](int key) { return glfwGetKey(window_, key) == GLFW_PRESS ? 1.0f : 0.0f; };
+  in.move = {held(GLFW_KEY_D) - held(GLFW_KEY_A), held(GLFW_KEY_E) - held(GLFW_KEY_Q), held(GLFW_KEY_W) - held(GLFW_KEY_S)};
+  in.fast = held(GLFW_KEY_LEFT_SHIFT) > 0 || held(GLFW_KEY_RIGHT_SHIFT) > 0;
+  return in;
+}
+
+}  // namespace raylab

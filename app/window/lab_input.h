@@ -1,0 +1,36 @@
+// Keyboard and mouse for the lab: hotkey presses queued by a GLFW callback (a press between two slow
+// frames is not lost), and held keys and mouse movement turned into CameraInput. Input that Dear ImGui is
+// using (typing in a field, dragging a slider) does not move the camera.
+#pragma once
+
+#include <vector>
+
+#include "app/fly_camera.h"
+
+struct GLFWwindow;
+
+namespace raylab {
+
+enum class Hotkey { Help, ScreenshotRender, ScreenshotWindow, TogglePanels, ToggleOrbit, CloseHelp };
+
+class LabInput {
+ public:
+  // Must be constructed before the ImGui GLFW backend, which chains the callbacks installed here.
+  explicit LabInput(GLFWwindow* window);
+  std::vector<Hotkey> takeHotkeys();
+  // Movement since the last call; `seconds` is the frame time movement scales with.
+  CameraInput cameraInput(float seconds);
+
+ private:
+  static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void onScroll(GLFWwindow* window, double dx, double dy);
+  static void onMouseButton(GLFWwindow* window, int button, int action, int mods);
+
+  GLFWwindow* window_;
+  std::vector<Hotkey> hotkeys_;
+  float scroll_ = 0.0f;
+  bool looking_ = false;
+  double lastX_ = 0.0, lastY_ = 0.0;
+};
+
+}  // namespace raylab

@@ -1,0 +1,221 @@
+#include "app/window/lab_window.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include "app/setting_flags.h"
+#include "app/window/lab_input.h"
+#include "app/window/presenter.h"
+#include "app/window/swapchain.h"
+#include "renderer/path_tracer.h"
+#include "renderer/vk_context.h"
+#include "scenes/scene_library.h"
+
+namespace raylab {
+namespace {
+
+constexpr int kDefaultWidth = 1280, kDefaultHeight = 720;
+
+// Fly speed: a quarter of the scene's diagonal per second crosses any scene in a few seconds.
+float speedFor(const Scene& scene) {
+  float diagonal = glm::length(scene.bounds().extent());
+  return diagonal > 0.0f ? 0.25f * diagonal : 1.0f;
+}
+
+bool sameCamera(const Viewpoint& a, const Viewpoint& b) {
+  return a.position == b.position && a.target == b.target && a.up == b.up && a.yfovRadians == b.yfovRadians;
+}
+
+}  // namespace
+
+LabWindow::LabWindow(const WindowOptions& options)
+    : options_(options), imgui_(options.iniPath, !options.reset, &ini_) {
+  chooseStartSettings();
+  scene_ = loadSceneForSettings(settings_);
+  if (options_.sidecar && options_.sidecar->camera) scene_.view = *options_.sidecar->camera;
+  if (!options_.script.empty()) script_.emplace(loadScript(options_.script));
+  openWindow();
+}
+
+LabWindow::~LabWindow() {
+  if (ctx_) vkDeviceWaitIdle(ctx_->device());
+  tracer_.reset();
+  presenter_.reset();
+  layer_.reset();
+  input_.reset();
+  swapchain_.reset();
+  if (surface_) vkDestroySurfaceKHR(ctx_->instance(), surface_, nullptr);
+  window_.reset();
+  ctx_.reset();
+}
+
+// Defaults < what imgui.ini remembers < --settings FILE < flags on the command line.
+void LabWindow::chooseStartSettings() {
+  Settings base = ini_.loadedSettings.value_or(Settings{});
+  if (options_.sidecar) base = options_.sidecar->settings;
+  settings_ = overlaySettingFlags(base, options_.renderArgs, /*skipUnknown=*/true);
+  if (ini_.loadedScale) view_.resolutionScale = *ini_.loadedScale;
+  if (ini_.loadedDetailed) view_.detailedStats = *ini_.loadedDetailed;
+  ini_.settings = &settings_;
+  ini_.view = &view_;
+}
+
+void LabWindow::openWindow() {
+  ContextOptions contextOptions = contextOptionsFor(options_.common);
+  contextOptions.instanceExtensions = GlfwLibrary::requiredInstanceExtensions();
+  contextOptions.deviceExtensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
+  ctx_ = std::make_unique<VulkanContext>(contextOptions);
+  // A CPU device (lavapipe) renders a quarter of the width and height by default: at 1280x720 that is
+  // 320x180, about a frame per second on two cores, where the full size would take ten or more.
+  view_.defaultScale = ctx_->info().isCpu ? 0.25f : 1.0f;
+  if (!ini_.loadedScale) view_.resolutionScale = view_.defaultScale;
+  if (options_.scale) view_.resolutionScale = *options_.scale;
+
+  int width = options_.width > 0 ? options_.width : ini_.loadedWidth > 0 ? ini_.loadedWidth : kDefaultWidth;
+  int height = options_.height > 0 ? options_.height : ini_.loadedHeight > 0 ? ini_.loadedHeight : kDefaultHeight;
+  std::string title = "raylab - " + ctx_->info().name;
+  window_ = std::make_unique<GlfwWindow>(width, height, title.c_str());
+  surface_ = window_->createSurface(ctx_->instance(), ctx_->physicalDevice(), ctx_->queueFamily());
+  swapchain_ = std::make_unique<Swapchain>(*ctx_, surface_);
+  int fbw = 0, fbh = 0;
+  window_->framebufferSize(&fbw, &fbh);
+  swapchain_->recreate(static_cast<uint32_t>(fbw), static_cast<uint32_t>(fbh));
+  framebufferWidth_ = fbw, framebufferHeight_ = fbh;
+  input_ = std::make_unique<LabInput>(window_->handle());
+  layer_ = std::make_unique<ImGuiLayer>(*ctx_, window_->handle(), *swapchain_);
+  presenter_ = std::make_unique<Presenter>(*ctx_, *swapchain_, *layer_);
+
+  resetCamera(scene_.view);
+  syncTracer();
+  cameraModel_.builtinScenes = builtinSceneNames();
+  cameraModel_.screenshotDir = options_.screenshotDir;
+  cameraModel_.deviceName = ctx_->info().name + " (" + ctx_->info().driver + ")";
+}
+
+void LabWindow::recreateSwapchain() {
+  vkDeviceWaitIdle(ctx_->device());
+  int fbw = 0, fbh = 0;
+  window_->framebufferSize(&fbw, &fbh);
+  swapchain_->recreate(static_cast<uint32_t>(fbw), static_cast<uint32_t>(fbh));
+  framebufferWidth_ = fbw, framebufferHeight_ = fbh;
+  layer_->onSwapchainRecreated(*swapchain_);
+  presenter_->onSwapchainRecreated();
+  recreate_ = false;
+}
+
+int LabWindow::run() {
+  lastFrame_ = std::chrono::steady_clock::now();
+  auto started = lastFrame_;
+  while (frame()) {
+  }
+  loopMsTotal_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  vkDeviceWaitIdle(ctx_->device());
+  printSummary();
+  if (ctx_->validationErrors() > 0) {
+    std::fprintf(stderr, "raylab: %u validation errors\n", ctx_->validationErrors());
+    return kExitValidation;
+  }
+  return kExitOk;
+}
+
+// One turn of the loop; false ends it. Minimised, it waits for events instead of rendering.
+bool LabWindow::frame() {
+  glfwPollEvents();
+  if (window_->shouldClose() || quit_) return false;
+  if (window_->minimized()) {
+    glfwWaitEventsTimeout(0.1);
+    lastFrame_ = std::chrono::steady_clock::now();
+    return true;
+  }
+  if (script_ && !runScript()) return false;
+  int fbw = 0, fbh = 0;
+  window_->framebufferSize(&fbw, &fbh);
+  if (recreate_ || fbw != framebufferWidth_ || fbh != framebufferHeight_) recreateSwapchain();
+
+  auto now = std::chrono::steady_clock::now();
+  float seconds = std::min(std::chrono::duration<float>(now - lastFrame_).count(), 0.25f);
+  lastFrame_ = now;
+  layer_->newFrame();
+  handleHotkeys();
+  fillCameraModel();
+  UiRequests requests = ui_.draw(settings_, view_, cameraModel_);
+  ImGui::Render();
+  handleRequests(requests);
+  updateCamera(seconds);
+  syncTracer();
+
+  PresentedFrame shown = presenter_->drawFrame(*tracer_, ImGui::GetDrawData(), !pendingWindowShot_.empty(),
+                                               settings_.heatmap != HeatmapView::None);
+  recreate_ = shown.recreateSwapchain;
+  if (!shown.rendered) return true;
+  ui_.onFrame(tracer_->settings(), tracer_->finishFrame(shown.wallMs));
+  ++frames_;
+  wallMsTotal_ += shown.wallMs;
+  saveScreenshots(shown);
+  if (script_) script_->frameDone();
+  return true;
+}
+
+// The render is the window's size times the resolution scale; the renderer restarts only what must.
+void LabWindow::syncTracer() {
+  const VkExtent2D extent = swapchain_->extent();
+  Settings want = settings_;
+  auto scaled = [&](uint32_t size) {
+    long v = std::lround(size * double(view_.resolutionScale));
+    return static_cast<uint32_t>(std::clamp<long>(v, 1, SettingLimits::kMaxSize));
+  };
+  want.width = scaled(extent.width);
+  want.height = scaled(extent.height);
+  settings_.width = want.width, settings_.height = want.height;
+  if (!tracer_) {
+    tracer_ = std::make_unique<PathTracer>(*ctx_, scene_.scene, want, camera_.viewpoint());
+  } else {
+    if (!(want == tracer_->settings())) tracer_->applySettings(want);
+    if (!sameCamera(camera_.viewpoint(), tracer_->camera())) tracer_->setCamera(camera_.viewpoint());
+  }
+  tracer_->setDetailedStats(view_.detailedStats);
+  int w = 0, h = 0;
+  window_->windowSize(&w, &h);
+  ini_.width = w, ini_.height = h;
+}
+
+void LabWindow::updateCamera(float seconds) { camera_.update(input_->cameraInput(seconds)); }
+
+void LabWindow::fillCameraModel() {
+  cameraModel_.scene = settings_.scene;
+  cameraModel_.viewpoints.clear();
+  for (const Viewpoint& v : scene_.scene.viewpoints) cameraModel_.viewpoints.push_back(v.name);
+  cameraModel_.cameraText = cameraToText(camera_.viewpoint());
+  cameraModel_.orbit = camera_.orbit();
+  cameraModel_.speed = camera_.speed();
+}
+
+void LabWindow::resetCamera(const Viewpoint& view) {
+  bool orbit = camera_.orbit();
+  camera_.reset(view, speedFor(scene_.scene));
+  if (orbit) camera_.setOrbit(true, view.target);
+}
+
+void LabWindow::printSummary() const {
+  if (frames_ == 0) return;
+  std::fprintf(stderr,
+               "raylab: %llu frames at %ux%u (render %ux%u): %.1f ms per frame submitted (render + panels), "
+               "%.1f ms per loop turn (%.1f fps)\n",
+               static_cast<unsigned long long>(frames_), swapchain_->extent().width, swapchain_->extent().height,
+               settings_.width, settings_.height, wallMsTotal_ / frames_, loopMsTotal_ / frames_,
+               1000.0 * frames_ / loopMsTotal_);
+}
+
+}  // namespace raylab
+
+namespace raylab {
+
+int runLabWindow(const WindowOptions& options) {
+  LabWindow lab(options);
+  return lab.run();
+}
+
+}  // namespace raylab

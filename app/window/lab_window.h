@@ -1,0 +1,91 @@
+// The interactive lab: owns the window, the Vulkan objects that show the render, the path tracer and the
+// panels, and runs the frame loop. lab_window.cpp builds it and runs frames; lab_actions.cpp carries out
+// what the user, the panels and a script ask for (scenes, viewpoints, camera text, screenshots).
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/fly_camera.h"
+#include "app/scene_setup.h"
+#include "app/ui_script.h"
+#include "app/window/glfw_window.h"
+#include "app/window/imgui_layer.h"
+#include "app/window/window_options.h"
+#include "renderer/settings.h"
+#include "ui/lab_ui.h"
+#include "ui/settings_ini.h"
+#include "ui/ui_state.h"
+
+namespace raylab {
+
+class VulkanContext;
+class Swapchain;
+class Presenter;
+class PathTracer;
+class LabInput;
+struct PresentedFrame;
+
+class LabWindow {
+ public:
+  explicit LabWindow(const WindowOptions& options);
+  ~LabWindow();
+  // Runs until the window closes or the script ends; returns the exit code.
+  int run();
+
+ private:
+  // lab_window.cpp
+  void chooseStartSettings();
+  void openWindow();
+  bool frame();
+  void recreateSwapchain();
+  void syncTracer();
+  void updateCamera(float seconds);
+  void fillCameraModel();
+  void printSummary() const;
+
+  // lab_actions.cpp
+  void handleHotkeys();
+  void handleRequests(const UiRequests& requests);
+  bool runScript();  // false once the script has quit
+  void runAction(const ScriptAction& action);
+  bool loadScene(const std::string& nameOrPath, std::string* error);
+  bool gotoView(const std::string& name, std::string* error);
+  bool applyCameraText(const std::string& text, std::string* error);
+  void saveScreenshots(const PresentedFrame& frame);
+  void resetCamera(const Viewpoint& view);
+
+  WindowOptions options_;
+  // Declared before imgui_, so they outlive it: ImGui writes imgui.ini through ini_ while being destroyed.
+  Settings settings_;
+  ViewOptions view_;
+  IniState ini_;
+  GlfwLibrary glfw_;
+  ImGuiSession imgui_;
+  CameraModel cameraModel_;
+  LabUi ui_;
+  FlyCamera camera_;
+  LoadedScene scene_;
+  std::optional<ScriptRunner> script_;
+
+  std::unique_ptr<VulkanContext> ctx_;
+  std::unique_ptr<GlfwWindow> window_;
+  VkSurfaceKHR surface_ = VK_NULL_HANDLE;
+  std::unique_ptr<Swapchain> swapchain_;
+  std::unique_ptr<LabInput> input_;
+  std::unique_ptr<ImGuiLayer> layer_;
+  std::unique_ptr<Presenter> presenter_;
+  std::unique_ptr<PathTracer> tracer_;
+
+  bool quit_ = false;
+  bool recreate_ = false;
+  int framebufferWidth_ = 0, framebufferHeight_ = 0;  // what the swapchain was made for
+  std::string pendingRenderShot_, pendingWindowShot_;  // names of screenshots due after this frame
+  std::chrono::steady_clock::time_point lastFrame_;
+  uint64_t frames_ = 0;
+  double wallMsTotal_ = 0.0, loopMsTotal_ = 0.0;
+};
+
+}  // namespace raylab

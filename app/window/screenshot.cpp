@@ -1,0 +1,38 @@
+#include "app/window/screenshot.h"
+
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "renderer/png_writer.h"
+
+namespace raylab {
+
+std::string writeScreenshot(const std::string& dir, const std::string& name, const std::vector<uint32_t>& rgba,
+                            SidecarContent content) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error) throw std::runtime_error("cannot create screenshot folder '" + dir + "': " + error.message());
+  const fs::path png = fs::path(dir) / (name + ".png");
+  writePng(png.string(), content.imageWidth, content.imageHeight, rgba);
+  content.image = png.filename().string();
+  const fs::path json = fs::path(dir) / (name + ".json");
+  std::ofstream out(json);
+  out << makeSidecar(content).dump(2) << "\n";
+  if (!out) throw std::runtime_error("cannot write '" + json.string() + "'");
+  return png.string();
+}
+
+std::string freshScreenshotName(const std::string& dir, const std::string& kind) {
+  char stamp[32];
+  std::time_t now = std::time(nullptr);
+  std::strftime(stamp, sizeof(stamp), "%Y%m%d-%H%M%S", std::localtime(&now));
+  std::string base = kind + "-" + stamp, name = base;
+  for (int i = 2; std::filesystem::exists(std::filesystem::path(dir) / (name + ".png")); ++i)
+    name = base + "-" + std::to_string(i);
+  return name;
+}
+
+}  // namespace raylab

@@ -1,0 +1,29 @@
+// What `raylab` (the window mode) was asked for on the command line, parsed by app/window_command.cpp.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/cli_options.h"
+#include "app/sidecar.h"
+
+namespace raylab {
+
+struct WindowOptions {
+  CommonOptions common;                // device, validation; render flags already checked
+  std::vector<std::string> renderArgs; // the render flags as given, laid over the remembered settings
+  std::optional<Sidecar> sidecar;      // --settings FILE.json: settings (and camera) to start from
+  std::string script;                  // --script FILE
+  std::string screenshotDir = "screenshots";
+  std::string iniPath = "imgui.ini";   // --ini FILE; scripted runs use none unless given
+  bool reset = false;                  // --reset: ignore imgui.ini (it is rewritten on exit)
+  int width = 0, height = 0;           // --size: the window's size; 0: remembered or default
+  std::optional<float> scale;          // --scale: render size / window size
+};
+
+// Opens the window and runs until it is closed or the script quits. Returns an exit code; throws
+// NoDisplayError when there is no display to open a window on.
+int runLabWindow(const WindowOptions& options);
+
+}  // namespace raylab

@@ -1,0 +1,147 @@
+#include "app/window_command.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "app/render_command.h"
+#include "app/scene_setup.h"
+#include "app/sidecar.h"
+#include "app/ui_script.h"
+#include "app/window/window_options.h"
+
+#ifdef RAYLAB_WITH_WINDOW
+#include "app/window/glfw_window.h"
+#endif
+
+namespace raylab {
+namespace {
+
+const char* const kWindowHelp =
+    "window options:\n"
+    "  --size WxH             window size (default 1280x720, or as last closed)\n"
+    "  --scale S              render resolution / window resolution, 0.1..2 (default 1; 0.25 on CPU devices)\n"
+    "  --settings FILE.json   start from a screenshot's sidecar (its settings and camera)\n"
+    "  --script FILE          run UI actions from FILE, then quit (see app/ui_script.h)\n"
+    "  --screenshot-dir DIR   where F12 / Shift+F12 save (default ./screenshots)\n"
+    "  --ini FILE             layout and last settings (default ./imgui.ini; none for scripts)\n"
+    "  --reset                start with the default layout and settings\n";
+
+void printUsage(const std::string& error) {
+  std::fprintf(stderr, "raylab: %s\n\nusage: raylab [options]\n%s%s", error.c_str(), kWindowHelp,
+               commonOptionsHelp().c_str());
+}
+
+std::string valueOf(const std::vector<std::string>& rest, size_t& i) {
+  if (i + 1 >= rest.size() || rest[i + 1].rfind("--", 0) == 0) throw UsageError(rest[i] + " needs a value");
+  return rest[++i];
+}
+
+// Splits the window's own flags from the render flags (which parseOptionsWithSettingsFile checks).
+WindowOptions parseWindowOptions(const std::vector<std::string>& args) {
+  WindowOptions o;
+  std::optional<Viewpoint> camera;
+  std::vector<std::string> rest;
+  o.common = parseOptionsWithSettingsFile(args, &camera, &rest);
+  bool iniGiven = false;
+  for (size_t i = 0; i < rest.size(); ++i) {
+    const std::string& a = rest[i];
+    if (a == "--script") o.script = valueOf(rest, i);
+    else if (a == "--screenshot-dir") o.screenshotDir = valueOf(rest, i);
+    else if (a == "--ini") o.iniPath = valueOf(rest, i), iniGiven = true;
+    else if (a == "--reset") o.reset = true;
+    else if (a == "--scale") o.scale = parseFloat("--scale", valueOf(rest, i), 0.1f, 2.0f);
+    else throw UsageError("unknown option '" + a + "'");
+  }
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--settings" && i + 1 < args.size()) {
+      o.sidecar = readSidecar(args[++i]);
+      o.sidecar->camera = camera;  // cleared by parseOptionsWithSettingsFile when --view overrides it
+      continue;
+    }
+    bool windowFlag = args[i] == "--script" || args[i] == "--screenshot-dir" || args[i] == "--ini" || args[i] == "--scale";
+    if (windowFlag) ++i;
+    else if (args[i] != "--reset") o.renderArgs.push_back(args[i]);
+    if (args[i] == "--size") o.width = int(o.common.settings.width), o.height = int(o.common.settings.height);
+  }
+  if (!o.script.empty() && !iniGiven) o.iniPath.clear();  // scripted runs neither read nor write imgui.ini
+  if (!o.script.empty()) loadScript(o.script);            // a broken script stops here, before any window
+  return o;
+}
+
+// The render command's arguments: everything but the window's own flags.
+std::vector<std::string> renderArgsOf(const std::vector<std::string>& args) {
+  std::vector<std::string> out;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--script" || a == "--screenshot-dir" || a == "--ini" || a == "--scale") ++i;
+    else if (a != "--reset") out.push_back(a);
+  }
+  return out;
+}
+
+int renderHeadless(const std::string& why, const std::vector<std::string>& args) {
+  std::fprintf(stderr, "raylab: %s; rendering headless instead (raylab render --help for the options)\n", why.c_str());
+  return runRenderCommand(renderArgsOf(args));
+}
+
+bool haveDisplayVariable() {
+  const char* x = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x && *x) || (wayland && *wayland);
+}
+
+}  // namespace
+
+int runWindowCommand(const std::vector<std::string>& args) {
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+    std::printf("usage: raylab [options]\n%s%s", kWindowHelp, commonOptionsHelp().c_str());
+    return kExitOk;
+  }
+  WindowOptions options;
+  try {
+    options = parseWindowOptions(args);
+  } catch (const UsageError& e) {
+    printUsage(e.what());
+    return kExitUsage;
+  } catch (const ScriptError& e) {
+    std::fprintf(stderr, "raylab: %s\n", e.what());
+    return kExitUsage;
+  }
+#ifdef RAYLAB_WITH_WINDOW
+  const bool scripted = !options.script.empty();
+  if (!haveDisplayVariable()) {
+    if (scripted) {
+      std::fprintf(stderr, "raylab: --script needs a display (DISPLAY or WAYLAND_DISPLAY; try xvfb-run)\n");
+      return kExitFailure;
+    }
+    return renderHeadless("no display (neither DISPLAY nor WAYLAND_DISPLAY is set)", args);
+  }
+  try {
+    return runLabWindow(options);
+  } catch (const NoDisplayError& e) {
+    if (scripted) {
+      std::fprintf(stderr, "raylab: %s\n", e.what());
+      return kExitFailure;
+    }
+    return renderHeadless(e.what(), args);
+  } catch (const ScriptError& e) {
+    std::fprintf(stderr, "raylab: %s\n", e.what());
+    return kExitUsage;
+  } catch (const UsageError& e) {
+    printUsage(e.what());
+    return kExitUsage;
+  } catch (const SceneLoadError& e) {
+    std::fprintf(stderr, "raylab: cannot load scene: %s\n", e.what());
+    return kExitBadScene;
+  }
+#else
+  (void)haveDisplayVariable;
+  if (!options.script.empty()) {
+    std::fprintf(stderr, "raylab: this build has no window (RAYLAB_HEADLESS_ONLY); --script needs one\n");
+    return kExitFailure;
+  }
+  return renderHeadless("this build has no window (RAYLAB_HEADLESS_ONLY)", args);
+#endif
+}
+
+}  // namespace raylab

@@ -1,0 +1,89 @@
+#include "ui/camera_scene_panel.h"
+
+#include <cstring>
+
+#include <imgui.h>
+
+namespace raylab {
+namespace {
+
+void errorText(const std::string& text) {
+  if (text.empty()) return;
+  ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+void drawScene(const CameraModel& m, UiRequests& r) {
+  if (ImGui::BeginCombo("scene", m.scene.c_str())) {
+    for (const std::string& name : m.builtinScenes)
+      if (ImGui::Selectable(name.c_str(), name == m.scene)) r.loadScene = name;
+    ImGui::EndCombo();
+  }
+  static char path[512] = "";
+  bool enter = ImGui::InputTextWithHint("##gltf", "path/to/scene.gltf", path, sizeof(path),
+                                        ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if ((ImGui::Button("Open glTF") || enter) && std::strlen(path) > 0) r.loadScene = std::string(path);
+  errorText(m.sceneError);
+}
+
+void drawViewpoints(const CameraModel& m, UiRequests& r) {
+  for (size_t i = 0; i < m.viewpoints.size(); ++i) {
+    if (i > 0 && ImGui::GetContentRegionAvail().x > ImGui::CalcTextSize(m.viewpoints[i].c_str()).x + 20) ImGui::SameLine();
+    if (ImGui::Button(m.viewpoints[i].c_str())) r.view = m.viewpoints[i];
+  }
+}
+
+void drawCamera(const CameraModel& m, UiRequests& r) {
+  bool orbit = m.orbit;
+  if (ImGui::Checkbox("orbit", &orbit)) r.orbit = orbit;
+  ImGui::SameLine();
+  float speed = m.speed;
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::SliderFloat("speed", &speed, 1e-3f, 1e4f, "%.3g", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+    r.speed = speed;
+  ImGui::TextWrapped("%s", m.cameraText.c_str());
+  if (ImGui::Button("Copy camera")) ImGui::SetClipboardText(m.cameraText.c_str());
+  ImGui::SameLine();
+  if (ImGui::Button("Paste camera")) {
+    const char* clip = ImGui::GetClipboardText();
+    r.cameraText = clip ? std::string(clip) : std::string();
+  }
+  static char typed[256] = "";
+  if (ImGui::InputTextWithHint("##camera", "camera x y z tx ty tz [fov deg]", typed, sizeof(typed),
+                               ImGuiInputTextFlags_EnterReturnsTrue))
+    r.cameraText = std::string(typed);
+  errorText(m.cameraError);
+}
+
+void drawCapture(const CameraModel& m, UiRequests& r) {
+  ImGui::Text("folder: %s", m.screenshotDir.c_str());
+  if (ImGui::Button("Save render (F12)")) r.screenshotRender = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Save window (Shift+F12)")) r.screenshotWindow = true;
+  if (!m.lastScreenshot.empty()) ImGui::TextWrapped("%s", m.lastScreenshot.c_str());
+}
+
+}  // namespace
+
+UiRequests drawCameraScenePanel(const CameraModel& m) {
+  UiRequests r;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(10, display.y - 40), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 280), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Scene and camera")) {
+    ImGui::End();
+    return r;
+  }
+  ImGui::TextDisabled("%s", m.deviceName.c_str());
+  if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) drawScene(m, r);
+  if (ImGui::CollapsingHeader("Viewpoints", ImGuiTreeNodeFlags_DefaultOpen)) drawViewpoints(m, r);
+  if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) drawCamera(m, r);
+  if (ImGui::CollapsingHeader("Screenshots", ImGuiTreeNodeFlags_DefaultOpen)) drawCapture(m, r);
+  ImGui::End();
+  return r;
+}
+
+}  // namespace raylab

@@ -1,0 +1,122 @@
+#include "ui/method_panel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <imgui.h>
+
+namespace raylab {
+namespace {
+
+using L = SettingLimits;
+constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
+constexpr ImGuiSliderFlags kLog = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic;
+
+template <class E>
+bool comboEnum(const char* label, E& value, const std::vector<E>& all) {
+  bool changed = false;
+  if (ImGui::BeginCombo(label, toString(value).c_str())) {
+    for (E e : all) {
+      if (ImGui::Selectable(toString(e).c_str(), e == value)) value = e, changed = true;
+      if (e == value) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+bool sliderU32(const char* label, uint32_t& v, uint32_t lo, uint32_t hi, ImGuiSliderFlags flags = kClamp) {
+  int i = static_cast<int>(v);
+  bool changed = ImGui::SliderInt(label, &i, static_cast<int>(lo), static_cast<int>(hi), "%d", flags);
+  if (changed) v = static_cast<uint32_t>(i);
+  return changed;
+}
+
+void drawSortSection(Settings& s) {
+  comboEnum("strategy", s.strategy, allKeyStrategies());
+  comboEnum("sort", s.sort, {SortAlgorithm::None, SortAlgorithm::Bitonic, SortAlgorithm::Radix});
+  comboEnum("kernel", s.kernel, {Kernel::Wavefront, Kernel::Megakernel});
+  if (s.kernel == Kernel::Megakernel) ImGui::TextDisabled("the megakernel never sorts");
+}
+
+void drawGridSection(Settings& s) {
+  ImGui::Checkbox("automatic grid", &s.grid.automatic);
+  if (s.grid.automatic) {
+    sliderU32("cells on largest axis", s.grid.autoCells, 1, L::kMaxGridCellsPerAxis, kLog);
+  } else {
+    int cells[3] = {int(s.grid.cells.x), int(s.grid.cells.y), int(s.grid.cells.z)};
+    if (ImGui::SliderInt3("cells x y z", cells, 1, int(L::kMaxGridCellsPerAxis), "%d", kLog))
+      s.grid.cells = {uint32_t(cells[0]), uint32_t(cells[1]), uint32_t(cells[2])};
+  }
+  ImGui::Checkbox("clamp grid to camera", &s.clampToCamera);
+  ImGui::BeginDisabled(!s.clampToCamera);
+  ImGui::SliderFloat("clamp distance", &s.clampDistance, 0.01f, L::kMaxClampDistance, "%.3g", kLog);
+  ImGui::EndDisabled();
+}
+
+// Parameters of the length estimates; each is greyed out unless the chosen strategy uses it.
+void drawLengthSection(Settings& s) {
+  const KeyStrategy k = s.strategy;
+  ImGui::BeginDisabled(k != KeyStrategy::Fixed && k != KeyStrategy::TwoPoint && k != KeyStrategy::Average &&
+                       k != KeyStrategy::Ema && k != KeyStrategy::Gaussian);
+  ImGui::SliderFloat("fixed-length factor", &s.fixedFactor, L::kMinFixedFactor, L::kMaxFixedFactor, "%.3f", kClamp);
+  ImGui::EndDisabled();
+  ImGui::BeginDisabled(k != KeyStrategy::Ema);
+  ImGui::SliderFloat("EMA alpha", &s.emaAlpha, L::kMinEmaAlpha, L::kMaxEmaAlpha, "%.3f", kLog);
+  ImGui::EndDisabled();
+  ImGui::BeginDisabled(k != KeyStrategy::Gaussian);
+  bool never = std::isinf(s.gaussReset);
+  if (ImGui::Checkbox("never reset", &never)) s.gaussReset = never ? INFINITY : 20.0f;
+  ImGui::BeginDisabled(never);
+  float reset = never ? 1e6f : s.gaussReset;
+  if (ImGui::SliderFloat("reset variance", &reset, 0.001f, 1e6f, "%.4g", kLog) && !never) s.gaussReset = reset;
+  ImGui::EndDisabled();
+  ImGui::SliderFloat("outlier sigmas", &s.gaussOutlier, 0.0f, L::kMaxGaussOutlier, "%.2f", kClamp);
+  ImGui::EndDisabled();
+}
+
+void drawHeatmapSection(Settings& s) {
+  comboEnum("heatmap", s.heatmap, allHeatmapViews());
+  ImGui::BeginDisabled(s.heatmap == HeatmapView::None);
+  if (s.heatmapBounce >= s.bounces) s.heatmapBounce = s.bounces - 1;
+  sliderU32("heatmap bounce", s.heatmapBounce, 0, s.bounces - 1);
+  ImGui::EndDisabled();
+}
+
+}  // namespace
+
+Settings methodDefaults(const Settings& current) {
+  Settings d;
+  d.scene = current.scene;
+  d.view = current.view;
+  d.width = current.width;
+  d.height = current.height;
+  return d;
+}
+
+void drawMethodPanel(Settings& s, ViewOptions& view) {
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, std::min(540.0f, ImGui::GetIO().DisplaySize.y - 60)), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Method")) {
+    ImGui::End();
+    return;
+  }
+  ImGui::PushItemWidth(150);
+  drawSortSection(s);
+  sliderU32("bounces", s.bounces, 1, L::kMaxBounces);
+  sliderU32("samples per frame", s.sppPerFrame, 1, L::kMaxSpp, kLog);
+  ImGui::SliderFloat("resolution scale", &view.resolutionScale, ViewOptions::kMinScale, ViewOptions::kMaxScale, "%.2f", kClamp);
+  ImGui::SliderFloat("exposure", &s.exposure, 0.01f, 100.0f, "%.2f", kLog);
+  if (ImGui::CollapsingHeader("Key grid", ImGuiTreeNodeFlags_DefaultOpen)) drawGridSection(s);
+  if (ImGui::CollapsingHeader("Length estimates", ImGuiTreeNodeFlags_DefaultOpen)) drawLengthSection(s);
+  if (ImGui::CollapsingHeader("Heatmap", ImGuiTreeNodeFlags_DefaultOpen)) drawHeatmapSection(s);
+  ImGui::PopItemWidth();
+  if (ImGui::Button("Reset to defaults")) {
+    s = methodDefaults(s);
+    view.resolutionScale = view.defaultScale;
+  }
+  ImGui::End();
+}
+
+}  // namespace raylab

@@ -1,0 +1,15 @@
+// The method panel: everything about how rays are reordered, as edits of Settings (and the resolution
+// scale of the view). Every slider is clamped to the range where the method is defined (SettingLimits).
+#pragma once
+
+#include "renderer/settings.h"
+#include "ui/ui_state.h"
+
+namespace raylab {
+
+void drawMethodPanel(Settings& settings, ViewOptions& view);
+
+// Settings{} for the method, keeping what the window owns (scene, viewpoint, render size).
+Settings methodDefaults(const Settings& current);
+
+}  // namespace raylab

@@ -1,0 +1,129 @@
+#include "ui/timing_panel.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+#include <imgui.h>
+
+#include "ui/stage_colors.h"
+
+namespace raylab {
+namespace {
+
+std::string formatBytes(uint64_t bytes) {
+  char text[32];
+  if (bytes >= (1ull << 30)) std::snprintf(text, sizeof(text), "%.2f GiB", bytes / double(1ull << 30));
+  else if (bytes >= (1ull << 20)) std::snprintf(text, sizeof(text), "%.2f MiB", bytes / double(1ull << 20));
+  else std::snprintf(text, sizeof(text), "%.1f KiB", bytes / 1024.0);
+  return text;
+}
+
+std::string percent(double v) {
+  if (v < 0.0) return "-";
+  char text[16];
+  std::snprintf(text, sizeof(text), "%.1f%%", 100.0 * v);
+  return text;
+}
+
+void plot(const char* label, const std::vector<float>& values, ImU32 color, float height) {
+  if (values.empty()) return;
+  float hi = *std::max_element(values.begin(), values.end());
+  char overlay[48];
+  std::snprintf(overlay, sizeof(overlay), "%s %.2f ms", label, values.back());
+  ImGui::PushStyleColor(ImGuiCol_PlotLines, color);
+  ImGui::PlotLines((std::string("##") + label).c_str(), values.data(), static_cast<int>(values.size()), 0, overlay,
+                   0.0f, hi > 0.0f ? hi * 1.1f : 1.0f, ImVec2(-1, height));
+  ImGui::PopStyleColor();
+}
+
+void drawHistory(const TimingHistory& history) {
+  plot("frame (GPU)", history.frameMs(), IM_COL32(255, 255, 255, 255), 50);
+  plot("frame (wall)", history.wallMs(), IM_COL32(180, 180, 180, 255), 30);
+  for (const std::string& stage : history.stages()) plot(stage.c_str(), history.stageMs(stage), stageColor(stage), 24);
+}
+
+// Per row (a bounce, or the stages outside the bounce loop) the stages' times laid end to end, on one
+// scale for all rows, so the bar lengths compare bounces and the segments show where each one's time goes.
+void drawStackedBars(const FrameStats& stats) {
+  std::map<int, std::vector<const StageTime*>> rows;
+  for (const StageTime& t : stats.stages) rows[t.bounce].push_back(&t);
+  double longest = 0.0;
+  for (const auto& [bounce, stages] : rows) {
+    double sum = 0.0;
+    for (const StageTime* t : stages) sum += t->ms;
+    longest = std::max(longest, sum);
+  }
+  if (longest <= 0.0) {
+    ImGui::TextDisabled("no stage times (timestamps unsupported?)");
+    return;
+  }
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const float labelWidth = 70.0f, height = ImGui::GetTextLineHeight();
+  const float barWidth = std::max(50.0f, ImGui::GetContentRegionAvail().x - labelWidth - 60.0f);
+  for (const auto& [bounce, stages] : rows) {
+    ImGui::Text("%s", bounce < 0 ? "frame" : ("bounce " + std::to_string(bounce)).c_str());
+    ImGui::SameLine(labelWidth);
+    ImVec2 p = ImGui::GetCursorScreenPos();
+    double sum = 0.0;
+    for (const StageTime* t : stages) {
+      float x0 = p.x + static_cast<float>(sum / longest) * barWidth;
+      sum += t->ms;
+      float x1 = p.x + static_cast<float>(sum / longest) * barWidth;
+      draw->AddRectFilled(ImVec2(x0, p.y), ImVec2(std::max(x1, x0 + 1.0f), p.y + height), stageColor(t->stage));
+      if (ImGui::IsMouseHoveringRect(ImVec2(x0, p.y), ImVec2(x1, p.y + height)))
+        ImGui::SetTooltip("%s: %.3f ms", t->stage.c_str(), t->ms);
+    }
+    ImGui::Dummy(ImVec2(barWidth, height));
+    ImGui::SameLine();
+    ImGui::Text("%.2f ms", sum);
+  }
+}
+
+void drawBounceTable(const FrameStats& stats) {
+  if (!ImGui::BeginTable("bounces", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) return;
+  for (const char* h : {"bounce", "rays", "SIMT", "virtual warp", "steps"}) ImGui::TableSetupColumn(h);
+  ImGui::TableHeadersRow();
+  for (size_t b = 0; b < stats.bounces.size(); ++b) {
+    const BounceStats& s = stats.bounces[b];
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn(), ImGui::Text("%zu", b);
+    ImGui::TableNextColumn(), ImGui::Text("%u", s.rays);
+    ImGui::TableNextColumn(), ImGui::TextUnformatted(percent(s.simtEfficiency).c_str());
+    ImGui::TableNextColumn(), ImGui::TextUnformatted(percent(s.virtualWarpEfficiency).c_str());
+    ImGui::TableNextColumn(), ImGui::Text("%.1f", s.meanTraversalSteps);
+  }
+  ImGui::EndTable();
+}
+
+void drawMemory(const FrameStats& s) {
+  ImGui::Text("length cache %s (%.1f%% occupied)", formatBytes(s.lengthCacheBytes).c_str(), 100.0 * s.lengthCacheOccupancy);
+  ImGui::Text("sort scratch %s, path state %s", formatBytes(s.sortScratchBytes).c_str(), formatBytes(s.pathStateBytes).c_str());
+  ImGui::Text("scene %s, key bits %u", formatBytes(s.sceneBytes).c_str(), s.keyBits);
+}
+
+}  // namespace
+
+void drawTimingPanel(const TimingHistory& history, const FrameStats& stats, Settings& settings, ViewOptions& view) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x - 370, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, std::min(560.0f, display.y - 60)), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Timing")) {
+    ImGui::End();
+    return;
+  }
+  ImGui::Text("frame %.2f ms GPU, %.2f ms wall (%.1f fps)", stats.frameMs, stats.wallMs,
+              stats.wallMs > 0 ? 1000.0 / stats.wallMs : 0.0);
+  ImGui::Text("%.3g rays/s, %u spp accumulated", stats.raysPerSecond, stats.samplesPerPixel);
+  ImGui::Checkbox("detailed stats", &view.detailedStats);
+  ImGui::SameLine();
+  ImGui::Checkbox("count SIMT lanes", &settings.countSimt);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("subgroup ballots in traversal: slower, not for timing");
+  if (ImGui::CollapsingHeader("History", ImGuiTreeNodeFlags_DefaultOpen)) drawHistory(history);
+  if (ImGui::CollapsingHeader("Stages per bounce", ImGuiTreeNodeFlags_DefaultOpen)) drawStackedBars(stats);
+  if (ImGui::CollapsingHeader("Coherence", ImGuiTreeNodeFlags_DefaultOpen)) drawBounceTable(stats);
+  if (ImGui::CollapsingHeader("Memory")) drawMemory(stats);
+  ImGui::End();
+}
+
+}  // namespace raylab

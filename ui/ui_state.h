@@ -1,0 +1,47 @@
+// What the panels share besides Settings (which they edit) and FrameStats (which they read): options of
+// the view that never reach the renderer, what the camera/scene panel shows, and the requests panels make
+// of the window, which the window carries out after drawing (load a scene, jump to a viewpoint, ...).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+struct ViewOptions {
+  float resolutionScale = 1.0f;  // render size = window size * scale
+  float defaultScale = 1.0f;     // what "reset to defaults" restores (the window lowers it on CPU devices)
+  bool detailedStats = true;     // per-bounce readbacks: virtual warp efficiency, prediction accuracy
+  bool showPanels = true;        // Tab hides them to look at the render alone
+  bool showHelp = false;         // F1
+  static constexpr float kMinScale = 0.1f;
+  static constexpr float kMaxScale = 2.0f;
+};
+
+// Shown by the camera/scene panel; the window fills it every frame.
+struct CameraModel {
+  std::string scene;
+  std::vector<std::string> builtinScenes;
+  std::vector<std::string> viewpoints;
+  std::string cameraText;  // cameraToText of the current camera
+  bool orbit = false;
+  float speed = 1.0f;      // scene units per second
+  std::string sceneError;  // last scene load failure
+  std::string cameraError; // last pasted camera that did not parse
+  std::string screenshotDir;
+  std::string lastScreenshot;  // what the last screenshot wrote, or why it failed
+  std::string deviceName;
+};
+
+struct UiRequests {
+  std::optional<std::string> loadScene;    // built-in name or glTF path
+  std::optional<std::string> view;         // named viewpoint
+  std::optional<std::string> cameraText;   // pasted or typed camera
+  std::optional<bool> orbit;
+  std::optional<float> speed;
+  bool screenshotRender = false;
+  bool screenshotWindow = false;
+};
+
+}  // namespace raylab
