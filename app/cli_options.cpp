@@ -92,6 +92,11 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       {"--gauss-reset", [&](const std::string& v) {
          s.gaussReset = v == "inf" ? INFINITY : parseFloat("--gauss-reset", v, 0.0f, 3.0e38f);
        }},
+      {"--heatmap", [&](const std::string& v) {
+         s.heatmap = parseEnum("--heatmap", v, &parseHeatmapView,
+                               "none|sort-key|cell-hit|traversal-steps|warp-efficiency|cache-mean|cache-variance");
+       }},
+      {"--heatmap-bounce", [&](const std::string& v) { s.heatmapBounce = parseUint("--heatmap-bounce", v, 0, L::kMaxBounces - 1); }},
       {"--device", [&](const std::string& v) { o.device = v; }},
       {"--out", [&](const std::string& v) { o.out = v; }},
       {"--stats", [&](const std::string& v) { o.statsPath = v; }},
@@ -135,6 +140,9 @@ std::string commonOptionsHelp() {
          "  --gauss-outlier S      reject lengths beyond S sigmas (default 3)\n"
          "  --gauss-reset V        reset a cell when its variance exceeds V (default 20, 'inf' never)\n"
          "  --exposure E           display exposure (default 1)\n"
+         "  --heatmap VIEW         show sort-key|cell-hit|traversal-steps|warp-efficiency|cache-mean|\n"
+         "                         cache-variance per pixel instead of the render\n"
+         "  --heatmap-bounce N     bounce the heatmap shows (default 1; 0 = camera rays)\n"
          "  --count-simt           count active subgroup lanes in traversal (slower; not for timing)\n"
          "  --device NAME          Vulkan device whose name contains NAME\n"
          "  --validate             enable the Khronos validation layer\n"

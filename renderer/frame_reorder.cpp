@@ -88,8 +88,8 @@ void FrameReorder::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buff
   computeBarrier(cmd);
 }
 
-uint32_t FrameReorder::recordReorder(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
-                                     uint32_t bounce, bool detailed, StageTimer* timer) {
+void FrameReorder::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
+                              bool detailed, StageTimer* timer) {
   const uint32_t n = buffers.pathCount;
   keys_.recordKeys(cmd, buffers.frameBlock.address(), stateSet, bounce, buffers.keys.address(),
                    buffers.values.address(), n, timer);
@@ -101,6 +101,11 @@ uint32_t FrameReorder::recordReorder(VkCommandBuffer cmd, const PathBuffers& buf
     captures_[bounce + 1]->haveKeys = true;
     computeBarrier(cmd);
   }
+}
+
+uint32_t FrameReorder::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
+                                           StageTimer* timer) {
+  const uint32_t n = buffers.pathCount;
   {
     ScopedStage s(timer, cmd, "sort");
     sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, keys_.keyBits());

@@ -37,9 +37,11 @@ class FrameReorder {
   // After the trace of `bounce`: the learn stage, and in detailed mode the accuracy readbacks.
   void recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
                         bool detailed, StageTimer* timer);
-  // Keys, sort, live count and gather; returns the state set that holds the reordered paths.
-  uint32_t recordReorder(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
-                         bool detailed, StageTimer* timer);
+  // After shading `bounce`: the keys of the next rays (in buffers.keys, current set order).
+  void recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
+                  bool detailed, StageTimer* timer);
+  // Sort, live count and gather; returns the state set that holds the reordered paths.
+  uint32_t recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, StageTimer* timer);
   // Adds key width, cache and sort memory and, in detailed mode, prediction accuracy to the stats.
   void finishFrame(FrameStats& stats, bool detailed);
 

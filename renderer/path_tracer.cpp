@@ -1,9 +1,11 @@
 #include "renderer/path_tracer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include "renderer/frame_reorder.h"
+#include "renderer/heatmap_pass.h"
 #include "renderer/vk_check.h"
 #include "renderer/vk_context.h"
 #include "renderer/warp_efficiency.h"
@@ -76,6 +78,7 @@ void PathTracer::allocate() {
   buffers_ = std::make_unique<PathBuffers>(ctx_, settings_.width, settings_.height, settings_.sppPerFrame,
                                            settings_.bounces);
   reorder_->resize(buffers_->pathCount);
+  heatmap_ = std::make_unique<HeatmapPass>(ctx_, buffers_->pixelCount);
   resetAccumulation();
 }
 
@@ -117,6 +120,8 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
   vkCmdUpdateBuffer(cmd, buffers_->frameBlock.handle(), 0, sizeof(frame), &frame);
   buffers_->counters.recordFill(cmd, 0);
   bufferBarrier(cmd);
+  const HeatmapView view = settings_.heatmap;
+  if (view != HeatmapView::None) heatmap_->recordClear(cmd);
 
   gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0, settings_.countSimt ? 1u : 0u, 0};
   if (settings_.kernel == Kernel::Megakernel) {
@@ -124,6 +129,8 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
     (settings_.countSimt ? megakernelCounting_ : megakernel_).dispatchThreads(cmd, push, buffers_->pathCount);
     bufferBarrier(cmd);
     recordTraceCounters(cmd, 0);
+    if (view == HeatmapView::TraversalSteps || view == HeatmapView::WarpEfficiency)
+      heatmap_->recordGather(cmd, view, *buffers_, 0, 0, true, &timer_);
   } else {
     recordWavefront(cmd, push);
   }
@@ -132,12 +139,16 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
     accumulate_.dispatchThreads(cmd, push, buffers_->pixelCount);
     bufferBarrier(cmd);
   }
-  {
+  if (view != HeatmapView::None) {
+    heatmap_->recordColorize(cmd, view, *buffers_, &timer_);
+  } else {
     ScopedStage s(&timer_, cmd, "tonemap");
     tonemap_.dispatchThreads(cmd, push, buffers_->pixelCount);
     bufferBarrier(cmd);
   }
 }
+
+uint32_t PathTracer::heatmapBounce() const { return std::min(settings_.heatmapBounce, settings_.bounces - 1); }
 
 // The bounce loop of DESIGN.md: trace, learn, shade, then keys, sort and reorder before the next bounce.
 // Trace and shade are dispatched indirectly over the live paths: all of them until a sort has moved the
@@ -145,6 +156,8 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
 void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& basePush) {
   gpu::PathStagePush push = basePush;
   const uint32_t n = buffers_->pathCount;
+  const HeatmapView view = settings_.heatmap;
+  const VkDeviceAddress keyParams = settings_.sorts() ? reorder_->keys().paramsAddress() : 0;
   {
     ScopedStage s(&timer_, cmd, "generate");
     generate_.dispatchThreads(cmd, push, n);
@@ -160,13 +173,19 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
     }
     recordTraceCounters(cmd, b);
     if (settings_.sorts()) reorder_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
+    if (view != HeatmapView::None && view != HeatmapView::SortKey && b == heatmapBounce())
+      heatmap_->recordGather(cmd, view, *buffers_, push.stateSet, keyParams, false, &timer_);
     {
       ScopedStage s(&timer_, cmd, "shade");
       shade_.dispatchIndirect(cmd, push, buffers_->live.handle(), 4);
       bufferBarrier(cmd);
     }
-    if (b + 1 < settings_.bounces && settings_.sorts())
-      push.stateSet = reorder_->recordReorder(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
+    if (b + 1 < settings_.bounces && settings_.sorts()) {
+      reorder_->recordKeys(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
+      if (view == HeatmapView::SortKey && b + 1 == heatmapBounce())
+        heatmap_->recordGather(cmd, view, *buffers_, push.stateSet, keyParams, false, &timer_);
+      push.stateSet = reorder_->recordSortAndGather(cmd, *buffers_, push.stateSet, &timer_);
+    }
   }
   timer_.setBounce(-1);
 }
@@ -214,6 +233,7 @@ const FrameStats& PathTracer::finishFrame(double wallMs) {
   for (const StageTime& s : stats_.stages) stats_.frameMs += s.ms;
   gatherCounters();
   if (settings_.sorts()) reorder_->finishFrame(stats_, detailedStats_);
+  if (settings_.heatmap != HeatmapView::None) heatmap_->readRange(settings_.heatmap, stats_);
   stats_.pathStateBytes = buffers_->pathStateBytes();
   stats_.sceneBytes = scene_->memoryBytes();
   double seconds = (stats_.frameMs > 0.0 ? stats_.frameMs : wallMs) * 1e-3;

@@ -17,6 +17,7 @@ namespace raylab {
 
 class VulkanContext;
 class FrameReorder;
+class HeatmapPass;
 
 class PathTracer {
  public:
@@ -55,6 +56,8 @@ class PathTracer {
   void recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& basePush);
   void recordTraceCounters(VkCommandBuffer cmd, uint32_t bounce);
   void gatherCounters();
+  // Bounce whose paths the heatmap shows, within this frame's bounces.
+  uint32_t heatmapBounce() const;
 
   const VulkanContext& ctx_;
   Settings settings_;
@@ -62,6 +65,7 @@ class PathTracer {
   std::unique_ptr<GpuSceneData> scene_;
   std::unique_ptr<PathBuffers> buffers_;
   std::unique_ptr<FrameReorder> reorder_;
+  std::unique_ptr<HeatmapPass> heatmap_;
   ComputePipeline generate_, trace_, traceCounting_, shade_, accumulate_, tonemap_, megakernel_,
       megakernelCounting_;
   GpuTimer timer_;

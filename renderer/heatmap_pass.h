@@ -1,0 +1,39 @@
+// The heatmap views (Settings::heatmap): per pixel, a quantity of the path traced there at one bounce
+// (sort key, predicted-vs-actual cell, traversal steps, warp efficiency, length-cache mean or variance),
+// drawn instead of the render, with the value range reported for the legend.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/compute_pipeline.h"
+#include "renderer/frame_stats.h"
+#include "renderer/gpu_buffer.h"
+#include "renderer/settings.h"
+
+namespace raylab {
+
+class VulkanContext;
+class StageTimer;
+struct PathBuffers;
+
+class HeatmapPass {
+ public:
+  HeatmapPass(const VulkanContext& ctx, uint32_t pixelCount);
+
+  // Clears the per-pixel values and the range; call at the start of a frame that shows a heatmap.
+  void recordClear(VkCommandBuffer cmd) const;
+  // Gathers the view's value from the paths of the current set (after the trace, or the key stage for
+  // SortKey). keyParams: KeyStage::paramsAddress(), or 0 without a key stage.
+  void recordGather(VkCommandBuffer cmd, HeatmapView view, const PathBuffers& buffers, uint32_t stateSet,
+                    VkDeviceAddress keyParams, bool megakernel, StageTimer* timer) const;
+  // Writes the colours into the display image (instead of the tonemap).
+  void recordColorize(VkCommandBuffer cmd, HeatmapView view, const PathBuffers& buffers, StageTimer* timer) const;
+  // After the frame completed: the legend's value range and unit.
+  void readRange(HeatmapView view, FrameStats& stats) const;
+
+ private:
+  ComputePipeline gather_, colorize_;
+  GpuBuffer heat_, range_;
+};
+
+}  // namespace raylab
