@@ -45,6 +45,7 @@ FrameReorder::FrameReorder(const VulkanContext& ctx, const Scene& scene, const S
                            glm::vec3 cameraPos, uint32_t maxPaths)
     : ctx_(ctx),
       settings_(settings),
+      cameraPos_(cameraPos),
       keys_(ctx, scene, cameraPos, settings, maxPaths),
       maxPaths_(maxPaths),
       gather_(ctx, "reorder", sizeof(GatherPush), RL_PATH_GROUP_SIZE),
@@ -56,6 +57,7 @@ FrameReorder::~FrameReorder() = default;
 
 void FrameReorder::configure(const Settings& settings, glm::vec3 cameraPos) {
   settings_ = settings;
+  cameraPos_ = cameraPos;
   keys_.configure(settings, cameraPos);
   if (!settings.sorts()) return;  // the sorter's scratch is only paid for while sorting
   if (!sorter_ || sorter_->algorithm() != settings.sort || sorter_->maxCount() < maxPaths_)
@@ -67,7 +69,7 @@ void FrameReorder::resize(uint32_t maxPaths) {
   keys_.resize(maxPaths);
   sorter_.reset();
   captures_.clear();
-  configure(settings_, glm::vec3(0.0f));
+  configure(settings_, cameraPos_);
 }
 
 void FrameReorder::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,

@@ -52,6 +52,7 @@ class FrameReorder {
 
   const VulkanContext& ctx_;
   Settings settings_;
+  glm::vec3 cameraPos_;
   KeyStage keys_;
   std::unique_ptr<GpuSorter> sorter_;
   uint32_t maxPaths_;
