@@ -7,6 +7,7 @@
 #include "app/bench_command.h"
 #include "app/render_command.h"
 #include "app/scene_setup.h"
+#include "app/sortbench_command.h"
 #include "app/window_command.h"
 
 namespace {
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
   try {
     if (mode == "render") return raylab::runRenderCommand(rest);
     if (mode == "bench") return raylab::runBenchCommand(rest);
+    if (mode == "sortbench") return raylab::runSortBenchCommand(argc - 1, argv + 1);
     if (mode == "devices") {
       for (const std::string& name : raylab::VulkanContext::listDevices()) std::puts(name.c_str());
       return raylab::kExitOk;
