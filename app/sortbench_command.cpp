@@ -29,7 +29,8 @@ const char* kUsage =
     "  --n-range A:B       powers of two 2^A .. 2^B\n"
     "  --bits B            key bits, 1..32 (default 30; keys are uniform below 2^B unless --dist says otherwise)\n"
     "  --dist D            uniform|sorted|reversed|equal|few (default uniform)\n"
-    "  --sort S            bitonic|radix|both (default both)\n"
+    "  --sort S            bitonic|radix|both|onesweep|all (default both; onesweep: the decoupled look-back\n"
+    "                      radix variant, only on GPUs with forward progress; all: the three)\n"
     "  --repeat R          timed runs per (sort, n), after 2 warm-up runs (default 10)\n"
     "  --device NAME       substring of the Vulkan device name\n"
     "  --validate          enable the Khronos validation layer (exit 1 on any error)\n"
@@ -41,11 +42,18 @@ struct BenchUsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The radix sort's OneSweep variant is benchmarked as a sort of its own.
+enum class BenchSort { Bitonic, Radix, OneSweep };
+
+const char* sortName(BenchSort s) {
+  return s == BenchSort::Bitonic ? "bitonic" : s == BenchSort::Radix ? "radix" : "onesweep";
+}
+
 struct BenchOptions {
   std::vector<uint32_t> counts;
   uint32_t bits = 30;
   std::string dist = "uniform";
-  std::vector<SortAlgorithm> sorts{SortAlgorithm::Bitonic, SortAlgorithm::Radix};
+  std::vector<BenchSort> sorts{BenchSort::Bitonic, BenchSort::Radix};
   uint32_t repeat = 10;
   std::string device;
   bool validate = false;
@@ -99,9 +107,11 @@ BenchOptions parseOptions(int argc, char** argv) {
         throw BenchUsageError("--dist: unknown distribution '" + value + "'");
       o.dist = value;
     } else if (flag == "--sort") {
-      if (value == "both") o.sorts = {SortAlgorithm::Bitonic, SortAlgorithm::Radix};
-      else if (value == "bitonic") o.sorts = {SortAlgorithm::Bitonic};
-      else if (value == "radix") o.sorts = {SortAlgorithm::Radix};
+      if (value == "both") o.sorts = {BenchSort::Bitonic, BenchSort::Radix};
+      else if (value == "bitonic") o.sorts = {BenchSort::Bitonic};
+      else if (value == "radix") o.sorts = {BenchSort::Radix};
+      else if (value == "onesweep") o.sorts = {BenchSort::OneSweep};
+      else if (value == "all") o.sorts = {BenchSort::Bitonic, BenchSort::Radix, BenchSort::OneSweep};
       else throw BenchUsageError("--sort: unknown sort '" + value + "'");
     } else if (flag == "--repeat") {
       o.repeat = parseNumber(flag, value, 1, 100000);
@@ -241,14 +251,22 @@ int runBench(const BenchOptions& o) {
   bool allOk = true;
   Bench bench(ctx);
   GpuBuffer keys(ctx, VkDeviceSize(maxN) * 4), values(ctx, VkDeviceSize(maxN) * 4);
-  for (SortAlgorithm sort : o.sorts) {
-    GpuSorter sorter(ctx, sort, maxN, o.tuning);
+  for (BenchSort benchSort : o.sorts) {
+    const SortAlgorithm sort = benchSort == BenchSort::Bitonic ? SortAlgorithm::Bitonic : SortAlgorithm::Radix;
+    GpuSorter::Tuning tuning = o.tuning;
+    tuning.oneSweep = benchSort == BenchSort::OneSweep;
+    GpuSorter sorter(ctx, sort, maxN, tuning);
+    if (tuning.oneSweep && !sorter.usesOneSweep()) {
+      std::fprintf(stderr, "raylab sortbench: onesweep skipped: %s is not known to give forward progress between "
+                   "work groups\n", dev.name.c_str());
+      continue;
+    }
     for (uint32_t n : o.counts) {
       const std::vector<uint32_t> hostKeys = makeKeys(o.dist, n, o.bits);
       std::vector<uint32_t> hostValues(n);
       std::iota(hostValues.begin(), hostValues.end(), 0u);
       GpuBuffer srcKeys = makeBufferFrom(ctx, hostKeys), srcValues = makeBufferFrom(ctx, hostValues);
-      Row row{toString(sort), n};
+      Row row{sortName(benchSort), n};
       std::vector<double> ms;
       for (uint32_t run = 0; run < o.repeat + kWarmups; ++run) {
         const double t = bench.timeOnce(sorter, srcKeys, srcValues, keys, values, n, o.bits);

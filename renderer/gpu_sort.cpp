@@ -13,6 +13,9 @@ namespace {
 
 constexpr uint32_t kScanGroup = 64;  // rows are short (a few hundred tiles); CPU devices pay per invocation
 constexpr uint32_t kCopyGroup = 256;
+constexpr uint32_t kOneSweepHistogramGroup = 256;
+constexpr uint32_t kVendorNvidia = 0x10DE;
+constexpr uint32_t kVendorAmd = 0x1002;
 // 15 keys a thread (a 3840-key tile at 256 threads) is the published sweet spot of 8-bit reduce-then-scan and
 // OneSweep sorts on NVIDIA; the lab's H100 runs can override it with sortbench --radix-kpt.
 constexpr uint32_t kDefaultKeysPerThread = 15;
@@ -26,10 +29,10 @@ uint32_t maxSharedBytes(const VulkanContext& ctx) {
 }
 
 // Shared memory of sort_radix_scatter for a group size: the larger of the tile (keys and values) and the
-// per-subgroup histograms, the two digit tables, and the scan scratch of sort_scan.glsl.
+// per-subgroup histograms, the two digit tables, the scan scratch of sort_scan.glsl and OneSweep's tile index.
 uint64_t scatterSharedBytes(uint32_t group, uint32_t keysPerThread, uint32_t subgroup) {
   uint64_t words = std::max<uint64_t>(2ull * group * keysPerThread, uint64_t(group / subgroup) * SORT_RADIX);
-  return 4 * (words + 2 * SORT_RADIX + group + 1);
+  return 4 * (words + 2 * SORT_RADIX + group + 2);
 }
 
 // Splits a dispatch of `groups` work groups at the device's limit; the shader adds groupOffset.
@@ -67,14 +70,25 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
     }
     radixTile_ = group * kpt;
     const uint32_t maxGroups = std::max(1u, ceilDiv(maxCount, radixTile_));
-    histogram_ = ComputePipeline(ctx, "sort_radix_histogram", sizeof(gpu::SortRadixPush), group, {kpt});
-    scan_ = ComputePipeline(ctx, "sort_radix_scan", sizeof(gpu::SortScanPush), std::max(kScanGroup, subgroup));
-    scatter_ = ComputePipeline(ctx, "sort_radix_scatter", sizeof(gpu::SortRadixPush), group, {subgroup, kpt});
+    oneSweepSerial_ = tuning.oneSweep && tuning.oneSweepSerialTest;
+    oneSweep_ = tuning.oneSweep && (oneSweepSerial_ || oneSweepSupported(ctx));
+    if (oneSweep_) {
+      oneSweepHistogram_ =
+          ComputePipeline(ctx, "sort_onesweep_histogram", sizeof(gpu::SortOneSweepPush), kOneSweepHistogramGroup);
+      oneSweepPass_ =
+          ComputePipeline(ctx, "sort_onesweep_pass", sizeof(gpu::SortOneSweepPush), group, {subgroup, kpt});
+      oneSweepState_ = GpuBuffer(
+          ctx, (VkDeviceSize(SORT_ONESWEEP_STATUS) + VkDeviceSize(SORT_ONESWEEP_MAX_PASSES) * maxGroups * SORT_RADIX) * 4);
+    } else {
+      histogram_ = ComputePipeline(ctx, "sort_radix_histogram", sizeof(gpu::SortRadixPush), group, {kpt});
+      scan_ = ComputePipeline(ctx, "sort_radix_scan", sizeof(gpu::SortScanPush), std::max(kScanGroup, subgroup));
+      scatter_ = ComputePipeline(ctx, "sort_radix_scatter", sizeof(gpu::SortRadixPush), group, {subgroup, kpt});
+      hist_ = GpuBuffer(ctx, (VkDeviceSize(SORT_RADIX) * maxGroups + SORT_RADIX) * 4);
+    }
     copy_ = ComputePipeline(ctx, "sort_copy", sizeof(gpu::SortCopyPush), kCopyGroup);
     const VkDeviceSize elementBytes = std::max<VkDeviceSize>(16, VkDeviceSize(maxCount) * 4);
     scratchKeys_ = GpuBuffer(ctx, elementBytes);
     scratchValues_ = GpuBuffer(ctx, elementBytes);
-    hist_ = GpuBuffer(ctx, (VkDeviceSize(SORT_RADIX) * maxGroups + SORT_RADIX) * 4);
   } else if (algorithm == SortAlgorithm::Bitonic) {
     // No scratch: the padding to a power of two is virtual (see shaders/sort_bitonic.glsl).
     bitonicLocal_ = ComputePipeline(ctx, "sort_bitonic_local", sizeof(gpu::SortBitonicPush), SORT_BITONIC_GROUP);
@@ -84,9 +98,16 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
 
 uint64_t GpuSorter::scratchBytes() const {
   uint64_t bytes = 0;
-  for (const GpuBuffer* b : {&scratchKeys_, &scratchValues_, &hist_})
+  for (const GpuBuffer* b : {&scratchKeys_, &scratchValues_, &hist_, &oneSweepState_})
     if (b->valid()) bytes += b->size();
   return bytes;
+}
+
+bool GpuSorter::oneSweepSupported(const VulkanContext& ctx) {
+  // The vendors whose GPUs are documented (CUDA's and ROCm's decoupled look-back scans ship on them) to keep
+  // every running work group progressing; CPU implementations run work groups as tasks with no such promise.
+  const DeviceInfo& info = ctx.info();
+  return !info.isCpu && (info.vendorId == kVendorNvidia || info.vendorId == kVendorAmd);
 }
 
 uint32_t GpuSorter::radixPasses(uint32_t keyBits) {
@@ -102,7 +123,9 @@ void GpuSorter::record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddres
                       std::to_string(maxCount_));
   if (keyBits < 1 || keyBits > 32) throw VulkanError("sort: keyBits must be 1..32, got " + std::to_string(keyBits));
   if (count > 1) {
-    if (algorithm_ == SortAlgorithm::Radix)
+    if (algorithm_ == SortAlgorithm::Radix && oneSweep_)
+      recordOneSweep(cmd, keys, values, count, keyBits);
+    else if (algorithm_ == SortAlgorithm::Radix)
       recordRadix(cmd, keys, values, count, keyBits);
     else
       recordBitonic(cmd, keys, values, count, keyBits);
@@ -132,7 +155,9 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
     push.numGroups = numGroups;
     dispatchSplit(histogram_, cmd, push, numGroups, maxGroups);
     computeBarrier(cmd);
-    const uint32_t rows = ctx_->info().isCpu ? 16 : 1;
+    // CPU devices pay per work group; 4 rows a group still spreads over the cores and keeps each invocation
+    // far below lavapipe's cap of 65535 loop iterations per shader invocation.
+    const uint32_t rows = ctx_->info().isCpu ? 4 : 1;
     gpu::SortScanPush scanPush{hist_.address(), numGroups, rows};
     scan_.dispatchGroups(cmd, scanPush, SORT_RADIX / rows);
     computeBarrier(cmd);
@@ -141,11 +166,58 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
     srcKeys = push.keysOut;
     srcValues = push.valuesOut;
   }
-  if (passes % 2 == 1) {
+  if (passes % 2 == 1) recordCopyBack(cmd, keys, values, count);
+}
+
+void GpuSorter::recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count) {
+  computeBarrier(cmd);
+  gpu::SortCopyPush push{scratchKeys_.address(), scratchValues_.address(), keys, values, count, 0};
+  const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
+  copy_.dispatchGroups(cmd, push, std::min(maxGroups, ceilDiv(count, kCopyGroup * 4ull)));
+}
+
+void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
+                               uint32_t keyBits) {
+  const uint32_t passes = radixPasses(keyBits);
+  const uint32_t numTiles = ceilDiv(count, radixTile_);
+  const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
+  // Zero only what this count uses: histograms, counters and the status words of its tiles.
+  const VkDeviceSize stateBytes = (VkDeviceSize(SORT_ONESWEEP_STATUS) + VkDeviceSize(passes) * numTiles * SORT_RADIX) * 4;
+  vkCmdFillBuffer(cmd, oneSweepState_.handle(), 0, stateBytes, 0);
+  computeBarrier(cmd);
+  gpu::SortOneSweepPush push{};
+  push.keysIn = keys;
+  push.state = oneSweepState_.address();
+  push.count = count;
+  push.keyBits = keyBits;
+  push.numTiles = numTiles;
+  push.passes = passes;
+  const uint32_t histChunk = kOneSweepHistogramGroup * SORT_ONESWEEP_HIST_KPT;
+  oneSweepHistogram_.dispatchGroups(cmd, push, std::min(maxGroups, ceilDiv(count, histChunk)));
+  VkDeviceAddress srcKeys = keys, srcValues = values;
+  for (uint32_t pass = 0; pass < passes; ++pass) {
     computeBarrier(cmd);
-    gpu::SortCopyPush copyPush{scratchKeys_.address(), scratchValues_.address(), keys, values, count, 0};
-    copy_.dispatchGroups(cmd, copyPush, std::min(maxGroups, ceilDiv(count, kCopyGroup * 4ull)));
+    const bool toScratch = pass % 2 == 0;
+    push.keysIn = srcKeys;
+    push.valuesIn = srcValues;
+    push.keysOut = toScratch ? scratchKeys_.address() : keys;
+    push.valuesOut = toScratch ? scratchValues_.address() : values;
+    push.shift = pass * SORT_RADIX_BITS;
+    push.pass = pass;
+    // Tiles come from the pass's counter, not the group id, so a split dispatch needs no offset.
+    if (oneSweepSerial_) {
+      for (uint32_t tile = 0; tile < numTiles; ++tile) {
+        if (tile) computeBarrier(cmd);
+        oneSweepPass_.dispatchGroups(cmd, push, 1);
+      }
+    } else {
+      for (uint32_t first = 0; first < numTiles; first += maxGroups)
+        oneSweepPass_.dispatchGroups(cmd, push, std::min(maxGroups, numTiles - first));
+    }
+    srcKeys = push.keysOut;
+    srcValues = push.valuesOut;
   }
+  if (passes % 2 == 1) recordCopyBack(cmd, keys, values, count);
 }
 
 void GpuSorter::recordBitonic(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,

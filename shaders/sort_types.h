@@ -12,6 +12,8 @@ using uint = uint32_t;
 #else
 #define SORT_REF(Type) Type
 layout(buffer_reference, scalar) buffer SortUintBuf { uint v[]; };
+// Look-back state is read while other work groups write it: every load must reach the device-coherent level.
+layout(buffer_reference, scalar) coherent volatile buffer SortStateBuf { uint v[]; };
 #endif
 
 // Radix sort: digit width and bins. 8 bits keeps the pass count at 4 for the lab's 30-bit Morton keys
@@ -74,6 +76,36 @@ struct SortCopyPush {
   SORT_REF(SortUintBuf) valuesOut;
   uint count;
   uint pad0;
+};
+
+// OneSweep variant (decoupled look-back; only on devices with forward progress between work groups): one
+// `state` buffer holds, in 32-bit words,
+//   [0, 4 * SORT_RADIX)                     the global digit histogram of each pass
+//   [SORT_ONESWEEP_COUNTERS + pass]         the tile counter of each pass (tiles are taken in start order)
+//   [SORT_ONESWEEP_STATUS + (pass * numTiles + tile) * SORT_RADIX + digit]  look-back status words
+// all zeroed before each sort. A status word is a flag (aggregate: this tile's count; inclusive: the count of
+// this and all earlier tiles) and a 30-bit count (counts are at most 2^27).
+#define SORT_ONESWEEP_MAX_PASSES 4
+#define SORT_ONESWEEP_COUNTERS (SORT_ONESWEEP_MAX_PASSES * SORT_RADIX)
+#define SORT_ONESWEEP_STATUS (SORT_ONESWEEP_COUNTERS + SORT_ONESWEEP_MAX_PASSES)
+#define SORT_STATUS_AGGREGATE 0x40000000u
+#define SORT_STATUS_INCLUSIVE 0x80000000u
+#define SORT_STATUS_VALUE 0x3FFFFFFFu
+#define SORT_ONESWEEP_HIST_KPT 16  // keys per invocation of sort_onesweep_histogram
+
+// sort_onesweep_histogram (keysIn, state, count, keyBits, passes) and sort_onesweep_pass (all but passes).
+struct SortOneSweepPush {
+  SORT_REF(SortUintBuf) keysIn;
+  SORT_REF(SortUintBuf) valuesIn;
+  SORT_REF(SortUintBuf) keysOut;
+  SORT_REF(SortUintBuf) valuesOut;
+  SORT_REF(SortStateBuf) state;
+  uint count;
+  uint shift;
+  uint keyBits;
+  uint numTiles;
+  uint pass;
+  uint passes;
 };
 
 // The key the sort compares: the caller guarantees key < 2^keyBits or key == 0xFFFFFFFF (a dead path);

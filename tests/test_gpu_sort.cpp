@@ -20,6 +20,7 @@ static_assert(sizeof(gpu::SortRadixPush) == 64);
 static_assert(sizeof(gpu::SortScanPush) == 16);
 static_assert(sizeof(gpu::SortBitonicPush) == 48);
 static_assert(sizeof(gpu::SortCopyPush) == 40);
+static_assert(sizeof(gpu::SortOneSweepPush) == 64);
 
 constexpr uint32_t kDead = 0xFFFFFFFFu;
 constexpr uint32_t kMaxCount = (1u << 20) + 3;
@@ -79,23 +80,46 @@ std::vector<uint32_t> stableOrder(const std::vector<uint32_t>& keys, uint32_t ke
   return order;
 }
 
+// What is sorted with: the portable radix sort, the OneSweep radix variant, the bitonic sort.
+enum class Variant { Radix, OneSweep, Bitonic };
+
+std::string variantName(Variant v) {
+  return v == Variant::Radix ? "radix" : v == Variant::OneSweep ? "onesweep" : "bitonic";
+}
+
 class GpuSortTest : public test::GpuTest {
  protected:
-  static GpuSorter& sorter(SortAlgorithm algorithm) {
-    static std::unique_ptr<GpuSorter> radix, bitonic;
-    auto& slot = algorithm == SortAlgorithm::Radix ? radix : bitonic;
-    if (!slot) slot = std::make_unique<GpuSorter>(ctx(), algorithm, kMaxCount);
+  static GpuSorter& sorter(Variant variant) {
+    static std::unique_ptr<GpuSorter> sorters[3];
+    auto& slot = sorters[static_cast<int>(variant)];
+    if (!slot) {
+      GpuSorter::Tuning tuning;
+      // OneSweep's look-back needs forward progress between work groups; where the device does not promise
+      // it (lavapipe), the serial test mode runs one work group per dispatch so the arithmetic is still checked.
+      tuning.oneSweep = variant == Variant::OneSweep;
+      tuning.oneSweepSerialTest = tuning.oneSweep && !GpuSorter::oneSweepSupported(ctx());
+      slot = std::make_unique<GpuSorter>(
+          ctx(), variant == Variant::Bitonic ? SortAlgorithm::Bitonic : SortAlgorithm::Radix, kMaxCount, tuning);
+      EXPECT_EQ(slot->usesOneSweep(), variant == Variant::OneSweep);
+    }
     return *slot;
+  }
+  static GpuSorter& sorter(SortAlgorithm algorithm) {
+    return sorter(algorithm == SortAlgorithm::Bitonic ? Variant::Bitonic : Variant::Radix);
   }
 
   // Sorts (keys, 0..n-1) on the GPU and checks the result against the stable order.
   void sortAndCheck(SortAlgorithm algorithm, const std::vector<uint32_t>& keys, uint32_t keyBits) {
+    sortAndCheck(algorithm == SortAlgorithm::Bitonic ? Variant::Bitonic : Variant::Radix, keys, keyBits);
+  }
+  void sortAndCheck(Variant variant, const std::vector<uint32_t>& keys, uint32_t keyBits) {
+    const SortAlgorithm algorithm = variant == Variant::Bitonic ? SortAlgorithm::Bitonic : SortAlgorithm::Radix;
     const uint32_t n = static_cast<uint32_t>(keys.size());
     std::vector<uint32_t> values(n);
     std::iota(values.begin(), values.end(), 0u);
     GpuBuffer keyBuf = makeBufferFrom(ctx(), keys);
     GpuBuffer valueBuf = makeBufferFrom(ctx(), values);
-    GpuSorter& s = sorter(algorithm);
+    GpuSorter& s = sorter(variant);
     ctx().submitAndWait([&](VkCommandBuffer cmd) { s.record(cmd, keyBuf.address(), valueBuf.address(), n, keyBits); });
     const std::vector<uint32_t> gotKeys = keyBuf.downloadVector<uint32_t>(n);
     const std::vector<uint32_t> gotValues = valueBuf.downloadVector<uint32_t>(n);
@@ -122,13 +146,13 @@ class GpuSortTest : public test::GpuTest {
 };
 
 struct SortCase {
-  SortAlgorithm algorithm;
+  Variant variant;
   uint32_t count;
   Dist dist;
 };
 
 std::string caseName(const ::testing::TestParamInfo<SortCase>& info) {
-  return toString(info.param.algorithm) + "_" + std::to_string(info.param.count) + "_" + distName(info.param.dist);
+  return variantName(info.param.variant) + "_" + std::to_string(info.param.count) + "_" + distName(info.param.dist);
 }
 
 std::vector<SortCase> allCases() {
@@ -136,13 +160,13 @@ std::vector<SortCase> allCases() {
   const Dist dists[] = {Dist::Uniform, Dist::Sorted, Dist::Reversed, Dist::Equal,
                         Dist::Few,     Dist::Full32, Dist::Dead12};
   std::vector<SortCase> cases;
-  for (SortAlgorithm a : {SortAlgorithm::Radix, SortAlgorithm::Bitonic})
+  for (Variant v : {Variant::Radix, Variant::OneSweep, Variant::Bitonic})
     for (uint32_t n : counts)
       for (Dist d : dists)
         // Bitonic at 2^20+3 takes seconds on a CPU device: four distributions are enough there.
-        if (a == SortAlgorithm::Radix || n < kMaxCount || d == Dist::Uniform || d == Dist::Reversed ||
+        if (v != Variant::Bitonic || n < kMaxCount || d == Dist::Uniform || d == Dist::Reversed ||
             d == Dist::Few || d == Dist::Dead12)
-          cases.push_back({a, n, d});
+          cases.push_back({v, n, d});
   return cases;
 }
 
@@ -150,17 +174,17 @@ class GpuSortCases : public GpuSortTest, public ::testing::WithParamInterface<So
 
 TEST_P(GpuSortCases, MatchesStableSort) {
   const SortCase c = GetParam();
-  sortAndCheck(c.algorithm, makeKeys(c.dist, c.count, 1), distKeyBits(c.dist));
+  sortAndCheck(c.variant, makeKeys(c.dist, c.count, 1), distKeyBits(c.dist));
 }
 
 INSTANTIATE_TEST_SUITE_P(Sort, GpuSortCases, ::testing::ValuesIn(allCases()), caseName);
 
 // Every key bit below keyBits matters (no pass skipped too many), including pass counts that are odd
 // (7 and 16 bits: 1 and 3 passes, copied back) and dead keys on top.
-class GpuSortBits : public GpuSortTest, public ::testing::WithParamInterface<std::tuple<SortAlgorithm, uint32_t>> {};
+class GpuSortBits : public GpuSortTest, public ::testing::WithParamInterface<std::tuple<Variant, uint32_t>> {};
 
 TEST_P(GpuSortBits, KeysBelowTwoToTheBitsSort) {
-  const auto [algorithm, bits] = GetParam();
+  const auto [variant, bits] = GetParam();
   std::mt19937 rng(bits);
   const uint32_t mask = bits == 32 ? ~0u : (1u << bits) - 1u;
   for (bool withDead : {false, true}) {
@@ -170,15 +194,15 @@ TEST_P(GpuSortBits, KeysBelowTwoToTheBitsSort) {
     keys[17] = mask;
     keys[4000] = mask;
     SCOPED_TRACE(withDead ? "with dead keys" : "live keys only");
-    sortAndCheck(algorithm, keys, bits);
+    sortAndCheck(variant, keys, bits);
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Sort, GpuSortBits,
-                         ::testing::Combine(::testing::Values(SortAlgorithm::Radix, SortAlgorithm::Bitonic),
+                         ::testing::Combine(::testing::Values(Variant::Radix, Variant::OneSweep, Variant::Bitonic),
                                             ::testing::Values(1u, 7u, 8u, 9u, 16u, 24u, 30u, 32u)),
                          [](const auto& info) {
-                           return toString(std::get<0>(info.param)) + "_bits" +
+                           return variantName(std::get<0>(info.param)) + "_bits" +
                                   std::to_string(std::get<1>(info.param));
                          });
 
@@ -195,6 +219,7 @@ TEST_F(GpuSortTest, PassCountFollowsKeyBits) {
 TEST_F(GpuSortTest, ScratchIsReported) {
   EXPECT_GE(sorter(SortAlgorithm::Radix).scratchBytes(), 8ull * kMaxCount);
   EXPECT_EQ(sorter(SortAlgorithm::Bitonic).scratchBytes(), 0u);
+  EXPECT_GE(sorter(Variant::OneSweep).scratchBytes(), 8ull * kMaxCount);
   GpuSorter none(ctx(), SortAlgorithm::None, 1000);
   EXPECT_EQ(none.scratchBytes(), 0u);
   EXPECT_EQ(none.algorithm(), SortAlgorithm::None);
@@ -220,13 +245,28 @@ TEST_F(GpuSortTest, RejectsCountOverCapacity) {
                std::exception);
 }
 
+// The lab never runs OneSweep on a CPU device unless forced.
+TEST_F(GpuSortTest, OneSweepOnlyWhereSupported) {
+  GpuSorter::Tuning tuning;
+  tuning.oneSweep = true;
+  GpuSorter s(ctx(), SortAlgorithm::Radix, 1000, tuning);
+  EXPECT_EQ(s.usesOneSweep(), GpuSorter::oneSweepSupported(ctx()));
+  if (ctx().info().isCpu) {
+    EXPECT_FALSE(s.usesOneSweep());
+  }
+}
+
 // A sorter is reused frame after frame with varying counts; small sorts after a large one must not see its
 // leftovers, and a tuned shape (other group size and keys per thread) must sort the same.
 TEST_F(GpuSortTest, ReuseAndTunedShapes) {
-  for (uint32_t n : {70000u, 3u, 4099u}) sortAndCheck(SortAlgorithm::Radix, makeKeys(Dist::Dead12, n, 2), 12);
+  for (Variant v : {Variant::Radix, Variant::OneSweep})
+    for (uint32_t n : {70000u, 3u, 4099u}) sortAndCheck(v, makeKeys(Dist::Dead12, n, 2), 12);
   const uint32_t sub = ctx().info().subgroupSize;
   for (uint32_t kpt : {1u, 4u, 16u}) {
-    GpuSorter tuned(ctx(), SortAlgorithm::Radix, 50000, GpuSorter::Tuning{std::max(64u, sub), kpt});
+    GpuSorter::Tuning tuning{std::max(64u, sub), kpt};
+    tuning.oneSweep = kpt == 4;
+    tuning.oneSweepSerialTest = tuning.oneSweep && !GpuSorter::oneSweepSupported(ctx());
+    GpuSorter tuned(ctx(), SortAlgorithm::Radix, 50000, tuning);
     const std::vector<uint32_t> keys = makeKeys(Dist::Uniform, 50000, kpt);
     std::vector<uint32_t> values(keys.size());
     std::iota(values.begin(), values.end(), 0u);
