@@ -29,7 +29,7 @@ struct BounceStats {
 struct FrameStats {
   uint32_t frameIndex = 0;
   uint32_t samplesPerPixel = 0;  // accumulated so far
-  double frameMs = 0.0;          // GPU time of the whole frame (sum of stages)
+  double frameMs = 0.0;          // GPU time of the whole frame (first stage start to last stage end)
   double wallMs = 0.0;           // host wall time of the frame, submit to completion
   std::vector<StageTime> stages;
   std::vector<BounceStats> bounces;

@@ -1,5 +1,7 @@
 #include "renderer/gpu_timer.h"
 
+#include <algorithm>
+
 #include "renderer/vk_check.h"
 #include "renderer/vk_context.h"
 
@@ -32,7 +34,9 @@ void GpuTimer::begin(VkCommandBuffer cmd, std::string_view stage) {
   }
   scopes_.push_back({std::string(stage), bounce_, used_});
   open_.push_back(static_cast<uint32_t>(scopes_.size() - 1));
-  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_, used_);
+  // BOTTOM_OF_PIPE: written once all earlier commands completed. A TOP_OF_PIPE start would be taken
+  // while the previous stage still runs and charge part of it to this one.
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, used_);
   used_ += 2;
 }
 
@@ -51,10 +55,14 @@ std::vector<StageTime> GpuTimer::collect() {
   VK_CHECK(vkGetQueryPoolResults(ctx_.device(), pool_, 0, used_, ticks.size() * sizeof(uint64_t), ticks.data(),
                                  sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   double nsPerTick = ctx_.info().timestampPeriodNs;
+  uint64_t first = UINT64_MAX, last = 0;
   for (const Scope& s : scopes_) {
     uint64_t a = ticks[s.first], b = ticks[s.first + 1];
     out.push_back({s.stage, s.bounce, b > a ? (b - a) * nsPerTick * 1e-6 : 0.0});
+    first = std::min(first, a);
+    last = std::max(last, b);
   }
+  spanMs_ = last > first ? (last - first) * nsPerTick * 1e-6 : 0.0;
   return out;
 }
 

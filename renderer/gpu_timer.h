@@ -27,6 +27,8 @@ class GpuTimer : public StageTimer {
   void end(VkCommandBuffer cmd) override;
   // Reads the results of the scopes since reset(); call after the commands completed.
   std::vector<StageTime> collect();
+  // GPU time from the first scope's start to the last scope's end, as of the last collect().
+  double spanMs() const { return spanMs_; }
 
  private:
   struct Scope {
@@ -39,6 +41,7 @@ class GpuTimer : public StageTimer {
   uint32_t capacity_ = 0;
   uint32_t used_ = 0;
   int bounce_ = -1;
+  double spanMs_ = 0.0;
   std::vector<Scope> scopes_;
   std::vector<uint32_t> open_;
 };

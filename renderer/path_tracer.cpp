@@ -230,7 +230,7 @@ const FrameStats& PathTracer::finishFrame(double wallMs) {
   stats_.frameIndex = frameIndex_;
   stats_.wallMs = wallMs;
   stats_.stages = timer_.collect();
-  for (const StageTime& s : stats_.stages) stats_.frameMs += s.ms;
+  stats_.frameMs = timer_.spanMs();
   gatherCounters();
   if (settings_.sorts()) reorder_->finishFrame(stats_, detailedStats_);
   if (settings_.heatmap != HeatmapView::None) heatmap_->readRange(settings_.heatmap, stats_);

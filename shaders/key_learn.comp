@@ -8,10 +8,15 @@
 // (which no thread changes during this pass) and summed with 32-bit integer atomics, 64-bit sums as two
 // words with a software carry (64-bit atomics are optional in Vulkan). Integer sums do not depend on the
 // order threads add in. key_merge.comp then folds each touched batch into its entry.
+// Lanes that share an entry (the usual case once rays are sorted) first sum their samples across the
+// subgroup and one lane adds the sums: far fewer atomics on hot entries, and the same integer totals.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_EXT_shader_subgroup_extended_types_int64 : require
 #include "key_types.h"
 #include "rng.glsl"
 #include "keys.glsl"
@@ -20,45 +25,67 @@ layout(local_size_x_id = 0) in;
 layout(constant_id = 1) const uint kStrategy = RL_KEY_AVERAGE;
 layout(push_constant, scalar) uniform Push { KeyLearnPush pc; };
 
+// Adds a 64-bit two's-complement value to a (lo, hi) pair of buffer words with a software carry. A macro:
+// GLSL atomics take only buffer members, which cannot be passed to functions.
+#define ATOMIC_ADD_64(LO_WORD, HI_WORD, VALUE)   \
+  {                                              \
+    uint64_t v_ = (VALUE);                       \
+    uint lo_ = uint(v_);                         \
+    uint hi_ = uint(v_ >> 32);                   \
+    uint old_ = atomicAdd(LO_WORD, lo_);         \
+    if (old_ + lo_ < old_) hi_ += 1u;            \
+    if (hi_ != 0u) atomicAdd(HI_WORD, hi_);      \
+  }
+
 void main() {
   uint i = gl_GlobalInvocationID.x;
-  if (i >= pc.count) return;
-  FrameBuf frame = FrameBuf(pc.frame);
-  GpuPathState state = frame.f.state[pc.stateSet];
-  if (state.alive.v[i] == 0u) return;
-  float t = frame.f.hits.t.v[i];
-  vec3 dir = state.direction.v[i].xyz;
-  if (!(t > 0.0 && t < 1e30) || !validDirection(dir)) return;
   GpuKeyParams params = KeyParamsBuf(pc.params).p;
   GpuLengthCache cache = params.cache;
-  int e = cacheEntry(cache, params.grid, cellOf(params.grid, state.origin.v[i].xyz), dir);
-  if (e < 0) return;
-  GpuCacheEntry entry = cache.entries.v[e];
-  float x = clampLength(t, cache.lengthMax);
-  if (kStrategy == RL_KEY_GAUSSIAN && entry.count >= RL_GAUSS_MIN_SAMPLES &&
-      abs(x - entry.mean) > cache.gaussOutlier * max(entry.sigma, cache.sigmaFloor)) {
-    atomicAdd(cache.touched.v[1], 1u);
-    return;
+  int e = -1;
+  int64_t q = 0l;
+  bool outlier = false;
+  if (i < pc.count) {
+    FrameBuf frame = FrameBuf(pc.frame);
+    GpuPathState state = frame.f.state[pc.stateSet];
+    float t = frame.f.hits.t.v[i];
+    vec3 dir = state.direction.v[i].xyz;
+    if (state.alive.v[i] != 0u && t > 0.0 && t < 1e30 && validDirection(dir)) {
+      e = cacheEntry(cache, params.grid, cellOf(params.grid, state.origin.v[i].xyz), dir);
+      if (e >= 0) {
+        GpuCacheEntry entry = cache.entries.v[e];
+        float x = clampLength(t, cache.lengthMax);
+        if (kStrategy == RL_KEY_GAUSSIAN && entry.count >= RL_GAUSS_MIN_SAMPLES &&
+            abs(x - entry.mean) > cache.gaussOutlier * max(entry.sigma, cache.sigmaFloor)) {
+          outlier = true;
+          e = -1;
+        } else {
+          // Quantize relative to the shift key_merge.comp will use: |x - shift| <= lengthMax, so |q| <= 2^P.
+          float shift = entry.count > 0u ? entry.mean : clampLength(params.fixedLength, cache.lengthMax);
+          float qMax = cache.lengthMax * cache.invUnit;
+          q = int64_t(int(clamp(round((x - shift) * cache.invUnit), -qMax, qMax)));
+        }
+      }
+    }
   }
+  uint outliers = subgroupAdd(outlier ? 1u : 0u);
+  if (subgroupElect() && outliers > 0u) atomicAdd(cache.touched.v[1], outliers);
 
-  // Quantize relative to the shift key_merge.comp will use: |x - shift| <= lengthMax, so |q| <= 2^P.
-  float shift = entry.count > 0u ? entry.mean : clampLength(params.fixedLength, cache.lengthMax);
-  float qMax = cache.lengthMax * cache.invUnit;
-  int q = int(clamp(round((x - shift) * cache.invUnit), -qMax, qMax));
-
-  if (atomicAdd(cache.batches.v[e].count, 1u) == 0u) {
-    uint slot = atomicAdd(cache.touched.v[0], 1u);
-    cache.touched.v[2u + slot] = uint(e);
+  // Peel one entry per iteration: the first pending lane's entry, summed over every lane that has it.
+  bool pending = e >= 0;
+  while (pending) {
+    int leader = subgroupBroadcastFirst(e);
+    bool mine = e == leader;
+    uint n = subgroupAdd(mine ? 1u : 0u);
+    int64_t sum = subgroupAdd(mine ? q : 0l);
+    int64_t sumSq = subgroupAdd(mine ? q * q : 0l);
+    if (subgroupElect()) {
+      if (atomicAdd(cache.batches.v[leader].count, n) == 0u) {
+        uint slot = atomicAdd(cache.touched.v[0], 1u);
+        cache.touched.v[2u + slot] = uint(leader);
+      }
+      ATOMIC_ADD_64(cache.batches.v[leader].sumLo, cache.batches.v[leader].sumHi, uint64_t(sum));
+      ATOMIC_ADD_64(cache.batches.v[leader].sqLo, cache.batches.v[leader].sqHi, uint64_t(sumSq));
+    }
+    if (mine) pending = false;
   }
-  uint lo = uint(q);
-  uint hi = q < 0 ? 0xFFFFFFFFu : 0u;  // sign extension to 64 bits
-  uint old = atomicAdd(cache.batches.v[e].sumLo, lo);
-  if (old + lo < old) hi += 1u;        // carry out of the low word
-  if (hi != 0u) atomicAdd(cache.batches.v[e].sumHi, hi);
-  uint64_t q2 = uint64_t(int64_t(q) * int64_t(q));
-  lo = uint(q2);
-  hi = uint(q2 >> 32);
-  old = atomicAdd(cache.batches.v[e].sqLo, lo);
-  if (old + lo < old) hi += 1u;
-  if (hi != 0u) atomicAdd(cache.batches.v[e].sqHi, hi);
 }
