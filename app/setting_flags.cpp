@@ -45,30 +45,8 @@ bool isNonSettingFlag(const std::string& name) {
   return name == "device" || name == "validate" || name == "out" || name == "stats";
 }
 
-// Parses one flag with the CLI's parser. Until cli_options learns --heatmap and --heatmap-bounce, they
-// are validated here with the same parsers and limits (remove this once parseCommonOptions has them).
-Settings parseOne(const std::string& name, const std::vector<std::string>& args) {
-  try {
-    return parseCommonOptions(args).settings;
-  } catch (const UsageError&) {
-    Settings s;
-    if (name == "heatmap" && args.size() == 2) {
-      std::optional<HeatmapView> v = parseHeatmapView(args[1]);
-      if (!v) {
-        std::string names;
-        for (HeatmapView h : allHeatmapViews()) names += (names.empty() ? "" : "|") + toString(h);
-        throw UsageError("--heatmap must be one of " + names + ", got '" + args[1] + "'");
-      }
-      s.heatmap = *v;
-      return s;
-    }
-    if (name == "heatmap-bounce" && args.size() == 2) {
-      s.heatmapBounce = parseUint("--heatmap-bounce", args[1], 0, SettingLimits::kMaxBounces - 1);
-      return s;
-    }
-    throw;
-  }
-}
+// Parses one flag with the CLI's own parser, so a script's `set` is validated exactly as the flag is.
+Settings parseFlags(const std::vector<std::string>& args) { return parseCommonOptions(args).settings; }
 
 bool parseSwitchValue(const std::string& name, const std::string& value) {
   if (value == "on" || value == "true" || value == "1") return true;
@@ -90,12 +68,12 @@ void applySettingFlag(Settings& settings, const std::string& name, const std::st
     return;
   }
   if (isSwitch(name)) {
-    Settings parsed = parseOne(name, parseSwitchValue(name, value) ? std::vector<std::string>{"--" + name}
+    Settings parsed = parseFlags(parseSwitchValue(name, value) ? std::vector<std::string>{"--" + name}
                                                                    : std::vector<std::string>{});
     it->second(settings, parsed);
     return;
   }
-  it->second(settings, parseOne(name, {"--" + name, value}));
+  it->second(settings, parseFlags({"--" + name, value}));
 }
 
 Settings overlaySettingFlags(const Settings& base, const std::vector<std::string>& args, bool skipUnknown) {

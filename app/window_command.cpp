@@ -19,7 +19,7 @@ namespace {
 const char* const kWindowHelp =
     "window options:\n"
     "  --size WxH             window size (default 1280x720, or as last closed)\n"
-    "  --scale S              render resolution / window resolution, 0.1..2 (default 1; 0.25 on CPU devices)\n"
+    "  --scale S              render resolution / window resolution, 0.05..2 (default 1; 0.25 on CPU devices)\n"
     "  --settings FILE.json   start from a screenshot's sidecar (its settings and camera)\n"
     "  --script FILE          run UI actions from FILE, then quit (see app/ui_script.h)\n"
     "  --screenshot-dir DIR   where F12 / Shift+F12 save (default ./screenshots)\n"
@@ -49,7 +49,7 @@ WindowOptions parseWindowOptions(const std::vector<std::string>& args) {
     else if (a == "--screenshot-dir") o.screenshotDir = valueOf(rest, i);
     else if (a == "--ini") o.iniPath = valueOf(rest, i), iniGiven = true;
     else if (a == "--reset") o.reset = true;
-    else if (a == "--scale") o.scale = parseFloat("--scale", valueOf(rest, i), 0.1f, 2.0f);
+    else if (a == "--scale") o.scale = parseFloat("--scale", valueOf(rest, i), 0.05f, 2.0f);
     else throw UsageError("unknown option '" + a + "'");
   }
   for (size_t i = 0; i < args.size(); ++i) {

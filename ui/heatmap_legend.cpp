@@ -17,6 +17,7 @@ void swatch(ImU32 color, const char* text) {
   ImVec2 p = ImGui::GetCursorScreenPos();
   float h = ImGui::GetTextLineHeight();
   ImGui::GetWindowDrawList()->AddRectFilled(p, ImVec2(p.x + h, p.y + h), color);
+  ImGui::GetWindowDrawList()->AddRect(p, ImVec2(p.x + h, p.y + h), IM_COL32(150, 150, 150, 255));
   ImGui::Dummy(ImVec2(h, h));
   ImGui::SameLine();
   ImGui::TextUnformatted(text);
@@ -83,13 +84,14 @@ void drawHeatmapLegend(const Settings& settings, const FrameStats& stats) {
     ImGui::Text("%s, bounce %u", toString(settings.heatmap).c_str(), settings.heatmapBounce);
     ImGui::TextDisabled("%s", heatmapDescription(settings.heatmap));
     if (settings.heatmap == HeatmapView::CellHit) {
-      swatch(IM_COL32(40, 200, 60, 255), "hit: estimated cell is the actual cell");
-      swatch(IM_COL32(220, 50, 40, 255), "miss");
+      swatch(IM_COL32(51, 204, 77, 255), "hit: estimated cell is the actual cell");
+      swatch(IM_COL32(217, 51, 51, 255), "miss");
     } else if (settings.heatmap == HeatmapView::SortKey) {
       ImGui::Text("keys %.6g .. %.6g", stats.heatmapMin, stats.heatmapMax);
     } else {
       drawRamp(stats);
     }
+    swatch(IM_COL32(31, 31, 31, 255), "no path at this bounce");
   }
   ImGui::End();
 }

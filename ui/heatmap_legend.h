@@ -12,7 +12,7 @@ namespace raylab {
 void drawHeatmapLegend(const Settings& settings, const FrameStats& stats);
 
 // The ramp drawn in the legend for scalar heatmaps (t in [0, 1]): Turbo, by its polynomial
-// approximation; the heatmap shader must use the same one so the legend reads the image.
+// approximation, as shaders/heatmap_colorize.comp (keep the two in step so the legend reads the image).
 glm::vec3 heatmapRamp(float t);
 
 // One line on what a view shows, for the legend and the help.

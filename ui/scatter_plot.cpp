@@ -37,7 +37,10 @@ void drawScatter(const char* id, const std::vector<ScatterPoint>& points, const 
     ImVec2 at(lo.x + static_cast<float>(p.x / xMax) * (hi.x - lo.x), lo.y - static_cast<float>(p.y / yTop) * (lo.y - hi.y));
     ImU32 color = p.highlight ? IM_COL32(255, 210, 60, 255) : IM_COL32(120, 190, 255, 255);
     draw->AddCircleFilled(at, p.highlight ? 5.0f : 3.5f, color);
-    draw->AddText(ImVec2(at.x + 5, at.y - line), color, p.label.c_str());
+    // Labels go left of points near the right edge, so they stay inside the plot.
+    float labelWidth = ImGui::CalcTextSize(p.label.c_str()).x;
+    float x = at.x + 5 + labelWidth > hi.x ? at.x - 5 - labelWidth : at.x + 5;
+    draw->AddText(ImVec2(x, at.y - line), color, p.label.c_str());
   }
   ImGui::PopID();
 }

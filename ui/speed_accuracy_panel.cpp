@@ -1,5 +1,7 @@
 #include "ui/speed_accuracy_panel.h"
 
+#include <algorithm>
+
 #include <imgui.h>
 
 #include "ui/scatter_plot.h"
@@ -46,20 +48,32 @@ std::vector<ScatterPoint> scatter(const SpeedAccuracyBook& book, const Settings&
 
 void drawSpeedAccuracyPanel(const SpeedAccuracyBook& book, const Settings& settings) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 370, display.y - 40), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, 320), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImVec2(display.x - 370, 450), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, std::max(100.0f, display.y - 460)), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Speed vs accuracy")) {
     ImGui::End();
     return;
   }
-  drawTable(book, settings);
   const StrategyPoint* current = book.find(settings.strategy);
   if (!current || current->cellHitRate < 0.0)
     ImGui::TextWrapped("%s: no prediction accuracy (needs a spatial key, sorting and detailed stats)",
                        toString(settings.strategy).c_str());
-  drawScatter("trace", scatter(book, settings, false), "trace ms", "cell hit rate", 1.0, 110);
-  drawScatter("frame", scatter(book, settings, true), "frame ms", "cell hit rate", 1.0, 110);
+  if (ImGui::BeginTabBar("views")) {
+    const float plotHeight = std::max(80.0f, ImGui::GetContentRegionAvail().y - ImGui::GetFrameHeightWithSpacing());
+    if (ImGui::BeginTabItem("vs trace time")) {
+      drawScatter("trace", scatter(book, settings, false), "trace ms", "cell hit rate", 1.0, plotHeight);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("vs frame time")) {
+      drawScatter("frame", scatter(book, settings, true), "frame ms", "cell hit rate", 1.0, plotHeight);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("table")) {
+      drawTable(book, settings);
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+  }
   ImGui::End();
 }
 

@@ -33,14 +33,14 @@ void plot(const char* label, const std::vector<float>& values, ImU32 color, floa
   std::snprintf(overlay, sizeof(overlay), "%s %.2f ms", label, values.back());
   ImGui::PushStyleColor(ImGuiCol_PlotLines, color);
   ImGui::PlotLines((std::string("##") + label).c_str(), values.data(), static_cast<int>(values.size()), 0, overlay,
-                   0.0f, hi > 0.0f ? hi * 1.1f : 1.0f, ImVec2(-1, height));
+                   0.0f, hi > 0.0f ? hi * 1.1f : 1.0f, ImVec2(ImGui::GetContentRegionAvail().x, height));
   ImGui::PopStyleColor();
 }
 
 void drawHistory(const TimingHistory& history) {
-  plot("frame (GPU)", history.frameMs(), IM_COL32(255, 255, 255, 255), 50);
-  plot("frame (wall)", history.wallMs(), IM_COL32(180, 180, 180, 255), 30);
-  for (const std::string& stage : history.stages()) plot(stage.c_str(), history.stageMs(stage), stageColor(stage), 24);
+  plot("frame (GPU)", history.frameMs(), IM_COL32(255, 255, 255, 255), 40);
+  plot("frame (wall)", history.wallMs(), IM_COL32(180, 180, 180, 255), 20);
+  for (const std::string& stage : history.stages()) plot(stage.c_str(), history.stageMs(stage), stageColor(stage), 20);
 }
 
 // Per row (a bounce, or the stages outside the bounce loop) the stages' times laid end to end, on one
@@ -107,7 +107,7 @@ void drawMemory(const FrameStats& s) {
 void drawTimingPanel(const TimingHistory& history, const FrameStats& stats, Settings& settings, ViewOptions& view) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x - 370, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, std::min(560.0f, display.y - 60)), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, std::min(430.0f, display.y - 60)), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Timing")) {
     ImGui::End();
     return;
@@ -119,8 +119,8 @@ void drawTimingPanel(const TimingHistory& history, const FrameStats& stats, Sett
   ImGui::SameLine();
   ImGui::Checkbox("count SIMT lanes", &settings.countSimt);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("subgroup ballots in traversal: slower, not for timing");
-  if (ImGui::CollapsingHeader("History", ImGuiTreeNodeFlags_DefaultOpen)) drawHistory(history);
   if (ImGui::CollapsingHeader("Stages per bounce", ImGuiTreeNodeFlags_DefaultOpen)) drawStackedBars(stats);
+  if (ImGui::CollapsingHeader("History (ms per frame)", ImGuiTreeNodeFlags_DefaultOpen)) drawHistory(history);
   if (ImGui::CollapsingHeader("Coherence", ImGuiTreeNodeFlags_DefaultOpen)) drawBounceTable(stats);
   if (ImGui::CollapsingHeader("Memory")) drawMemory(stats);
   ImGui::End();

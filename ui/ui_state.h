@@ -15,7 +15,7 @@ struct ViewOptions {
   bool detailedStats = true;     // per-bounce readbacks: virtual warp efficiency, prediction accuracy
   bool showPanels = true;        // Tab hides them to look at the render alone
   bool showHelp = false;         // F1
-  static constexpr float kMinScale = 0.1f;
+  static constexpr float kMinScale = 0.05f;
   static constexpr float kMaxScale = 2.0f;
 };
 

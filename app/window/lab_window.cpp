@@ -1,5 +1,6 @@
 #include "app/window/lab_window.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -34,7 +35,7 @@ bool sameCamera(const Viewpoint& a, const Viewpoint& b) {
 LabWindow::LabWindow(const WindowOptions& options)
     : options_(options), imgui_(options.iniPath, !options.reset, &ini_) {
   chooseStartSettings();
-  scene_ = loadSceneForSettings(settings_);
+  loadStartScene();
   if (options_.sidecar && options_.sidecar->camera) scene_.view = *options_.sidecar->camera;
   if (!options_.script.empty()) script_.emplace(loadScript(options_.script));
   openWindow();
@@ -61,6 +62,23 @@ void LabWindow::chooseStartSettings() {
   if (ini_.loadedDetailed) view_.detailedStats = *ini_.loadedDetailed;
   ini_.settings = &settings_;
   ini_.view = &view_;
+}
+
+// A scene named on the command line (or in --settings) must load; one remembered in imgui.ini may have
+// gone away since, and then the lab opens the default scene and says why in the scene panel.
+void LabWindow::loadStartScene() {
+  bool named = options_.sidecar || std::find(options_.renderArgs.begin(), options_.renderArgs.end(), "--scene") !=
+                                       options_.renderArgs.end();
+  try {
+    scene_ = loadSceneForSettings(settings_);
+  } catch (const std::exception& e) {
+    if (named || settings_.scene == Settings{}.scene) throw;
+    cameraModel_.sceneError = "remembered scene " + settings_.scene + ": " + e.what();
+    std::fprintf(stderr, "raylab: %s; opening %s\n", cameraModel_.sceneError.c_str(), Settings{}.scene.c_str());
+    settings_.scene = Settings{}.scene;
+    settings_.view.clear();
+    scene_ = loadSceneForSettings(settings_);
+  }
 }
 
 void LabWindow::openWindow() {

@@ -38,6 +38,7 @@ class LabWindow {
  private:
   // lab_window.cpp
   void chooseStartSettings();
+  void loadStartScene();
   void openWindow();
   bool frame();
   void recreateSwapchain();

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The interactive window under Xvfb, on the default device (lavapipe) with validation on: a script switches
-# through every key strategy and every heatmap view and takes both kinds of screenshot. The PNGs exist,
-# have the window's size, are not blank, and the one with the panels differs from the render alone; the
-# render's sidecar, loaded back (--settings), reproduces the render exactly.
+# through every key strategy and every heatmap view, resizes the window and takes both kinds of screenshot.
+# The PNGs exist, have the window's size, are not blank, and the one with the panels differs from the render
+# alone; the render's sidecar, loaded back (--settings), reproduces the render exactly.
 set -eu
 raylab="$1"
 repo="$2"
@@ -16,15 +16,16 @@ cd "$dir"
 export RAYLAB_VALIDATE=1
 xvfb() { timeout 120 xvfb-run -a -s "-screen 0 1280x720x24" "$raylab" "$@"; }
 
+printf 'quit\n' >quit.txt
+if env -u DISPLAY -u WAYLAND_DISPLAY "$raylab" --script quit.txt 2>&1 | grep -q "has no window"; then
+  echo "skip: this raylab was built without the window (RAYLAB_HEADLESS_ONLY)"
+  exit 0
+fi
 # The names come from the program itself: the render help lists the strategies, and a script with a wrong
 # heatmap is rejected with the list of views (before any window opens).
 strategies=$("$raylab" render --help | sed -n 's/.*--strategy \([a-z|-]*\).*/\1/p' | tr '|' ' ')
 printf 'set heatmap ?\n' >probe.txt
 probe=$("$raylab" --script probe.txt 2>&1 || true)
-if grep -q "has no window" <<<"$probe"; then
-  echo "skip: this raylab was built without the window (RAYLAB_HEADLESS_ONLY)"
-  exit 0
-fi
 heatmaps=$(sed -n 's/.*must be one of \([a-z|-]*\).*/\1/p' <<<"$probe" | tr '|' ' ')
 [ -n "$strategies" ] && [ -n "$heatmaps" ] || { echo "FAIL: cannot list strategies/heatmaps"; echo "$probe"; exit 1; }
 
@@ -34,6 +35,7 @@ heatmaps=$(sed -n 's/.*must be one of \([a-z|-]*\).*/\1/p' <<<"$probe" | tr '|' 
   echo "set strategy gaussian"
   for h in $heatmaps; do printf 'set heatmap %s\nwait 1\nscreenshot heat-%s\n' "$h" "$h"; done
   echo "set heatmap none"
+  printf 'set size 200x120\nwait 2\nscreenshot-window resized\nset size 160x90\nwait 1\n'  # resizing
   echo "camera 0.3 1.6 9 0 1.2 0"
   echo "wait 2"
   echo "screenshot render"
@@ -55,6 +57,24 @@ xvfb "${size[@]}" --settings shots/render.json --script again.txt >again.log 2>&
 headless=skipped
 if "$raylab" render --settings shots/render.json --out headless.png >render.log 2>&1; then headless=headless.png
 elif ! grep -q "unknown option '--settings'" render.log; then echo "FAIL: render --settings"; cat render.log; exit 1; fi
+
+# imgui.ini keeps the last settings: a run that changes them, one that comes back to them, one with --reset.
+printf 'set strategy ema\nwait 1\nquit\n' >ini1.txt
+printf 'wait 1\nscreenshot remembered\nquit\n' >ini2.txt
+xvfb "${size[@]}" --ini lab.ini --script ini1.txt >ini.log 2>&1 || { echo "FAIL: ini run 1"; tail ini.log; exit 1; }
+grep -q '"strategy":"ema"' lab.ini || { echo "FAIL: imgui.ini does not keep the settings"; cat lab.ini; exit 1; }
+xvfb "${size[@]}" --ini lab.ini --script ini2.txt >>ini.log 2>&1 || { echo "FAIL: ini run 2"; tail ini.log; exit 1; }
+mv shots/remembered.json remembered.json
+xvfb "${size[@]}" --ini lab.ini --reset --script ini2.txt >>ini.log 2>&1 || { echo "FAIL: ini run 3"; tail ini.log; exit 1; }
+python3 -c "
+import json
+assert json.load(open('remembered.json'))['settings']['strategy'] == 'ema', 'imgui.ini settings not restored'
+assert json.load(open('shots/remembered.json'))['settings']['strategy'] == 'none', '--reset did not start clean'"
+
+# Without a display the window mode says so and renders headless, pointing to `raylab render`.
+out=$(env -u DISPLAY -u WAYLAND_DISPLAY "$raylab" --size 32x18 --out nodisplay.png 2>&1) || { echo "FAIL: no-display fallback"; echo "$out"; exit 1; }
+grep -q "no display" <<<"$out" && grep -q "raylab render" <<<"$out" && [ -s nodisplay.png ] ||
+  { echo "FAIL: no-display message or image missing"; echo "$out"; exit 1; }
 
 python3 - "$strategies" "$heatmaps" "$headless" <<'PY'
 import json, struct, sys, zlib
@@ -103,6 +123,8 @@ for name, (w, h, px) in shots.items():
     sidecar = json.load(open('shots/%s.json' % name))
     for key in ('settings', 'stats', 'device', 'git_revision', 'camera'):
         assert key in sidecar, '%s.json has no %s' % (name, key)
+resized = read_png('shots/resized.png')
+assert resized[:2] == (200, 120), 'after resizing the window shot is %dx%d, not 200x120' % resized[:2]
 assert variance(shots['render'][2]) > 1.0, 'the render is blank'
 assert variance(shots['window'][2]) > 1.0, 'the window shot is blank'
 assert shots['window'][2] != shots['render'][2], 'the window shot shows no panels'
