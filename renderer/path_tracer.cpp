@@ -146,6 +146,12 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
     tonemap_.dispatchThreads(cmd, push, buffers_->pixelCount);
     bufferBarrier(cmd);
   }
+  // Counters and readbacks are read by the host after the frame's fence.
+  VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+  toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
 }
 
 uint32_t PathTracer::heatmapBounce() const { return std::min(settings_.heatmapBounce, settings_.bounces - 1); }
