@@ -92,6 +92,8 @@ bool haveDisplayVariable() {
 
 }  // namespace
 
+std::string windowOptionsHelp() { return kWindowHelp; }
+
 int runWindowCommand(const std::vector<std::string>& args) {
   if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
     std::printf("usage: raylab [options]\n%s%s", kWindowHelp, commonOptionsHelp().c_str());

@@ -148,10 +148,12 @@ TEST_F(UiSidecar, ReproducesTheImage) {
     write(c);
     std::vector<uint32_t> original = tracer.readImage();
 
-    Sidecar back = readSidecar(path_);
-    ASSERT_TRUE(back.camera);
-    PathTracer again(ctx(), scene, back.settings, *back.camera);
-    for (uint32_t f = 0; f < back.settings.frames; ++f) again.renderFrame();
+    // What `raylab render --settings FILE` does (see app/sidecar.h).
+    std::optional<Viewpoint> camera;
+    CommonOptions options = parseOptionsWithSettingsFile({"--settings", path_}, &camera);
+    ASSERT_TRUE(camera);
+    PathTracer again(ctx(), scene, options.settings, *camera);
+    for (uint32_t f = 0; f < options.settings.frames; ++f) again.renderFrame();
     EXPECT_EQ(again.readImage(), original);
   }
 }

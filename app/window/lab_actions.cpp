@@ -55,7 +55,8 @@ bool LabWindow::loadScene(const std::string& nameOrPath, std::string* error) {
     tracer_ = std::move(tracer);
     scene_ = std::move(loaded);
   } catch (const std::exception& e) {  // SceneLoadError, UsageError, VulkanError (e.g. out of memory)
-    *error = nameOrPath + ": " + e.what();
+    *error = e.what();  // loaders name the file themselves; say which scene otherwise
+    if (error->find(nameOrPath) == std::string::npos) *error = nameOrPath + ": " + *error;
     return false;
   }
   settings_.scene = nameOrPath;

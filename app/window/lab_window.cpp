@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 
 #include <GLFW/glfw3.h>
@@ -19,6 +20,10 @@ namespace raylab {
 namespace {
 
 constexpr int kDefaultWidth = 1280, kDefaultHeight = 720;
+
+// Ctrl+C or a polite kill closes the window as its close button would, so imgui.ini is still written.
+volatile std::sig_atomic_t stopRequested = 0;
+void requestStop(int) { stopRequested = 1; }
 
 // Fly speed: a quarter of the scene's diagonal per second crosses any scene in a few seconds.
 float speedFor(const Scene& scene) {
@@ -127,8 +132,11 @@ void LabWindow::recreateSwapchain() {
 int LabWindow::run() {
   lastFrame_ = std::chrono::steady_clock::now();
   auto started = lastFrame_;
-  while (frame()) {
+  auto oldInt = std::signal(SIGINT, requestStop), oldTerm = std::signal(SIGTERM, requestStop);
+  while (!stopRequested && frame()) {
   }
+  std::signal(SIGINT, oldInt);
+  std::signal(SIGTERM, oldTerm);
   loopMsTotal_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   vkDeviceWaitIdle(ctx_->device());
   printSummary();
