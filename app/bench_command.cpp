@@ -102,7 +102,8 @@ int runBenchCommand(const std::vector<std::string>& args) {
       std::vector<glm::vec3> reference = renderReference(tracer, caseSettings, plan.referenceSpp);
       for (const BenchCell* cell : cells) {
         ++done;
-        CellResult r = measureCell(tracer, cell->settings, plan.warmupFrames, plan.timedFrames, reference);
+        CellResult r = measureCell(tracer, cell->settings, plan.warmupFrames, plan.timedFrames, reference,
+                                   plan.detailFrame);
         writeCsvRow(csv, ctx, *cell, loaded.view.name, r);
         nlohmann::json row = {{"device", toJson(ctx.info())}, {"git_revision", RAYLAB_GIT_REV},
                               {"view", loaded.view.name},      {"label", cell->label},

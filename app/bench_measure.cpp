@@ -18,7 +18,7 @@ Spread spreadOf(std::vector<double> v) {
 }
 
 CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t warmup, uint32_t timed,
-                       const std::vector<glm::vec3>& reference) {
+                       const std::vector<glm::vec3>& reference, bool detailFrame) {
   CellResult r;
   tracer.setDetailedStats(false);
   tracer.applySettings(settings);
@@ -52,6 +52,7 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
   for (auto& [name, v] : stages) r.stageMs[name] = spreadOf(v);
   r.raysPerSecond = cumulative > 0.0 ? rays / (cumulative * 1e-3) : 0.0;
 
+  if (!detailFrame) return r;
   // Counting and readbacks slow the frame down, so they get their own frame, outside the timed ones.
   Settings counting = settings;
   counting.countSimt = true;

@@ -30,7 +30,7 @@ struct CellResult {
 };
 
 CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t warmup, uint32_t timed,
-                       const std::vector<glm::vec3>& reference);
+                       const std::vector<glm::vec3>& reference, bool detailFrame);
 
 nlohmann::json toJson(const CellResult& r);
 

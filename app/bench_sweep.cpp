@@ -81,6 +81,10 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
   plan.common = parseCommonOptions(args, &rest);
   for (size_t i = 0; i < rest.size(); ++i) {
     const std::string& flag = rest[i];
+    if (flag == "--no-detail") {
+      plan.detailFrame = false;
+      continue;
+    }
     if (i + 1 >= rest.size()) throw UsageError(flag + " needs a value");
     const std::string& v = rest[++i];
     if (flag == "--cases") caseList = splitList(v);
@@ -167,6 +171,7 @@ std::string benchHelp() {
          "  --timed-frames N          measured frames per cell (default 8)\n"
          "  --warmup N                unmeasured frames first (default 2)\n"
          "  --reference-spp N         samples of the megakernel reference image (default 64)\n"
+         "  --no-detail               skip the untimed counting frame (no SIMT/accuracy figures)\n"
          "  --out-dir DIR             results.csv, results.jsonl and charts (default bench-out)\n"
          "  --sweep FILE              the same flags as `name = value` lines\n"
          "The megakernel and the unsorted wavefront are always measured.\n";

@@ -27,6 +27,7 @@ struct BenchPlan {
   uint32_t timedFrames = 8;
   uint32_t warmupFrames = 2;
   uint32_t referenceSpp = 64;
+  bool detailFrame = true;  // one untimed counting/readback frame per cell (SIMT, warp efficiency, accuracy)
   std::string outDir = "bench-out";
 };
 

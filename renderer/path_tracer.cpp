@@ -269,6 +269,7 @@ void PathTracer::gatherCounters() {
     stats_.raysTraced += bs.rays;
     stats_.bounces.push_back(bs);
   }
+  stepsReadback_.clear();  // host-visible copies are only kept for the frame that asked for them
 }
 
 std::vector<uint32_t> PathTracer::readImage() const {
