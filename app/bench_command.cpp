@@ -69,7 +69,7 @@ void writeCsvRow(std::ofstream& csv, const VulkanContext& ctx, const BenchCell& 
       << meanOf(b, &BounceStats::predictionErrorMean, true) << ","
       << meanOf(b, &BounceStats::predictionErrorMedian, true) << "," << meanOf(b, &BounceStats::cellHitRate, true)
       << "," << r.detailed.keyBits << "," << r.detailed.lengthCacheBytes << ","
-      << (r.errorCurveRelMse.empty() ? -1.0 : r.errorCurveRelMse.back()) << "\n";
+      << r.finalRelMse << "\n";
   csv.flush();
 }
 
@@ -100,10 +100,11 @@ int runBenchCommand(const std::vector<std::string>& args) {
       LoadedScene loaded = loadSceneForSettings(caseSettings);
       PathTracer tracer(ctx, loaded.scene, caseSettings, loaded.view);
       std::vector<glm::vec3> reference = renderReference(tracer, caseSettings, plan.referenceSpp);
+      std::vector<double> errorCurve = measureErrorCurve(tracer, caseSettings, plan.timedFrames, reference);
       for (const BenchCell* cell : cells) {
         ++done;
         CellResult r = measureCell(tracer, cell->settings, plan.warmupFrames, plan.timedFrames, reference,
-                                   plan.detailFrame);
+                                   errorCurve, plan.detailFrame);
         writeCsvRow(csv, ctx, *cell, loaded.view.name, r);
         nlohmann::json row = {{"device", toJson(ctx.info())}, {"git_revision", RAYLAB_GIT_REV},
                               {"view", loaded.view.name},      {"label", cell->label},

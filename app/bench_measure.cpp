@@ -1,6 +1,7 @@
 #include "app/bench_measure.h"
 
 #include <algorithm>
+#include <chrono>
 
 #include "renderer/image_metrics.h"
 #include "renderer/stats_json.h"
@@ -17,23 +18,43 @@ Spread spreadOf(std::vector<double> v) {
   return s;
 }
 
+std::vector<double> measureErrorCurve(PathTracer& tracer, const Settings& settings, uint32_t frames,
+                                      const std::vector<glm::vec3>& reference) {
+  Settings plain = settings;
+  plain.kernel = Kernel::Wavefront;
+  plain.strategy = KeyStrategy::None;
+  tracer.setDetailedStats(false);
+  tracer.applySettings(plain);
+  tracer.restartAccumulation();
+  std::vector<double> curve;
+  for (uint32_t f = 0; f < frames; ++f) {
+    tracer.renderFrame();
+    curve.push_back(relativeMse(tracer.readRadiance(), reference));
+  }
+  return curve;
+}
+
 CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t warmup, uint32_t timed,
-                       const std::vector<glm::vec3>& reference, bool detailFrame) {
+                       const std::vector<glm::vec3>& reference, const std::vector<double>& errorCurve,
+                       bool detailFrame) {
   CellResult r;
   tracer.setDetailedStats(false);
   tracer.applySettings(settings);
-  for (uint32_t f = 0; f < warmup; ++f) tracer.renderFrame();
+  auto start = std::chrono::steady_clock::now();
+  for (uint32_t f = 0; f < warmup || std::chrono::steady_clock::now() - start < std::chrono::milliseconds(500); ++f)
+    tracer.renderFrame();
   tracer.restartAccumulation();
 
   std::vector<double> frame, wall, traceLater;
   std::map<std::string, std::vector<double>> stages;
-  double cumulative = 0.0;
+  double total = 0.0;
   uint64_t rays = 0;
   for (uint32_t f = 0; f < timed; ++f) {
     const FrameStats& st = tracer.renderFrame();
     frame.push_back(st.frameMs);
     wall.push_back(st.wallMs);
     rays += st.raysTraced;
+    total += st.frameMs > 0.0 ? st.frameMs : st.wallMs;
     std::map<std::string, double> perStage;
     double later = 0.0;
     for (const StageTime& s : st.stages) {
@@ -42,15 +63,17 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
     }
     for (const auto& [name, ms] : perStage) stages[name].push_back(ms);
     traceLater.push_back(later);
-    cumulative += st.frameMs > 0.0 ? st.frameMs : st.wallMs;
-    r.errorCurveMs.push_back(cumulative);
-    r.errorCurveRelMse.push_back(reference.empty() ? -1.0 : relativeMse(tracer.readRadiance(), reference));
   }
   r.frameMs = spreadOf(frame);
   r.wallMs = spreadOf(wall);
   r.traceAfterFirstMs = spreadOf(traceLater);
   for (auto& [name, v] : stages) r.stageMs[name] = spreadOf(v);
-  r.raysPerSecond = cumulative > 0.0 ? rays / (cumulative * 1e-3) : 0.0;
+  r.raysPerSecond = total > 0.0 ? rays / (total * 1e-3) : 0.0;
+  r.finalRelMse = reference.empty() ? -1.0 : relativeMse(tracer.readRadiance(), reference);
+  for (size_t k = 0; k < errorCurve.size(); ++k) {
+    r.errorCurveMs.push_back(double(k + 1) * r.frameMs.median);
+    r.errorCurveRelMse.push_back(errorCurve[k]);
+  }
 
   if (!detailFrame) return r;
   // Counting and readbacks slow the frame down, so they get their own frame, outside the timed ones.
@@ -75,6 +98,7 @@ nlohmann::json toJson(const CellResult& r) {
           {"rays_per_second", r.raysPerSecond},
           {"error_curve_ms", r.errorCurveMs},
           {"error_curve_rel_mse", r.errorCurveRelMse},
+          {"final_rel_mse", r.finalRelMse},
           {"detailed_frame", toJson(r.detailed)}};
 }
 

@@ -23,14 +23,24 @@ struct CellResult {
   Spread wallMs;
   std::map<std::string, Spread> stageMs;  // per stage name, summed over bounces
   Spread traceAfterFirstMs;               // trace stage, bounces >= 1
-  std::vector<double> errorCurveMs;       // cumulative GPU ms after each timed frame
-  std::vector<double> errorCurveRelMse;   // relative MSE against the reference after each timed frame
+  std::vector<double> errorCurveMs;       // k times the median frame time, k = 1 .. timed frames
+  std::vector<double> errorCurveRelMse;   // the case's relative MSE after k frames (same for every cell)
+  double finalRelMse = -1.0;              // this cell's own image after its timed frames
   double raysPerSecond = 0.0;
   FrameStats detailed;                    // the counting/detailed frame
 };
 
+// The timed frames run back to back with no readback between them: host gaps let a GPU drop its clocks,
+// which was seen to slow later cells of a sweep two- to fourfold on an H100. Warm-up lasts at least
+// `warmup` frames and half a second. `errorCurve` is the case's relative MSE after k frames: sorting never
+// changes the image (tested bit for bit), so every cell shares it and only its time axis differs.
 CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t warmup, uint32_t timed,
-                       const std::vector<glm::vec3>& reference, bool detailFrame);
+                       const std::vector<glm::vec3>& reference, const std::vector<double>& errorCurve,
+                       bool detailFrame);
+
+// Relative MSE against `reference` after each of `frames` frames of the unsorted wavefront (untimed).
+std::vector<double> measureErrorCurve(PathTracer& tracer, const Settings& settings, uint32_t frames,
+                                      const std::vector<glm::vec3>& reference);
 
 nlohmann::json toJson(const CellResult& r);
 
