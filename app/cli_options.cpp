@@ -146,6 +146,7 @@ std::string commonOptionsHelp() {
          "  --count-simt           count active subgroup lanes in traversal (slower; not for timing)\n"
          "  --device NAME          Vulkan device whose name contains NAME\n"
          "  --validate             enable the Khronos validation layer\n"
+         "  --settings FILE.json   start from a screenshot sidecar (its settings and camera)\n"
          "  --out FILE.png         output image\n"
          "  --stats FILE.json      per-frame statistics as JSON\n";
 }

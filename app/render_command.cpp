@@ -4,9 +4,11 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "app/cli_options.h"
 #include "app/scene_setup.h"
+#include "app/sidecar.h"
 #include "renderer/path_tracer.h"
 #include "renderer/png_writer.h"
 #include "renderer/stats_json.h"
@@ -28,9 +30,11 @@ int runRenderCommand(const std::vector<std::string>& args) {
     std::printf("usage: raylab render [options]\n%s", commonOptionsHelp().c_str());
     return kExitOk;
   }
+  std::optional<Viewpoint> sidecarCamera;  // --settings FILE.json: a screenshot sidecar's settings and camera
   try {
-    options = parseCommonOptions(args);
+    options = parseOptionsWithSettingsFile(args, &sidecarCamera);
     loaded = loadSceneForSettings(options.settings);
+    if (sidecarCamera) loaded.view = *sidecarCamera;
   } catch (const UsageError& e) {
     printUsage(e.what());
     return kExitUsage;

@@ -31,6 +31,8 @@ json toJson(const Settings& s) {
       // JSON has no infinity: an unbounded reset threshold is written as null.
       {"gauss_reset", std::isfinite(s.gaussReset) ? json(s.gaussReset) : json(nullptr)},
       {"count_simt", s.countSimt},
+      {"heatmap", toString(s.heatmap)},
+      {"heatmap_bounce", s.heatmapBounce},
   };
 }
 
@@ -68,6 +70,13 @@ Settings settingsFromJson(const json& j) {
     s.gaussOutlier = need("gauss_outlier").get<float>();
     s.gaussReset = need("gauss_reset").is_null() ? INFINITY : need("gauss_reset").get<float>();
     s.countSimt = need("count_simt").get<bool>();
+    // Older sidecars have no heatmap fields: they showed the render.
+    if (j.contains("heatmap")) {
+      auto view = parseHeatmapView(j.at("heatmap").get<std::string>());
+      if (!view) throw std::invalid_argument("settings: unknown heatmap view");
+      s.heatmap = *view;
+    }
+    if (j.contains("heatmap_bounce")) s.heatmapBounce = j.at("heatmap_bounce").get<uint32_t>();
   } catch (const json::exception& e) {
     throw std::invalid_argument(std::string("settings: ") + e.what());
   }

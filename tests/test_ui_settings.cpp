@@ -43,7 +43,7 @@ TEST(UiSettings, EveryRenderFlagIsOverlaid) {
   int seen = 0;
   for (std::sregex_iterator it(help.begin(), help.end(), flag), end; it != end; ++it, ++seen) {
     std::string name = (*it)[2];
-    if (name == "device" || name == "validate" || name == "out" || name == "stats") continue;
+    if (name == "device" || name == "validate" || name == "out" || name == "stats" || name == "settings") continue;
     EXPECT_NE(std::find(known.begin(), known.end(), name), known.end()) << "--" << name << " is not in setting_flags.cpp";
   }
   EXPECT_GT(seen, 15);
