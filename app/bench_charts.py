@@ -73,7 +73,8 @@ def speed_accuracy(rows, title, path):
             ax.scatter(num(r, key), num(r, "prediction_error_mean"))
             ax.annotate(r["label"].split(" ")[0], (num(r, key), num(r, "prediction_error_mean")), fontsize=7)
         for r in rows:
-            if r["strategy"] == "none":
+            # Baselines as vertical lines; the megakernel has no separate trace stage to place.
+            if r["strategy"] == "none" and not (key == "trace_ms" and r["kernel"] == "megakernel"):
                 ax.axvline(num(r, key), color="grey", ls="--", lw=0.8)
                 ax.text(num(r, key), ax.get_ylim()[1] if pts else 0, r["label"], fontsize=7, rotation=90, va="top")
         ax.set_xlabel(name)
