@@ -53,25 +53,10 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Setti
       timer_(ctx) {
   reorder_ = std::make_unique<FrameReorder>(ctx, scene, settings_, camera_.position,
                                             settings_.width * settings_.height * settings_.sppPerFrame);
-  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  poolInfo.queueFamilyIndex = ctx.queueFamily();
-  VK_CHECK(vkCreateCommandPool(ctx.device(), &poolInfo, nullptr, &commandPool_));
-  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  alloc.commandPool = commandPool_;
-  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  alloc.commandBufferCount = 1;
-  VK_CHECK(vkAllocateCommandBuffers(ctx.device(), &alloc, &commandBuffer_));
-  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VK_CHECK(vkCreateFence(ctx.device(), &fenceInfo, nullptr, &fence_));
   allocate();
 }
 
-PathTracer::~PathTracer() {
-  vkDeviceWaitIdle(ctx_.device());
-  vkDestroyFence(ctx_.device(), fence_, nullptr);
-  vkDestroyCommandPool(ctx_.device(), commandPool_, nullptr);
-}
+PathTracer::~PathTracer() { vkDeviceWaitIdle(ctx_.device()); }
 
 void PathTracer::allocate() {
   buffers_.reset();
@@ -215,18 +200,7 @@ void PathTracer::recordTraceCounters(VkCommandBuffer cmd, uint32_t bounce) {
 
 const FrameStats& PathTracer::renderFrame() {
   auto start = std::chrono::steady_clock::now();
-  VK_CHECK(vkResetCommandBuffer(commandBuffer_, 0));
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  VK_CHECK(vkBeginCommandBuffer(commandBuffer_, &begin));
-  recordFrame(commandBuffer_);
-  VK_CHECK(vkEndCommandBuffer(commandBuffer_));
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &commandBuffer_;
-  VK_CHECK(vkResetFences(ctx_.device(), 1, &fence_));
-  VK_CHECK(vkQueueSubmit(ctx_.queue(), 1, &submit, fence_));
-  VK_CHECK(vkWaitForFences(ctx_.device(), 1, &fence_, VK_TRUE, UINT64_MAX));
+  ctx_.submitAndWait([&](VkCommandBuffer cmd) { recordFrame(cmd); });
   double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return finishFrame(wall);
 }

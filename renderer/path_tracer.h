@@ -74,9 +74,6 @@ class PathTracer {
   bool detailedStats_ = false;
   std::vector<std::vector<uint32_t>> stepsPerBounce_;
   std::vector<GpuBuffer> stepsReadback_;
-  VkCommandPool commandPool_ = VK_NULL_HANDLE;
-  VkFence fence_ = VK_NULL_HANDLE;
-  VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
 };
 
 gpu::GpuCamera makeGpuCamera(const Viewpoint& v, uint32_t width, uint32_t height);
