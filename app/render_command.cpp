@@ -1,6 +1,7 @@
 #include "app/render_command.h"
 
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -64,7 +65,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
   }
   writePng(options.out, s.width, s.height, tracer.readImage());
   double seconds = (gpuMs > 0.0 ? gpuMs : wallMs) * 1e-3;
-  std::printf("wrote %s (%ux%u, %u spp, %s, %s) in %.2f s wall; %.3g rays/s\n", options.out.c_str(), s.width,
+  std::printf("wrote %s (%ux%u, %u spp, %s, %s) in %.2f s wall; %.3g rays/s\n",
+              std::filesystem::absolute(options.out).string().c_str(), s.width,
               s.height, tracer.accumulatedFrames() * s.sppPerFrame, loaded.view.name.c_str(),
               toString(s.kernel).c_str(), wallMs * 1e-3, seconds > 0 ? rays / seconds : 0.0);
 
