@@ -1,5 +1,8 @@
 #include "app/bench_sweep.h"
 
+#include "app/setting_flags.h"
+
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -39,24 +42,17 @@ struct Axes {
   std::vector<std::string> strategies{"all"}, sorts{"radix"}, grids{"auto"}, clamps{"off"}, resets{}, factors{};
 };
 
-// Applies one sweep-axis value to a Settings copy through the same parser as the CLI.
+// One sweep-axis value applied to a copy of the settings, with the CLI's validation ("clamp off" too).
 Settings withFlag(const Settings& base, const std::string& flag, const std::string& value) {
-  if (flag == "--clamp" && value == "off") {
-    Settings s = base;
-    s.clampToCamera = false;
-    return s;
-  }
-  std::vector<std::string> rest;
-  CommonOptions o = parseCommonOptions({flag, value}, &rest);
   Settings s = base;
-  const Settings& d = o.settings;
-  if (flag == "--strategy") s.strategy = d.strategy;
-  if (flag == "--sort") s.sort = d.sort;
-  if (flag == "--grid") s.grid = d.grid;
-  if (flag == "--clamp") { s.clampToCamera = true; s.clampDistance = d.clampDistance; }
-  if (flag == "--gauss-reset") s.gaussReset = d.gaussReset;
-  if (flag == "--fixed-factor") s.fixedFactor = d.fixedFactor;
+  applySettingFlag(s, flag.substr(2), value);
   return s;
+}
+
+std::string shortNumber(float v) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", v);
+  return text;
 }
 
 bool usesGrid(KeyStrategy s) { return s != KeyStrategy::None && s != KeyStrategy::DeadLast; }
@@ -148,9 +144,9 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
                                                          std::to_string(v.grid.cells.y) + "x" + std::to_string(v.grid.cells.z);
             label += v.clampToCamera ? " clamp=" + std::to_string(int(v.clampDistance)) : " clamp=off";
           }
-          if (!axes.resets.empty() && v.strategy == KeyStrategy::Gaussian) label += " reset=" + std::to_string(v.gaussReset);
+          if (!axes.resets.empty() && v.strategy == KeyStrategy::Gaussian) label += " reset=" + shortNumber(v.gaussReset);
           if (!axes.factors.empty() && (v.strategy == KeyStrategy::Fixed || v.strategy == KeyStrategy::TwoPoint))
-            label += " factor=" + std::to_string(v.fixedFactor);
+            label += " factor=" + shortNumber(v.fixedFactor);
           plan.cells.push_back({ci, v, label});
         }
       }
