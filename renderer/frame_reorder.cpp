@@ -8,18 +8,11 @@
 namespace raylab {
 namespace {
 
-struct ScatterPush {
+struct GatherPush {
   VkDeviceAddress frame;
-  VkDeviceAddress rank;
+  VkDeviceAddress sortedIndices;
   uint32_t stateSet;
   uint32_t count;
-};
-
-struct RankPush {
-  VkDeviceAddress sortedIndices;
-  VkDeviceAddress rank;
-  uint32_t count;
-  uint32_t pad0;
 };
 
 struct LiveCountPush {
@@ -55,8 +48,7 @@ FrameReorder::FrameReorder(const VulkanContext& ctx, const Scene& scene, const S
       cameraPos_(cameraPos),
       keys_(ctx, scene, cameraPos, settings, maxPaths),
       maxPaths_(maxPaths),
-      rank_(ctx, "reorder_rank", sizeof(RankPush), RL_PATH_GROUP_SIZE),
-      scatter_(ctx, "reorder", sizeof(ScatterPush), RL_PATH_GROUP_SIZE),
+      gather_(ctx, "reorder", sizeof(GatherPush), RL_PATH_GROUP_SIZE),
       liveCount_(ctx, "live_count", sizeof(LiveCountPush), RL_PATH_GROUP_SIZE) {
   configure(settings, cameraPos);
 }
@@ -124,12 +116,8 @@ uint32_t FrameReorder::recordSortAndGather(VkCommandBuffer cmd, const PathBuffer
   LiveCountPush live{buffers.keys.address(), buffers.live.address(), n, 0};
   liveCount_.dispatchThreads(cmd, live, n);
   computeBarrier(cmd);
-  // The sorted keys are spent once the live count is known: their buffer holds the inverse permutation.
-  RankPush rank{buffers.values.address(), buffers.keys.address(), n, 0};
-  rank_.dispatchThreads(cmd, rank, n);
-  computeBarrier(cmd);
-  ScatterPush scatter{buffers.frameBlock.address(), buffers.keys.address(), stateSet, n};
-  scatter_.dispatchThreads(cmd, scatter, n);
+  GatherPush gather{buffers.frameBlock.address(), buffers.values.address(), stateSet, n};
+  gather_.dispatchThreads(cmd, gather, n);
   computeBarrier(cmd);
   return 1u - stateSet;
 }

@@ -1,5 +1,5 @@
 // Everything between shade and the next trace when sorting is on: sort keys (KeyStage), the GPU sort, the
-// live-prefix count and the scatter of the path state into the other ping-pong set. Also the length-cache
+// live-prefix count and the gather of the path state into the other ping-pong set. Also the length-cache
 // learning after a trace, and, in the detailed mode, the readbacks that measure prediction accuracy.
 #pragma once
 
@@ -40,7 +40,7 @@ class FrameReorder {
   // After shading `bounce`: the keys of the next rays (in buffers.keys, current set order).
   void recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
                   bool detailed, StageTimer* timer);
-  // Sort, live count and scatter; returns the state set that holds the reordered paths.
+  // Sort, live count and gather; returns the state set that holds the reordered paths.
   uint32_t recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, StageTimer* timer);
   // Adds key width, cache and sort memory and, in detailed mode, prediction accuracy to the stats.
   void finishFrame(FrameStats& stats, bool detailed);
@@ -56,7 +56,7 @@ class FrameReorder {
   KeyStage keys_;
   std::unique_ptr<GpuSorter> sorter_;
   uint32_t maxPaths_;
-  ComputePipeline rank_, scatter_, liveCount_;
+  ComputePipeline gather_, liveCount_;
   std::vector<std::unique_ptr<Capture>> captures_;
 };
 
