@@ -15,8 +15,6 @@ namespace {
 
 constexpr uint32_t kGroup = RL_PATH_GROUP_SIZE;
 
-void bufferBarrier(VkCommandBuffer cmd) { computeBarrier(cmd); }
-
 }  // namespace
 
 gpu::GpuCamera makeGpuCamera(const Viewpoint& v, uint32_t width, uint32_t height) {
@@ -104,7 +102,7 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
   frame.exposure = settings_.exposure;
   vkCmdUpdateBuffer(cmd, buffers_->frameBlock.handle(), 0, sizeof(frame), &frame);
   buffers_->counters.recordFill(cmd, 0);
-  bufferBarrier(cmd);
+  computeBarrier(cmd);
   const HeatmapView view = settings_.heatmap;
   if (view != HeatmapView::None) heatmap_->recordClear(cmd);
 
@@ -112,7 +110,7 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
   if (settings_.kernel == Kernel::Megakernel) {
     ScopedStage s(&timer_, cmd, "megakernel");
     (settings_.countSimt ? megakernelCounting_ : megakernel_).dispatchThreads(cmd, push, buffers_->pathCount);
-    bufferBarrier(cmd);
+    computeBarrier(cmd);
     recordTraceCounters(cmd, 0);
     if (view == HeatmapView::TraversalSteps || view == HeatmapView::WarpEfficiency)
       heatmap_->recordGather(cmd, view, *buffers_, 0, 0, true, &timer_);
@@ -122,14 +120,14 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
   {
     ScopedStage s(&timer_, cmd, "accumulate");
     accumulate_.dispatchThreads(cmd, push, buffers_->pixelCount);
-    bufferBarrier(cmd);
+    computeBarrier(cmd);
   }
   if (view != HeatmapView::None) {
     heatmap_->recordColorize(cmd, view, *buffers_, &timer_);
   } else {
     ScopedStage s(&timer_, cmd, "tonemap");
     tonemap_.dispatchThreads(cmd, push, buffers_->pixelCount);
-    bufferBarrier(cmd);
+    computeBarrier(cmd);
   }
   // Counters and readbacks are read by the host after the frame's fence.
   VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
@@ -152,7 +150,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
   {
     ScopedStage s(&timer_, cmd, "generate");
     generate_.dispatchThreads(cmd, push, n);
-    bufferBarrier(cmd);
+    computeBarrier(cmd);
   }
   for (uint32_t b = 0; b < settings_.bounces; ++b) {
     timer_.setBounce(static_cast<int>(b));
@@ -160,7 +158,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
     {
       ScopedStage s(&timer_, cmd, "trace");
       (settings_.countSimt ? traceCounting_ : trace_).dispatchIndirect(cmd, push, buffers_->live.handle(), 4);
-      bufferBarrier(cmd);
+      computeBarrier(cmd);
     }
     recordTraceCounters(cmd, b);
     if (settings_.sorts()) reorder_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
@@ -169,7 +167,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
     {
       ScopedStage s(&timer_, cmd, "shade");
       shade_.dispatchIndirect(cmd, push, buffers_->live.handle(), 4);
-      bufferBarrier(cmd);
+      computeBarrier(cmd);
     }
     if (b + 1 < settings_.bounces && settings_.sorts()) {
       reorder_->recordKeys(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
@@ -187,15 +185,15 @@ void PathTracer::recordTraceCounters(VkCommandBuffer cmd, uint32_t bounce) {
   VkBufferCopy copy{0, VkDeviceSize(bounce) * kCounterCount * 4, kCounterCount * 4};
   vkCmdCopyBuffer(cmd, buffers_->counters.handle(), buffers_->counterHistory.handle(), 1, &copy);
   if (detailedStats_) {
+    // Released again by gatherCounters(): only the frame that asked for them holds these copies.
     if (stepsReadback_.size() <= bounce) stepsReadback_.resize(bounce + 1);
-    if (!stepsReadback_[bounce].valid() || stepsReadback_[bounce].size() < buffers_->hitSteps.size())
-      stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
+    stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
     VkBufferCopy steps{0, 0, VkDeviceSize(buffers_->pathCount) * 4};
     vkCmdCopyBuffer(cmd, buffers_->hitSteps.handle(), stepsReadback_[bounce].handle(), 1, &steps);
   }
-  bufferBarrier(cmd);
+  computeBarrier(cmd);
   buffers_->counters.recordFill(cmd, 0);
-  bufferBarrier(cmd);
+  computeBarrier(cmd);
 }
 
 const FrameStats& PathTracer::renderFrame() {

@@ -27,7 +27,9 @@ TEST_P(SceneRenders, NonBlackAndFinite) {
     std::vector<glm::vec3> img = renderRadiance(ctx(), scene, s, view);
     ImageMoments m = moments(img);
     bool framing = scene.findViewpoint("default") ? view.name == "default" : &view == &scene.viewpoints.front();
-    if (framing) EXPECT_GT(m.mean, 1e-3) << name << " from " << view.name << " renders black";
+    if (framing) {
+      EXPECT_GT(m.mean, 1e-3) << name << " from " << view.name << " renders black";
+    }
     EXPECT_TRUE(std::isfinite(m.mean)) << name << " from " << view.name;
   }
 }
