@@ -3,6 +3,7 @@
 // for (alley: nearly all hits, hall: no sky and no leaks, openings: much sky).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>

@@ -6,6 +6,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_vulkan.h>
 
+#include "app/window/imgui_vulkan_compat.h"
 #include "app/window/swapchain.h"
 #include "renderer/vk_check.h"
 #include "renderer/vk_context.h"
@@ -60,8 +61,7 @@ ImGuiLayer::ImGuiLayer(const VulkanContext& ctx, GLFWwindow* window, const Swapc
   info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
   info.CheckVkResultFn = checkVk;
   ImGui_ImplVulkan_Init(&info, renderPass_);
-  ctx.submitAndWait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
-  ImGui_ImplVulkan_DestroyFontUploadObjects();
+  uploadImGuiFonts(ctx);
 }
 
 ImGuiLayer::~ImGuiLayer() {
