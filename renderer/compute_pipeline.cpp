@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "renderer/shader_table.h"
+#include "renderer/spirv_reflect.h"
 #include "renderer/vk_check.h"
 #include "renderer/vk_context.h"
 
@@ -13,6 +14,9 @@ ComputePipeline::ComputePipeline(const VulkanContext& ctx, const std::string& sh
     : ctx_(&ctx), name_(shaderName), pushBytes_(pushBytes), groupSize_(groupSize) {
   if (pushBytes > 128) throw VulkanError(shaderName + ": push constants over the guaranteed 128 bytes");
   std::span<const uint32_t> code = shaderSpirv(shaderName);
+  if (uint32_t declared = spirvPushConstantBytes(code); declared != pushBytes)
+    throw VulkanError(shaderName + ": the shader's push constants are " + std::to_string(declared) +
+                      " bytes, the host's struct " + std::to_string(pushBytes));
   VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   moduleInfo.codeSize = code.size() * sizeof(uint32_t);
   moduleInfo.pCode = code.data();

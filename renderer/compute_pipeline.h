@@ -16,7 +16,8 @@ class VulkanContext;
 class ComputePipeline {
  public:
   ComputePipeline() = default;
-  // `pushBytes` must equal the shader's push-constant block size (callers pass sizeof(their struct)).
+  // `pushBytes` (callers pass sizeof(their struct)) must equal the push-constant block size the SPIR-V
+  // declares, or the constructor throws; every dispatch checks sizeof(Push) against it again.
   ComputePipeline(const VulkanContext& ctx, const std::string& shaderName, uint32_t pushBytes,
                   uint32_t groupSize = 64, const std::vector<uint32_t>& extraConstants = {});
   ~ComputePipeline();

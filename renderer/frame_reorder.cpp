@@ -8,20 +8,6 @@
 namespace raylab {
 namespace {
 
-struct GatherPush {
-  VkDeviceAddress frame;
-  VkDeviceAddress sortedIndices;
-  uint32_t stateSet;
-  uint32_t count;
-};
-
-struct LiveCountPush {
-  VkDeviceAddress sortedKeys;
-  VkDeviceAddress live;
-  uint32_t count;
-  uint32_t pad0;
-};
-
 void copyInto(VkCommandBuffer cmd, const GpuBuffer& from, const GpuBuffer& to, VkDeviceSize bytes) {
   VkBufferCopy region{0, 0, bytes};
   vkCmdCopyBuffer(cmd, from.handle(), to.handle(), 1, &region);
@@ -48,8 +34,8 @@ FrameReorder::FrameReorder(const VulkanContext& ctx, const Scene& scene, const S
       cameraPos_(cameraPos),
       keys_(ctx, scene, cameraPos, settings, maxPaths),
       maxPaths_(maxPaths),
-      gather_(ctx, "reorder", sizeof(GatherPush), RL_PATH_GROUP_SIZE),
-      liveCount_(ctx, "live_count", sizeof(LiveCountPush), RL_PATH_GROUP_SIZE) {
+      gather_(ctx, "gather_path_state", sizeof(gpu::GatherPush), RL_PATH_GROUP_SIZE),
+      liveCount_(ctx, "live_count", sizeof(gpu::LiveCountPush), RL_PATH_GROUP_SIZE) {
   configure(settings, cameraPos);
 }
 
@@ -81,10 +67,11 @@ void FrameReorder::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buff
   if (captures_.size() <= bounce) captures_.resize(bounce + 1);
   if (!captures_[bounce]) captures_[bounce] = std::make_unique<Capture>(ctx_, n);
   Capture& c = *captures_[bounce];
-  copyInto(cmd, buffers.state[stateSet][0], c.origin, VkDeviceSize(n) * 16);
-  copyInto(cmd, buffers.state[stateSet][1], c.direction, VkDeviceSize(n) * 16);
-  copyInto(cmd, buffers.state[stateSet][6], c.predicted, VkDeviceSize(n) * 4);
-  copyInto(cmd, buffers.state[stateSet][5], c.alive, VkDeviceSize(n) * 4);
+  const GpuBuffer* state = buffers.state[stateSet];
+  copyInto(cmd, state[RL_STATE_ORIGIN], c.origin, VkDeviceSize(n) * 16);
+  copyInto(cmd, state[RL_STATE_DIRECTION], c.direction, VkDeviceSize(n) * 16);
+  copyInto(cmd, state[RL_STATE_PREDICTED_LENGTH], c.predicted, VkDeviceSize(n) * 4);
+  copyInto(cmd, state[RL_STATE_ALIVE], c.alive, VkDeviceSize(n) * 4);
   copyInto(cmd, buffers.hitT, c.hitT, VkDeviceSize(n) * 4);
   c.haveRays = true;
   computeBarrier(cmd);
@@ -113,10 +100,10 @@ uint32_t FrameReorder::recordSortAndGather(VkCommandBuffer cmd, const PathBuffer
     sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, keys_.keyBits());
   }
   ScopedStage s(timer, cmd, "reorder");
-  LiveCountPush live{buffers.keys.address(), buffers.live.address(), n, 0};
+  gpu::LiveCountPush live{buffers.keys.address(), buffers.live.address(), n, 0};
   liveCount_.dispatchThreads(cmd, live, n);
   computeBarrier(cmd);
-  GatherPush gather{buffers.frameBlock.address(), buffers.values.address(), stateSet, n};
+  gpu::GatherPush gather{buffers.frameBlock.address(), buffers.values.address(), stateSet, n};
   gather_.dispatchThreads(cmd, gather, n);
   computeBarrier(cmd);
   return 1u - stateSet;

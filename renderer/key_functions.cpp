@@ -43,7 +43,7 @@ uint32_t keyCached(const KeyParams& p, const KeyEnv& env, const KeyPath& path, b
     const gpu::GpuCacheEntry& c = env.entries[e];
     if (c.count > 0u && !gaussian) len = clampLength(c.mean, p.cache.lengthMax);
     if (c.count > 0u && gaussian) {
-      uint32_t rng = rngSeed(path.pathId, env.frameIndex, env.bounce, env.seed, 1u);
+      uint32_t rng = rngSeed(path.pathId, env.frameIndex, env.bounce, env.seed, RL_RNG_KEY);
       float sampled = c.mean + c.sigma * gaussianSample(rng);
       len = clampLength(sampled, p.cache.lengthMax);
     }

@@ -58,8 +58,7 @@ PathTracer::~PathTracer() { vkDeviceWaitIdle(ctx_.device()); }
 
 void PathTracer::allocate() {
   buffers_.reset();
-  buffers_ = std::make_unique<PathBuffers>(ctx_, settings_.width, settings_.height, settings_.sppPerFrame,
-                                           settings_.bounces);
+  buffers_ = std::make_unique<PathBuffers>(ctx_, settings_.width, settings_.height, settings_.sppPerFrame);
   reorder_->resize(buffers_->pathCount);
   heatmap_ = std::make_unique<HeatmapPass>(ctx_, buffers_->pixelCount);
   resetAccumulation();
@@ -106,12 +105,12 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
   const HeatmapView view = settings_.heatmap;
   if (view != HeatmapView::None) heatmap_->recordClear(cmd);
 
-  gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0, settings_.countSimt ? 1u : 0u, 0};
+  gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0};
   if (settings_.kernel == Kernel::Megakernel) {
     ScopedStage s(&timer_, cmd, "megakernel");
     (settings_.countSimt ? megakernelCounting_ : megakernel_).dispatchThreads(cmd, push, buffers_->pathCount);
     computeBarrier(cmd);
-    recordTraceCounters(cmd, 0);
+    if (detailedStats_) recordStepsReadback(cmd, 0);
     if (view == HeatmapView::TraversalSteps || view == HeatmapView::WarpEfficiency)
       heatmap_->recordGather(cmd, view, *buffers_, 0, 0, true, &timer_);
   } else {
@@ -129,6 +128,10 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
     tonemap_.dispatchThreads(cmd, push, buffers_->pixelCount);
     computeBarrier(cmd);
   }
+  // This frame's counters, one slot set per bounce, in one copy; the host reads them after the fence.
+  const uint32_t countedBounces = settings_.kernel == Kernel::Megakernel ? 1 : settings_.bounces;
+  VkBufferCopy counters{0, 0, PathBuffers::counterBytes(countedBounces)};
+  vkCmdCopyBuffer(cmd, buffers_->counters.handle(), buffers_->counterHistory.handle(), 1, &counters);
   // Counters and readbacks are read by the host after the frame's fence.
   VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -157,16 +160,16 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
     push.bounce = b;
     {
       ScopedStage s(&timer_, cmd, "trace");
-      (settings_.countSimt ? traceCounting_ : trace_).dispatchIndirect(cmd, push, buffers_->live.handle(), 4);
+      (settings_.countSimt ? traceCounting_ : trace_).dispatchIndirect(cmd, push, buffers_->live.handle(), PathBuffers::kLiveDispatchOffset);
       computeBarrier(cmd);
     }
-    recordTraceCounters(cmd, b);
+    if (detailedStats_) recordStepsReadback(cmd, b);
     if (settings_.sorts()) reorder_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
     if (view != HeatmapView::None && view != HeatmapView::SortKey && b == heatmapBounce())
       heatmap_->recordGather(cmd, view, *buffers_, push.stateSet, keyParams, false, &timer_);
     {
       ScopedStage s(&timer_, cmd, "shade");
-      shade_.dispatchIndirect(cmd, push, buffers_->live.handle(), 4);
+      shade_.dispatchIndirect(cmd, push, buffers_->live.handle(), PathBuffers::kLiveDispatchOffset);
       computeBarrier(cmd);
     }
     if (b + 1 < settings_.bounces && settings_.sorts()) {
@@ -179,20 +182,13 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
   timer_.setBounce(-1);
 }
 
-// Saves this trace's counters (rays, SIMT lanes) into the bounce's history slot and clears them; in the
-// detailed mode also keeps the per-path traversal steps for the virtual warp efficiency.
-void PathTracer::recordTraceCounters(VkCommandBuffer cmd, uint32_t bounce) {
-  VkBufferCopy copy{0, VkDeviceSize(bounce) * kCounterCount * 4, kCounterCount * 4};
-  vkCmdCopyBuffer(cmd, buffers_->counters.handle(), buffers_->counterHistory.handle(), 1, &copy);
-  if (detailedStats_) {
-    // Released again by gatherCounters(): only the frame that asked for them holds these copies.
-    if (stepsReadback_.size() <= bounce) stepsReadback_.resize(bounce + 1);
-    stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
-    VkBufferCopy steps{0, 0, VkDeviceSize(buffers_->pathCount) * 4};
-    vkCmdCopyBuffer(cmd, buffers_->hitSteps.handle(), stepsReadback_[bounce].handle(), 1, &steps);
-  }
-  computeBarrier(cmd);
-  buffers_->counters.recordFill(cmd, 0);
+// Detailed mode: keeps this trace's per-path traversal steps (the next trace overwrites them) for the
+// virtual warp efficiency. Released again by gatherCounters(): only the frame that asked holds them.
+void PathTracer::recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce) {
+  if (stepsReadback_.size() <= bounce) stepsReadback_.resize(bounce + 1);
+  stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
+  VkBufferCopy steps{0, 0, VkDeviceSize(buffers_->pathCount) * 4};
+  vkCmdCopyBuffer(cmd, buffers_->hitSteps.handle(), stepsReadback_[bounce].handle(), 1, &steps);
   computeBarrier(cmd);
 }
 
@@ -226,12 +222,12 @@ void PathTracer::gatherCounters() {
   const uint32_t rounds = mega ? 1 : settings_.bounces;
   const auto* history = static_cast<const uint32_t*>(buffers_->counterHistory.mapped());
   for (uint32_t b = 0; b < rounds; ++b) {
-    const uint32_t* c = history + b * kCounterCount;
+    const uint32_t* c = history + b * RL_COUNTER_STRIDE;
     BounceStats bs;
-    bs.rays = c[kCounterRays];
-    if (settings_.countSimt && c[kCounterSimtSlots] > 0)
-      bs.simtEfficiency = static_cast<double>(c[kCounterSimtActive]) /
-                          (static_cast<double>(c[kCounterSimtSlots]) * ctx_.info().subgroupSize);
+    bs.rays = c[RL_COUNTER_RAYS];
+    if (settings_.countSimt && c[RL_COUNTER_SIMT_SLOTS] > 0)
+      bs.simtEfficiency = static_cast<double>(c[RL_COUNTER_SIMT_ACTIVE]) /
+                          (static_cast<double>(c[RL_COUNTER_SIMT_SLOTS]) * ctx_.info().subgroupSize);
     if (detailedStats_ && b < stepsReadback_.size()) {
       const auto* steps = static_cast<const uint32_t*>(stepsReadback_[b].mapped());
       WarpEfficiency w = virtualWarpEfficiency(steps, buffers_->pathCount, 32);

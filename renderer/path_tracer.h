@@ -54,7 +54,7 @@ class PathTracer {
   void allocate();
   void resetAccumulation();
   void recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& basePush);
-  void recordTraceCounters(VkCommandBuffer cmd, uint32_t bounce);
+  void recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce);
   void gatherCounters();
   // Bounce whose paths the heatmap shows, within this frame's bounces.
   uint32_t heatmapBounce() const;

@@ -11,19 +11,14 @@
 #include "shared_types.h"
 
 layout(local_size_x_id = 0) in;
-layout(push_constant, scalar) uniform Push {
-  FrameBuf frame;
-  UintBuf sortedIndices;
-  uint stateSet;  // source set; the destination is the other one
-  uint count;
-} pc;
+layout(push_constant, scalar) uniform Push { GatherPush pc; };
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= pc.count) return;
   GpuFrame f = pc.frame.f;
   GpuPathState dst = f.state[1u - pc.stateSet];
-  if (i >= f.live.v[0]) {
+  if (i >= f.live.v[RL_LIVE_COUNT]) {
     dst.alive.v[i] = 0u;
     return;
   }
