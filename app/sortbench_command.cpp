@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "renderer/gpu_buffer.h"
-#include "renderer/gpu_sort.h"
-#include "renderer/vk_check.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/gpu_buffer.h"
+#include "renderer/reorder/gpu_sort.h"
+#include "renderer/vk/vk_check.h"
+#include "renderer/vk/vk_context.h"
 #include "shaders/sort_types.h"
 
 namespace raylab {

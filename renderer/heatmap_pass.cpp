@@ -3,8 +3,8 @@
 #include <cstring>
 
 #include "renderer/path_buffers.h"
-#include "renderer/stage_timer.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/stage_timer.h"
+#include "renderer/vk/vk_context.h"
 #include "shaders/heatmap_types.h"
 
 namespace raylab {

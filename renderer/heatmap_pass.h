@@ -5,9 +5,9 @@
 
 #include <vulkan/vulkan.h>
 
-#include "renderer/compute_pipeline.h"
+#include "renderer/vk/compute_pipeline.h"
 #include "renderer/frame_stats.h"
-#include "renderer/gpu_buffer.h"
+#include "renderer/vk/gpu_buffer.h"
 #include "renderer/settings.h"
 
 namespace raylab {

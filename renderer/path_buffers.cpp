@@ -1,7 +1,7 @@
 #include "renderer/path_buffers.h"
 
 #include "renderer/settings.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_context.h"
 
 namespace raylab {
 

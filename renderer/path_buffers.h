@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "renderer/gpu_buffer.h"
+#include "renderer/vk/gpu_buffer.h"
 #include "shaders/shared_types.h"
 
 namespace raylab {

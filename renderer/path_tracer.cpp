@@ -4,10 +4,10 @@
 #include <chrono>
 #include <cmath>
 
-#include "renderer/frame_reorder.h"
+#include "renderer/reorder/path_sorter.h"
 #include "renderer/heatmap_pass.h"
-#include "renderer/vk_check.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_check.h"
+#include "renderer/vk/vk_context.h"
 #include "renderer/warp_efficiency.h"
 
 namespace raylab {
@@ -49,7 +49,7 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Setti
       megakernel_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup, {0}),
       megakernelCounting_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup, {1}),
       timer_(ctx) {
-  reorder_ = std::make_unique<FrameReorder>(ctx, scene, settings_, camera_.position,
+  pathSorter_ = std::make_unique<PathSorter>(ctx, scene, settings_, camera_.position,
                                             settings_.width * settings_.height * settings_.sppPerFrame);
   allocate();
 }
@@ -59,7 +59,7 @@ PathTracer::~PathTracer() { vkDeviceWaitIdle(ctx_.device()); }
 void PathTracer::allocate() {
   buffers_.reset();
   buffers_ = std::make_unique<PathBuffers>(ctx_, settings_.width, settings_.height, settings_.sppPerFrame);
-  reorder_->resize(buffers_->pathCount);
+  pathSorter_->resize(buffers_->pathCount);
   heatmap_ = std::make_unique<HeatmapPass>(ctx_, buffers_->pixelCount);
   resetAccumulation();
 }
@@ -74,7 +74,7 @@ void PathTracer::applySettings(const Settings& next) {
   settings_ = next;
   bool resized = next.width != previous.width || next.height != previous.height ||
                  next.sppPerFrame != previous.sppPerFrame || next.bounces != previous.bounces;
-  reorder_->configure(settings_, camera_.position);
+  pathSorter_->configure(settings_, camera_.position);
   if (resized)
     allocate();
   else if (next.requiresAccumulationReset(previous))
@@ -83,7 +83,7 @@ void PathTracer::applySettings(const Settings& next) {
 
 void PathTracer::setCamera(const Viewpoint& camera) {
   camera_ = camera;
-  reorder_->configure(settings_, camera_.position);
+  pathSorter_->configure(settings_, camera_.position);
   resetAccumulation();
 }
 
@@ -149,7 +149,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
   gpu::PathStagePush push = basePush;
   const uint32_t n = buffers_->pathCount;
   const HeatmapView view = settings_.heatmap;
-  const VkDeviceAddress keyParams = settings_.sorts() ? reorder_->keys().paramsAddress() : 0;
+  const VkDeviceAddress keyParams = settings_.sorts() ? pathSorter_->keys().paramsAddress() : 0;
   {
     ScopedStage s(&timer_, cmd, "generate");
     generate_.dispatchThreads(cmd, push, n);
@@ -164,7 +164,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
       computeBarrier(cmd);
     }
     if (detailedStats_) recordStepsReadback(cmd, b);
-    if (settings_.sorts()) reorder_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
+    if (settings_.sorts()) pathSorter_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
     if (view != HeatmapView::None && view != HeatmapView::SortKey && b == heatmapBounce())
       heatmap_->recordGather(cmd, view, *buffers_, push.stateSet, keyParams, false, &timer_);
     {
@@ -173,10 +173,10 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
       computeBarrier(cmd);
     }
     if (b + 1 < settings_.bounces && settings_.sorts()) {
-      reorder_->recordKeys(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
+      pathSorter_->recordKeys(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
       if (view == HeatmapView::SortKey && b + 1 == heatmapBounce())
         heatmap_->recordGather(cmd, view, *buffers_, push.stateSet, keyParams, false, &timer_);
-      push.stateSet = reorder_->recordSortAndGather(cmd, *buffers_, push.stateSet, &timer_);
+      push.stateSet = pathSorter_->recordSortAndGather(cmd, *buffers_, push.stateSet, &timer_);
     }
   }
   timer_.setBounce(-1);
@@ -206,7 +206,7 @@ const FrameStats& PathTracer::finishFrame(double wallMs) {
   stats_.stages = timer_.collect();
   stats_.frameMs = timer_.spanMs();
   gatherCounters();
-  if (settings_.sorts()) reorder_->finishFrame(stats_, detailedStats_);
+  if (settings_.sorts()) pathSorter_->finishFrame(stats_, detailedStats_);
   if (settings_.heatmap != HeatmapView::None) heatmap_->readRange(settings_.heatmap, stats_);
   stats_.pathStateBytes = buffers_->pathStateBytes();
   stats_.sceneBytes = scene_->memoryBytes();

@@ -5,10 +5,10 @@
 #include <memory>
 #include <vector>
 
-#include "renderer/compute_pipeline.h"
+#include "renderer/vk/compute_pipeline.h"
 #include "renderer/frame_stats.h"
 #include "renderer/gpu_scene.h"
-#include "renderer/gpu_timer.h"
+#include "renderer/vk/gpu_timer.h"
 #include "renderer/path_buffers.h"
 #include "renderer/settings.h"
 #include "scenes/scene.h"
@@ -16,7 +16,7 @@
 namespace raylab {
 
 class VulkanContext;
-class FrameReorder;
+class PathSorter;
 class HeatmapPass;
 
 class PathTracer {
@@ -64,7 +64,7 @@ class PathTracer {
   Viewpoint camera_;
   std::unique_ptr<GpuSceneData> scene_;
   std::unique_ptr<PathBuffers> buffers_;
-  std::unique_ptr<FrameReorder> reorder_;
+  std::unique_ptr<PathSorter> pathSorter_;
   std::unique_ptr<HeatmapPass> heatmap_;
   ComputePipeline generate_, trace_, traceCounting_, shade_, accumulate_, tonemap_, megakernel_,
       megakernelCounting_;
