@@ -17,15 +17,31 @@ KeyStage::KeyStage(const VulkanContext& ctx, const Scene& scene, glm::vec3 camer
   settings_ = settings;
   camera_ = cameraPos;
   grid_ = makeKeyGrid(sceneBounds_, cameraPos, settings);
-  configure(settings, cameraPos);
+  SettingsChange initial;
+  initial.keyParameters = true;
+  apply(settings, cameraPos, maxPaths_, initial);
 }
 
 void KeyStage::configure(const Settings& settings, glm::vec3 cameraPos) {
-  KeyGrid grid = makeKeyGrid(sceneBounds_, cameraPos, settings);
-  bool gridChanged = !grid.sameCells(grid_);
-  bool reset = settings.requiresCacheReset(settings_) || gridChanged;
+  SettingsChange change = SettingsChange::between(settings_, settings);
+  change.keyParameters = true;  // the camera may have moved
+  apply(settings, cameraPos, maxPaths_, change);
+}
+
+void KeyStage::resize(uint32_t maxPaths) {
+  SettingsChange change;
+  change.keyParameters = true;  // the oracle's buffer and the fixed-point unit follow maxPaths
+  apply(settings_, camera_, maxPaths, change);
+}
+
+void KeyStage::apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths, const SettingsChange& change) {
   settings_ = settings;
   camera_ = cameraPos;
+  maxPaths_ = std::max(maxPaths, 1u);
+  if (!change.keyParameters) return;
+  KeyGrid grid = makeKeyGrid(sceneBounds_, cameraPos, settings);
+  bool gridChanged = !grid.sameCells(grid_);
+  bool reset = change.resetCache || gridChanged;
   grid_ = grid;
 
   if (!usesLengthCache(settings.strategy)) {
@@ -43,11 +59,6 @@ void KeyStage::configure(const Settings& settings, glm::vec3 cameraPos) {
   }
   grid_.gpu.spatialBits = spatialKeyBits(settings.strategy, grid_.gpu);
   uploadParams();
-}
-
-void KeyStage::resize(uint32_t maxPaths) {
-  maxPaths_ = std::max(maxPaths, 1u);
-  configure(settings_, camera_);  // the oracle's buffer and the fixed-point unit follow maxPaths
 }
 
 void KeyStage::uploadParams() {
@@ -123,10 +134,6 @@ void KeyStage::recordLearn(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint
     merge.dispatchThreads(cmd, push, count);  // one thread per touched entry, at most one per path
   }
   computeBarrier(cmd);
-}
-
-void KeyStage::resetCache() {
-  if (cache_) cache_->clear();
 }
 
 uint64_t KeyStage::cacheMemoryBytes() const { return cache_ ? cache_->memoryBytes() : 0; }

@@ -36,10 +36,13 @@ class KeyStage {
   KeyStage(const VulkanContext& ctx, const Scene& scene, glm::vec3 cameraPos, const Settings& settings,
            uint32_t maxPaths);
 
-  // Applies new settings (call between frames, not while a frame that uses the stage is in flight).
-  // Rebuilds the grid and cache only when the grid's box or cells change (with clampToCamera a camera move
-  // does), clears the cache when Settings::requiresCacheReset says so, and otherwise only uploads the new
-  // thresholds (ema alpha, gaussian outlier and reset keep what was learned).
+  // Applies a change computed once by the caller (call between frames, not while a frame that uses the
+  // stage is in flight). Without change.keyParameters it only records the settings and camera. Otherwise
+  // it rebuilds the grid and cache only when the grid's box or cells change (with clampToCamera a camera
+  // move does), clears the cache on change.resetCache, and uploads the parameters once (new thresholds
+  // such as ema alpha, gaussian outlier and reset keep what was learned).
+  void apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths, const SettingsChange& change);
+  // apply() with the change from the settings the stage holds (for callers without a SettingsChange).
   void configure(const Settings& settings, glm::vec3 cameraPos);
 
   // New bound on `count` (e.g. a new resolution); keeps what the cache learned.
@@ -61,8 +64,6 @@ class KeyStage {
   void recordLearn(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint32_t stateSet, uint32_t bounce,
                    uint32_t count, StageTimer* timer);
 
-  // Forgets everything learned (e.g. for a benchmark that must start cold).
-  void resetCache();
   uint64_t cacheMemoryBytes() const;
   // Entries with samples / entries; downloads the cache (stats only). 0 without a cache.
   double cacheOccupancy() const;
@@ -75,7 +76,6 @@ class KeyStage {
   VkDeviceAddress paramsAddress() const { return paramsBuffer_.address(); }
   LengthCache::Contents downloadCache() const;
   std::vector<float> downloadOracleLengths(uint32_t count) const;
-  const LengthCache* cache() const { return cache_.get(); }
 
  private:
   const ComputePipeline& pipeline(const char* shader, KeyStrategy strategy, uint32_t pushBytes);

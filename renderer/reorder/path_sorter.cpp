@@ -30,32 +30,30 @@ struct PathSorter::Capture {
 PathSorter::PathSorter(const VulkanContext& ctx, const Scene& scene, const Settings& settings,
                            glm::vec3 cameraPos, uint32_t maxPaths)
     : ctx_(ctx),
-      settings_(settings),
-      cameraPos_(cameraPos),
       keys_(ctx, scene, cameraPos, settings, maxPaths),
       maxPaths_(maxPaths),
       gather_(ctx, "gather_path_state", sizeof(gpu::GatherPush), RL_PATH_GROUP_SIZE),
       liveCount_(ctx, "live_count", sizeof(gpu::LiveCountPush), RL_PATH_GROUP_SIZE) {
-  configure(settings, cameraPos);
+  makeSorter(settings);
 }
 
 PathSorter::~PathSorter() = default;
 
-void PathSorter::configure(const Settings& settings, glm::vec3 cameraPos) {
-  settings_ = settings;
-  cameraPos_ = cameraPos;
-  keys_.configure(settings, cameraPos);
+void PathSorter::apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths,
+                       const SettingsChange& change) {
+  if (change.reallocate) {
+    maxPaths_ = maxPaths;
+    sorter_.reset();
+    captures_.clear();
+  }
+  keys_.apply(settings, cameraPos, maxPaths_, change);
+  makeSorter(settings);
+}
+
+void PathSorter::makeSorter(const Settings& settings) {
   if (!settings.sorts()) return;  // the sorter's scratch is only paid for while sorting
   if (!sorter_ || sorter_->algorithm() != settings.sort || sorter_->maxCount() < maxPaths_)
     sorter_ = std::make_unique<GpuSorter>(ctx_, settings.sort, maxPaths_);
-}
-
-void PathSorter::resize(uint32_t maxPaths) {
-  maxPaths_ = maxPaths;
-  keys_.resize(maxPaths);
-  sorter_.reset();
-  captures_.clear();
-  configure(settings_, cameraPos_);
 }
 
 void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,

@@ -31,9 +31,9 @@ class PathSorter {
                uint32_t maxPaths);
   ~PathSorter();
 
-  // Rebuilds the grid, caches and sorter when the settings or the camera need it.
-  void configure(const Settings& settings, glm::vec3 cameraPos);
-  void resize(uint32_t maxPaths);
+  // Applies a change PathTracer computed (new path bound, key grid and caches as `change` says) and makes
+  // the sorter the settings ask for; the sorter's scratch is only held while sorting.
+  void apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths, const SettingsChange& change);
 
   // After the trace of `bounce`: the learn stage, and in detailed mode the accuracy readbacks.
   void recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
@@ -51,9 +51,9 @@ class PathSorter {
  private:
   struct Capture;  // host-visible copies of one bounce's rays, predictions, hits and keys
 
+  void makeSorter(const Settings& settings);
+
   const VulkanContext& ctx_;
-  Settings settings_;
-  glm::vec3 cameraPos_;
   KeyStage keys_;
   std::unique_ptr<GpuSorter> sorter_;
   uint32_t maxPaths_;

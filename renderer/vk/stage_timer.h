@@ -6,6 +6,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/vk/compute_pipeline.h"
+
 namespace raylab {
 
 class StageTimer {
@@ -31,5 +33,15 @@ class ScopedStage {
   StageTimer* timer_;
   VkCommandBuffer cmd_;
 };
+
+// One step of the frame loop, like pbrt's ParallelFor by name or Falcor's profiled pass: names and times
+// the dispatches `record` records, then fences them with a compute barrier so the next step sees their
+// writes. recordStage(cmd, timer, "shade", [&] { shade.dispatchThreads(cmd, push, n); });
+template <class Record>
+void recordStage(VkCommandBuffer cmd, StageTimer* timer, std::string_view name, Record&& record) {
+  ScopedStage scope(timer, cmd, name);
+  record();
+  computeBarrier(cmd);
+}
 
 }  // namespace raylab
