@@ -19,7 +19,6 @@ class GpuTimer : public StageTimer {
   GpuTimer(const GpuTimer&) = delete;
   GpuTimer& operator=(const GpuTimer&) = delete;
 
-  bool supported() const { return pool_ != VK_NULL_HANDLE; }
   // Starts a new set of scopes: records the query reset.
   void reset(VkCommandBuffer cmd);
   void setBounce(int bounce) { bounce_ = bounce; }

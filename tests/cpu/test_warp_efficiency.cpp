@@ -1,4 +1,4 @@
-// Virtual warp efficiency as DESIGN.md defines it: per warp of W consecutive threads sum(n_i) / (W * max n_i),
+// Virtual warp efficiency as renderer/warp_efficiency.h defines it: per warp of W consecutive threads sum(n_i) / (W * max n_i),
 // the frame weighted by W * max n_i. Values worked out by hand.
 #include <gtest/gtest.h>
 
