@@ -103,18 +103,10 @@ void KeyStage::recordKeys(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint3
   gpu::KeyPush push{frameBlock, paramsBuffer_.address(), keysOut, valuesOut, stateSet, bounce, count, 0};
   if (s == KeyStrategy::Oracle) {
     const ComputePipeline& trace = pipeline("key_oracle", s, sizeof(gpu::KeyPush));
-    {
-      ScopedStage scope(timer, cmd, "oracle-trace");
-      trace.dispatchThreads(cmd, push, count);
-    }
-    computeBarrier(cmd);
+    recordStage(cmd, timer, "oracle-trace", [&] { trace.dispatchThreads(cmd, push, count); });
   }
   const ComputePipeline& keys = pipeline("keys", s, sizeof(gpu::KeyPush));
-  {
-    ScopedStage scope(timer, cmd, "keys");
-    keys.dispatchThreads(cmd, push, count);
-  }
-  computeBarrier(cmd);
+  recordStage(cmd, timer, "keys", [&] { keys.dispatchThreads(cmd, push, count); });
 }
 
 void KeyStage::recordLearn(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint32_t stateSet, uint32_t bounce,
@@ -125,15 +117,13 @@ void KeyStage::recordLearn(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint
   gpu::KeyLearnPush push{frameBlock, paramsBuffer_.address(), stateSet, bounce, count, 0};
   const ComputePipeline& learn = pipeline("key_learn", s, sizeof(gpu::KeyLearnPush));
   const ComputePipeline& merge = pipeline("key_merge", s, sizeof(gpu::KeyLearnPush));
-  {
-    ScopedStage scope(timer, cmd, "learn");
+  recordStage(cmd, timer, "learn", [&] {
     cache_->recordResetTouched(cmd);
     computeBarrier(cmd);
     learn.dispatchThreads(cmd, push, count);
     computeBarrier(cmd);
     merge.dispatchThreads(cmd, push, count);  // one thread per touched entry, at most one per path
-  }
-  computeBarrier(cmd);
+  });
 }
 
 uint64_t KeyStage::cacheMemoryBytes() const { return cache_ ? cache_->memoryBytes() : 0; }

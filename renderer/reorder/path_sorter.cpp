@@ -94,16 +94,17 @@ uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers&
                                            StageTimer* timer) {
   const uint32_t n = buffers.pathCount;
   {
-    ScopedStage s(timer, cmd, "sort");
+    ScopedStage s(timer, cmd, "sort");  // the sorter fences its own passes
     sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, keys_.keyBits());
   }
-  ScopedStage s(timer, cmd, "reorder");
-  gpu::LiveCountPush live{buffers.keys.address(), buffers.live.address(), n, 0};
-  liveCount_.dispatchThreads(cmd, live, n);
-  computeBarrier(cmd);
-  gpu::GatherPush gather{buffers.frameBlock.address(), buffers.values.address(), stateSet, n};
-  gather_.dispatchThreads(cmd, gather, n);
-  computeBarrier(cmd);
+  // "reorder": the live prefix's length, then every state array gathered into the other set.
+  const gpu::LiveCountPush live{buffers.keys.address(), buffers.live.address(), n, 0};
+  const gpu::GatherPush gather{buffers.frameBlock.address(), buffers.values.address(), stateSet, n};
+  recordStage(cmd, timer, "reorder", [&] {
+    liveCount_.dispatchThreads(cmd, live, n);
+    computeBarrier(cmd);
+    gather_.dispatchThreads(cmd, gather, n);
+  });
   return 1u - stateSet;
 }
 
