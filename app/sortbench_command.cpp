@@ -63,17 +63,17 @@ struct BenchOptions {
   GpuSorter::Tuning tuning;
 };
 
-BenchOptions parseOptions(int argc, char** argv) {
+BenchOptions parseOptions(const std::vector<std::string>& args) {
   BenchOptions o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& flag = args[i];
     if (flag == "--help" || flag == "-h") throw HelpRequested{};
     if (flag == "--validate") {
       o.validate = true;
       continue;
     }
-    if (i + 1 >= argc) throw UsageError(flag + " needs a value");
-    const std::string value = argv[++i];
+    if (i + 1 >= args.size()) throw UsageError(flag + " needs a value");
+    const std::string& value = args[++i];
     if (flag == "--n") {
       size_t start = 0;
       while (start <= value.size()) {
@@ -206,7 +206,7 @@ int runBench(const BenchOptions& o) {
   const DeviceInfo& dev = ctx.info();
   if (!dev.timestamps || dev.timestampPeriodNs <= 0) {
     std::fprintf(stderr, "raylab sortbench: %s has no timestamp queries on its compute queue\n", dev.name.c_str());
-    return 1;
+    return kExitFailure;
   }
   const uint32_t maxN = *std::max_element(o.counts.begin(), o.counts.end());
   std::printf("sortbench: device %s (driver %s), subgroup %u, %u-bit keys, %s, %u runs (+%d warm-up)\n",
@@ -261,7 +261,7 @@ int runBench(const BenchOptions& o) {
     std::FILE* f = std::fopen(o.csv.c_str(), "w");
     if (!f) {
       std::fprintf(stderr, "raylab sortbench: cannot write %s\n", o.csv.c_str());
-      return 1;
+      return kExitFailure;
     }
     std::fprintf(f, "sort,n,median_ms,min_ms,max_ms,pairs_per_s,check,bits,dist,repeat,device,driver\n");
     auto quoted = [](std::string s) {
@@ -275,17 +275,17 @@ int runBench(const BenchOptions& o) {
   }
   if (o.validate && ctx.validationErrors() > 0) {
     std::fprintf(stderr, "raylab sortbench: the validation layer reported %u errors\n", ctx.validationErrors());
-    return 1;
+    return kExitFailure;
   }
-  return allOk ? 0 : 1;
+  return allOk ? kExitOk : kExitFailure;
 }
 
 }  // namespace
 
-int runSortBenchCommand(int argc, char** argv) {
+int runSortBenchCommand(const std::vector<std::string>& args) {
   BenchOptions options;
   try {
-    options = parseOptions(argc, argv);
+    options = parseOptions(args);
   } catch (const HelpRequested&) {
     std::fputs(kUsage, stdout);
     return kExitOk;
@@ -298,7 +298,7 @@ int runSortBenchCommand(int argc, char** argv) {
     return runBench(options);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "raylab sortbench: %s\n", e.what());
-    return 1;
+    return kExitFailure;
   }
 }
 
