@@ -35,10 +35,12 @@ void KeyStage::resize(uint32_t maxPaths) {
 }
 
 void KeyStage::apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths, const SettingsChange& change) {
+  const uint32_t bound = std::max(maxPaths, 1u);
+  const bool boundChanged = bound != maxPaths_;  // the length unit and the oracle's buffer follow it
   settings_ = settings;
   camera_ = cameraPos;
-  maxPaths_ = std::max(maxPaths, 1u);
-  if (!change.keyParameters) return;
+  maxPaths_ = bound;
+  if (!change.keyParameters && !boundChanged) return;
   KeyGrid grid = makeKeyGrid(sceneBounds_, cameraPos, settings);
   bool gridChanged = !grid.sameCells(grid_);
   bool reset = change.resetCache || gridChanged;

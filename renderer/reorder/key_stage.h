@@ -37,10 +37,10 @@ class KeyStage {
            uint32_t maxPaths);
 
   // Applies a change computed once by the caller (call between frames, not while a frame that uses the
-  // stage is in flight). Without change.keyParameters it only records the settings and camera. Otherwise
-  // it rebuilds the grid and cache only when the grid's box or cells change (with clampToCamera a camera
-  // move does), clears the cache on change.resetCache, and uploads the parameters once (new thresholds
-  // such as ema alpha, gaussian outlier and reset keep what was learned).
+  // stage is in flight). Without change.keyParameters (and with the same maxPaths) it only records the
+  // settings and camera. Otherwise it rebuilds the grid and cache only when the grid's box or cells change
+  // (with clampToCamera a camera move does), clears the cache on change.resetCache, and uploads the
+  // parameters once (new thresholds such as ema alpha, gaussian outlier and reset keep what was learned).
   void apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths, const SettingsChange& change);
   // apply() with the change from the settings the stage holds (for callers without a SettingsChange).
   void configure(const Settings& settings, glm::vec3 cameraPos);
