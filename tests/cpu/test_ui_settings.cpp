@@ -1,5 +1,6 @@
-// Settings as the window handles them: render flags laid over existing Settings (app/setting_flags.h).
-// The screenshot sidecar's round trip is in tests/gpu/test_ui_sidecar.cpp.
+// Settings as the window handles them: render flags laid over existing Settings (app/setting_flags.h) and
+// the screenshot sidecar (app/sidecar.h). That a sidecar renders the same image again is tested on the GPU
+// (tests/gpu/test_ui_sidecar.cpp).
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -9,13 +10,28 @@
 
 #include "app/cli_options.h"
 #include "app/setting_flags.h"
+#include "app/sidecar.h"
 #include "renderer/stats_json.h"
-#include "tests/settings_support.h"
 
 namespace raylab {
 namespace {
 
-using test::unusualSettings;
+// A Settings value with every field away from its default, as a user might leave it.
+Settings unusualSettings() {
+  Settings s;
+  s.scene = "cornell";
+  s.view = "front";
+  s.width = 33, s.height = 17;
+  s.bounces = 3, s.sppPerFrame = 2, s.frames = 4, s.seed = 9, s.exposure = 1.5f;
+  s.strategy = KeyStrategy::Gaussian;
+  s.sort = SortAlgorithm::Bitonic;
+  s.grid.automatic = false;
+  s.grid.cells = {8, 16, 32};
+  s.clampToCamera = true, s.clampDistance = 12.5f;
+  s.fixedFactor = 0.25f, s.emaAlpha = 0.5f, s.gaussOutlier = 2.0f, s.gaussReset = INFINITY;
+  s.countSimt = true;
+  return s;
+}
 
 // New render flags must be taught to the overlay, or `set KEY` and `--settings` silently ignore them.
 TEST(UiSettings, EveryRenderFlagIsOverlaid) {
@@ -63,6 +79,44 @@ TEST(UiSettings, OverlayOnDefaultsEqualsTheCliParse) {
   EXPECT_EQ(overlaySettingFlags(Settings{}, args), parseCommonOptions(args).settings);
   EXPECT_THROW(overlaySettingFlags(Settings{}, {"--bogus", "1"}), UsageError);
   EXPECT_NO_THROW(overlaySettingFlags(Settings{}, {"--script", "s.txt", "--reset"}, /*skipUnknown=*/true));
+}
+
+class UiSidecar : public ::testing::Test {
+ protected:
+  std::string path_ = (std::filesystem::temp_directory_path() / "raylab_test_sidecar_roundtrip.json").string();
+  void TearDown() override { std::filesystem::remove(path_); }
+  void write(const SidecarContent& c) { std::ofstream(path_) << makeSidecar(c).dump(2); }
+};
+
+TEST_F(UiSidecar, SettingsAndCameraRoundTrip) {
+  SidecarContent c;
+  c.kind = "render";
+  c.settings = unusualSettings();
+  c.camera.name = "moved";
+  c.camera.position = {0.1f, 2.5f, -3.25f};
+  c.camera.target = {1.0f / 3.0f, 0.0f, 7.0f};
+  c.camera.yfovRadians = 0.7f;
+  c.device.name = "test device";  // no Vulkan device here: the sidecar only records its description
+  c.device.subgroupSize = 32;
+  write(c);
+  Sidecar back = readSidecar(path_);
+  EXPECT_EQ(toJson(back.settings), toJson(c.settings));
+  ASSERT_TRUE(back.camera);
+  EXPECT_EQ(back.camera->position, c.camera.position);
+  EXPECT_EQ(back.camera->target, c.camera.target);
+  EXPECT_FLOAT_EQ(back.camera->yfovRadians, c.camera.yfovRadians);
+
+  // Flags after --settings change only what they name; --view replaces the saved camera.
+  std::optional<Viewpoint> camera;
+  CommonOptions o = parseOptionsWithSettingsFile({"--settings", path_, "--bounces", "7"}, &camera);
+  Settings expected = back.settings;
+  expected.bounces = 7;
+  EXPECT_EQ(toJson(o.settings), toJson(expected));
+  EXPECT_TRUE(camera);
+  camera.reset();
+  parseOptionsWithSettingsFile({"--view", "front", "--settings", path_}, &camera);
+  EXPECT_FALSE(camera);
+  EXPECT_THROW(readSidecar(path_ + ".missing"), UsageError);
 }
 
 }  // namespace
