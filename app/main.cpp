@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
   try {
     if (mode == "render") return raylab::runRenderCommand(rest);
     if (mode == "bench") return raylab::runBenchCommand(rest);
-    if (mode == "sortbench") return raylab::runSortBenchCommand(argc - 1, argv + 1);
+    if (mode == "sortbench") return raylab::runSortBenchCommand(rest);
     if (mode == "devices") {
       for (const std::string& name : raylab::VulkanContext::listDevices()) std::puts(name.c_str());
       return raylab::kExitOk;

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "app/cli_options.h"
+#include "app/command_errors.h"
 #include "app/scene_setup.h"
 #include "app/sidecar.h"
 #include "renderer/path_tracer.h"
@@ -32,17 +33,13 @@ int runRenderCommand(const std::vector<std::string>& args) {
     return kExitOk;
   }
   std::optional<Viewpoint> sidecarCamera;  // --settings FILE.json: a screenshot sidecar's settings and camera
-  try {
+  const int parsed = withCommandErrors(printUsage, [&] {
     options = parseOptionsWithSettingsFile(args, &sidecarCamera);
     loaded = loadSceneForSettings(options.settings);
     if (sidecarCamera) loaded.view = *sidecarCamera;
-  } catch (const UsageError& e) {
-    printUsage(e.what());
-    return kExitUsage;
-  } catch (const SceneLoadError& e) {
-    std::fprintf(stderr, "raylab: cannot load scene: %s\n", e.what());
-    return kExitBadScene;
-  }
+    return int(kExitOk);
+  });
+  if (parsed != kExitOk) return parsed;
   if (options.out.empty()) options.out = "raylab-render.png";
   const Settings& s = options.settings;
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "app/cli_options.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_context.h"
 #include "scenes/scene.h"
 
 namespace raylab {

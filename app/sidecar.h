@@ -12,7 +12,7 @@
 #include "app/cli_options.h"
 #include "renderer/frame_stats.h"
 #include "renderer/settings.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_context.h"
 #include "scenes/scene.h"
 
 namespace raylab {

@@ -11,10 +11,13 @@
 #include <string>
 #include <vector>
 
-#include "renderer/gpu_buffer.h"
-#include "renderer/gpu_sort.h"
-#include "renderer/vk_check.h"
-#include "renderer/vk_context.h"
+#include "app/cli_options.h"
+#include "app/scene_setup.h"
+#include "renderer/reorder/gpu_sort.h"
+#include "renderer/vk/gpu_buffer.h"
+#include "renderer/vk/gpu_timer.h"
+#include "renderer/vk/stage_timer.h"
+#include "renderer/vk/vk_context.h"
 #include "shaders/sort_types.h"
 
 namespace raylab {
@@ -36,11 +39,10 @@ const char* kUsage =
     "  --validate          enable the Khronos validation layer (exit 1 on any error)\n"
     "  --csv FILE          also write the results as CSV\n"
     "  --radix-group G     radix scatter work-group size (tuning; default: device's)\n"
-    "  --radix-kpt K       radix keys per invocation (tuning; default 15)\n";
+    "  --radix-kpt K       radix keys per invocation (tuning; default 8)\n";
 
-struct BenchUsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+// --help: not an error, but it ends the parse the same way.
+struct HelpRequested {};
 
 // The radix sort's OneSweep variant is benchmarked as a sort of its own.
 enum class BenchSort { Bitonic, Radix, OneSweep };
@@ -61,50 +63,36 @@ struct BenchOptions {
   GpuSorter::Tuning tuning;
 };
 
-uint32_t parseNumber(const std::string& flag, const std::string& text, uint64_t lo, uint64_t hi) {
-  size_t used = 0;
-  unsigned long long v = 0;
-  try {
-    v = std::stoull(text, &used, 10);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || text[0] == '-' || v < lo || v > hi)
-    throw BenchUsageError(flag + ": '" + text + "' is not a number in " + std::to_string(lo) + ".." +
-                          std::to_string(hi));
-  return static_cast<uint32_t>(v);
-}
-
-BenchOptions parseOptions(int argc, char** argv) {
+BenchOptions parseOptions(const std::vector<std::string>& args) {
   BenchOptions o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    if (flag == "--help" || flag == "-h") throw BenchUsageError("");
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& flag = args[i];
+    if (flag == "--help" || flag == "-h") throw HelpRequested{};
     if (flag == "--validate") {
       o.validate = true;
       continue;
     }
-    if (i + 1 >= argc) throw BenchUsageError(flag + " needs a value");
-    const std::string value = argv[++i];
+    if (i + 1 >= args.size()) throw UsageError(flag + " needs a value");
+    const std::string& value = args[++i];
     if (flag == "--n") {
       size_t start = 0;
       while (start <= value.size()) {
         size_t comma = value.find(',', start);
         if (comma == std::string::npos) comma = value.size();
-        o.counts.push_back(parseNumber(flag, value.substr(start, comma - start), 1, kMaxN));
+        o.counts.push_back(parseUint(flag, value.substr(start, comma - start), 1, kMaxN));
         start = comma + 1;
       }
     } else if (flag == "--n-range") {
       const size_t colon = value.find(':');
-      if (colon == std::string::npos) throw BenchUsageError("--n-range wants A:B, e.g. 16:23");
-      const uint32_t a = parseNumber(flag, value.substr(0, colon), 0, 27);
-      const uint32_t b = parseNumber(flag, value.substr(colon + 1), a, 27);
+      if (colon == std::string::npos) throw UsageError("--n-range wants A:B, e.g. 16:23");
+      const uint32_t a = parseUint(flag, value.substr(0, colon), 0, 27);
+      const uint32_t b = parseUint(flag, value.substr(colon + 1), a, 27);
       for (uint32_t e = a; e <= b; ++e) o.counts.push_back(1u << e);
     } else if (flag == "--bits") {
-      o.bits = parseNumber(flag, value, 1, 32);
+      o.bits = parseUint(flag, value, 1, 32);
     } else if (flag == "--dist") {
       if (value != "uniform" && value != "sorted" && value != "reversed" && value != "equal" && value != "few")
-        throw BenchUsageError("--dist: unknown distribution '" + value + "'");
+        throw UsageError("--dist: unknown distribution '" + value + "'");
       o.dist = value;
     } else if (flag == "--sort") {
       if (value == "both") o.sorts = {BenchSort::Bitonic, BenchSort::Radix};
@@ -112,19 +100,19 @@ BenchOptions parseOptions(int argc, char** argv) {
       else if (value == "radix") o.sorts = {BenchSort::Radix};
       else if (value == "onesweep") o.sorts = {BenchSort::OneSweep};
       else if (value == "all") o.sorts = {BenchSort::Bitonic, BenchSort::Radix, BenchSort::OneSweep};
-      else throw BenchUsageError("--sort: unknown sort '" + value + "'");
+      else throw UsageError("--sort: unknown sort '" + value + "'");
     } else if (flag == "--repeat") {
-      o.repeat = parseNumber(flag, value, 1, 100000);
+      o.repeat = parseUint(flag, value, 1, 100000);
     } else if (flag == "--device") {
       o.device = value;
     } else if (flag == "--csv") {
       o.csv = value;
     } else if (flag == "--radix-group") {
-      o.tuning.radixGroupSize = parseNumber(flag, value, 1, 256);
+      o.tuning.radixGroupSize = parseUint(flag, value, 1, 256);
     } else if (flag == "--radix-kpt") {
-      o.tuning.radixKeysPerThread = parseNumber(flag, value, 1, 32);
+      o.tuning.radixKeysPerThread = parseUint(flag, value, 1, 32);
     } else {
-      throw BenchUsageError("unknown flag '" + flag + "'");
+      throw UsageError("unknown flag '" + flag + "'");
     }
   }
   if (o.counts.empty()) o.counts.push_back(1u << 21);
@@ -182,42 +170,22 @@ struct Row {
   bool ok = true;
 };
 
-// Times `repeat` sorts of a fresh copy of the input, each bracketed by timestamps; the copy is outside them.
-class Bench {
- public:
-  Bench(const VulkanContext& ctx) : ctx_(ctx) {
-    VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-    info.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    info.queryCount = 2;
-    VK_CHECK(vkCreateQueryPool(ctx.device(), &info, nullptr, &pool_));
-  }
-  ~Bench() { vkDestroyQueryPool(ctx_.device(), pool_, nullptr); }
-  Bench(const Bench&) = delete;
-  Bench& operator=(const Bench&) = delete;
-
-  double timeOnce(GpuSorter& sorter, const GpuBuffer& srcKeys, const GpuBuffer& srcValues, const GpuBuffer& keys,
-                  const GpuBuffer& values, uint32_t n, uint32_t bits) {
-    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-      vkCmdResetQueryPool(cmd, pool_, 0, 2);
-      VkBufferCopy region{0, 0, VkDeviceSize(n) * 4};
-      vkCmdCopyBuffer(cmd, srcKeys.handle(), keys.handle(), 1, &region);
-      vkCmdCopyBuffer(cmd, srcValues.handle(), values.handle(), 1, &region);
-      computeBarrier(cmd);
-      // Bottom of pipe for both: the first is written once the copies are done, the second once the sort is.
-      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, 0);
-      sorter.record(cmd, keys.address(), values.address(), n, bits);
-      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, 1);
-    });
-    uint64_t stamps[2];
-    VK_CHECK(vkGetQueryPoolResults(ctx_.device(), pool_, 0, 2, sizeof(stamps), stamps, sizeof(uint64_t),
-                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
-    return double(stamps[1] - stamps[0]) * ctx_.info().timestampPeriodNs * 1e-6;
-  }
-
- private:
-  const VulkanContext& ctx_;
-  VkQueryPool pool_ = VK_NULL_HANDLE;
-};
+// Times one sort of a fresh copy of the input with the renderer's named timer scopes; the copy is outside
+// the scope.
+double timeOnce(const VulkanContext& ctx, GpuTimer& timer, GpuSorter& sorter, const GpuBuffer& srcKeys,
+                const GpuBuffer& srcValues, const GpuBuffer& keys, const GpuBuffer& values, uint32_t n, uint32_t bits) {
+  ctx.submitAndWait([&](VkCommandBuffer cmd) {
+    timer.reset(cmd);
+    VkBufferCopy region{0, 0, VkDeviceSize(n) * 4};
+    vkCmdCopyBuffer(cmd, srcKeys.handle(), keys.handle(), 1, &region);
+    vkCmdCopyBuffer(cmd, srcValues.handle(), values.handle(), 1, &region);
+    computeBarrier(cmd);
+    ScopedStage scope(&timer, cmd, "sort");
+    sorter.record(cmd, keys.address(), values.address(), n, bits);
+  });
+  std::vector<StageTime> times = timer.collect();
+  return times.empty() ? 0.0 : times.front().ms;
+}
 
 void printRow(std::FILE* f, const Row& r, bool csv, const std::string& extra = "") {
   const double pairsPerSec = r.medianMs > 0 ? r.n / (r.medianMs * 1e-3) : 0.0;
@@ -238,7 +206,7 @@ int runBench(const BenchOptions& o) {
   const DeviceInfo& dev = ctx.info();
   if (!dev.timestamps || dev.timestampPeriodNs <= 0) {
     std::fprintf(stderr, "raylab sortbench: %s has no timestamp queries on its compute queue\n", dev.name.c_str());
-    return 1;
+    return kExitFailure;
   }
   const uint32_t maxN = *std::max_element(o.counts.begin(), o.counts.end());
   std::printf("sortbench: device %s (driver %s), subgroup %u, %u-bit keys, %s, %u runs (+%d warm-up)\n",
@@ -249,7 +217,7 @@ int runBench(const BenchOptions& o) {
 
   std::vector<Row> rows;
   bool allOk = true;
-  Bench bench(ctx);
+  GpuTimer timer(ctx, 2);
   GpuBuffer keys(ctx, VkDeviceSize(maxN) * 4), values(ctx, VkDeviceSize(maxN) * 4);
   for (BenchSort benchSort : o.sorts) {
     const SortAlgorithm sort = benchSort == BenchSort::Bitonic ? SortAlgorithm::Bitonic : SortAlgorithm::Radix;
@@ -269,7 +237,7 @@ int runBench(const BenchOptions& o) {
       Row row{sortName(benchSort), n};
       std::vector<double> ms;
       for (uint32_t run = 0; run < o.repeat + kWarmups; ++run) {
-        const double t = bench.timeOnce(sorter, srcKeys, srcValues, keys, values, n, o.bits);
+        const double t = timeOnce(ctx, timer, sorter, srcKeys, srcValues, keys, values, n, o.bits);
         if (run == 0) {  // check the first result: every later run sorts the same input the same way
           const std::string err = checkResult(sort, hostKeys, o.bits, keys.downloadVector<uint32_t>(n),
                                               values.downloadVector<uint32_t>(n));
@@ -293,7 +261,7 @@ int runBench(const BenchOptions& o) {
     std::FILE* f = std::fopen(o.csv.c_str(), "w");
     if (!f) {
       std::fprintf(stderr, "raylab sortbench: cannot write %s\n", o.csv.c_str());
-      return 1;
+      return kExitFailure;
     }
     std::fprintf(f, "sort,n,median_ms,min_ms,max_ms,pairs_per_s,check,bits,dist,repeat,device,driver\n");
     auto quoted = [](std::string s) {
@@ -307,28 +275,30 @@ int runBench(const BenchOptions& o) {
   }
   if (o.validate && ctx.validationErrors() > 0) {
     std::fprintf(stderr, "raylab sortbench: the validation layer reported %u errors\n", ctx.validationErrors());
-    return 1;
+    return kExitFailure;
   }
-  return allOk ? 0 : 1;
+  return allOk ? kExitOk : kExitFailure;
 }
 
 }  // namespace
 
-int runSortBenchCommand(int argc, char** argv) {
+int runSortBenchCommand(const std::vector<std::string>& args) {
   BenchOptions options;
   try {
-    options = parseOptions(argc, argv);
-  } catch (const BenchUsageError& e) {
-    const bool help = std::string(e.what()).empty();
-    if (!help) std::fprintf(stderr, "raylab sortbench: %s\n\n", e.what());
-    std::fputs(kUsage, help ? stdout : stderr);
-    return help ? 0 : 2;
+    options = parseOptions(args);
+  } catch (const HelpRequested&) {
+    std::fputs(kUsage, stdout);
+    return kExitOk;
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "raylab sortbench: %s\n\n", e.what());
+    std::fputs(kUsage, stderr);
+    return kExitUsage;
   }
   try {
     return runBench(options);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "raylab sortbench: %s\n", e.what());
-    return 1;
+    return kExitFailure;
   }
 }
 

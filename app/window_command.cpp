@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "app/command_errors.h"
 #include "app/render_command.h"
 #include "app/scene_setup.h"
 #include "app/sidecar.h"
@@ -100,15 +101,11 @@ int runWindowCommand(const std::vector<std::string>& args) {
     return kExitOk;
   }
   WindowOptions options;
-  try {
+  const int parsed = withCommandErrors(printUsage, [&] {
     options = parseWindowOptions(args);
-  } catch (const UsageError& e) {
-    printUsage(e.what());
-    return kExitUsage;
-  } catch (const ScriptError& e) {
-    std::fprintf(stderr, "raylab: %s\n", e.what());
-    return kExitUsage;
-  }
+    return int(kExitOk);
+  });
+  if (parsed != kExitOk) return parsed;
 #ifdef RAYLAB_WITH_WINDOW
   const bool scripted = !options.script.empty();
   if (!haveDisplayVariable()) {
@@ -118,24 +115,17 @@ int runWindowCommand(const std::vector<std::string>& args) {
     }
     return renderHeadless("no display (neither DISPLAY nor WAYLAND_DISPLAY is set)", args);
   }
-  try {
-    return runLabWindow(options);
-  } catch (const NoDisplayError& e) {
-    if (scripted) {
-      std::fprintf(stderr, "raylab: %s\n", e.what());
-      return kExitFailure;
+  return withCommandErrors(printUsage, [&] {
+    try {
+      return runLabWindow(options);
+    } catch (const NoDisplayError& e) {
+      if (scripted) {
+        std::fprintf(stderr, "raylab: %s\n", e.what());
+        return int(kExitFailure);
+      }
+      return renderHeadless(e.what(), args);
     }
-    return renderHeadless(e.what(), args);
-  } catch (const ScriptError& e) {
-    std::fprintf(stderr, "raylab: %s\n", e.what());
-    return kExitUsage;
-  } catch (const UsageError& e) {
-    printUsage(e.what());
-    return kExitUsage;
-  } catch (const SceneLoadError& e) {
-    std::fprintf(stderr, "raylab: cannot load scene: %s\n", e.what());
-    return kExitBadScene;
-  }
+  });
 #else
   (void)haveDisplayVariable;
   if (!options.script.empty()) {

@@ -1,6 +1,6 @@
 #include "renderer/gpu_scene.h"
 
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_context.h"
 
 namespace raylab {
 namespace {

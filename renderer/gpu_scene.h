@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "renderer/bvh.h"
-#include "renderer/gpu_buffer.h"
+#include "renderer/vk/gpu_buffer.h"
 #include "scenes/scene.h"
 #include "shaders/shared_types.h"
 

@@ -1,10 +1,11 @@
 #include "renderer/heatmap_pass.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "renderer/path_buffers.h"
-#include "renderer/stage_timer.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/stage_timer.h"
+#include "renderer/vk/vk_context.h"
 #include "shaders/heatmap_types.h"
 
 namespace raylab {
@@ -17,6 +18,40 @@ HeatmapPass::HeatmapPass(const VulkanContext& ctx, uint32_t pixelCount)
       colorize_(ctx, "heatmap_colorize", sizeof(gpu::HeatmapPush), RL_PATH_GROUP_SIZE),
       heat_(ctx, VkDeviceSize(pixelCount) * 4),
       range_(ctx, 4 * 4, MemoryKind::HostVisible) {}
+
+void HeatmapPass::beginFrame(VkCommandBuffer cmd, const Settings& settings) {
+  view_ = settings.heatmap;
+  bounce_ = std::min(settings.heatmapBounce, settings.bounces - 1);
+  if (view_ != HeatmapView::None) recordClear(cmd);
+}
+
+void HeatmapPass::afterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
+                             VkDeviceAddress keyParams, StageTimer* timer) const {
+  if (view_ != HeatmapView::None && view_ != HeatmapView::SortKey && bounce == bounce_)
+    recordGather(cmd, view_, buffers, stateSet, keyParams, false, timer);
+}
+
+void HeatmapPass::afterKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
+                            VkDeviceAddress keyParams, StageTimer* timer) const {
+  if (view_ == HeatmapView::SortKey && bounce + 1 == bounce_)
+    recordGather(cmd, view_, buffers, stateSet, keyParams, false, timer);
+}
+
+void HeatmapPass::afterMegakernel(VkCommandBuffer cmd, const PathBuffers& buffers, StageTimer* timer) const {
+  // Only per-path totals exist after a megakernel: the whole path's traversal steps.
+  if (view_ == HeatmapView::TraversalSteps || view_ == HeatmapView::WarpEfficiency)
+    recordGather(cmd, view_, buffers, 0, 0, true, timer);
+}
+
+bool HeatmapPass::colorize(VkCommandBuffer cmd, const PathBuffers& buffers, StageTimer* timer) const {
+  if (view_ == HeatmapView::None) return false;
+  recordColorize(cmd, view_, buffers, timer);
+  return true;
+}
+
+void HeatmapPass::finishFrame(FrameStats& stats) const {
+  if (view_ != HeatmapView::None) readRange(view_, stats);
+}
 
 void HeatmapPass::recordClear(VkCommandBuffer cmd) const {
   heat_.recordFill(cmd, RL_HEAT_EMPTY);

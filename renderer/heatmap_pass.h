@@ -5,9 +5,9 @@
 
 #include <vulkan/vulkan.h>
 
-#include "renderer/compute_pipeline.h"
+#include "renderer/vk/compute_pipeline.h"
 #include "renderer/frame_stats.h"
-#include "renderer/gpu_buffer.h"
+#include "renderer/vk/gpu_buffer.h"
 #include "renderer/settings.h"
 
 namespace raylab {
@@ -19,6 +19,20 @@ struct PathBuffers;
 class HeatmapPass {
  public:
   HeatmapPass(const VulkanContext& ctx, uint32_t pixelCount);
+
+  // The frame loop's calls: which view is shown and at which bounce is decided here. beginFrame() takes
+  // the view and the bounce (Settings::heatmapBounce within the frame's bounces) and clears; the after*
+  // calls gather only where that view and bounce are; colorize() returns false when no view is shown (the
+  // caller tonemaps instead). keyParams: KeyStage::paramsAddress() while sorting, else 0.
+  void beginFrame(VkCommandBuffer cmd, const Settings& settings);
+  void afterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
+                  VkDeviceAddress keyParams, StageTimer* timer) const;
+  // After the keys made during `bounce` for the rays of bounce + 1.
+  void afterKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
+                 VkDeviceAddress keyParams, StageTimer* timer) const;
+  void afterMegakernel(VkCommandBuffer cmd, const PathBuffers& buffers, StageTimer* timer) const;
+  bool colorize(VkCommandBuffer cmd, const PathBuffers& buffers, StageTimer* timer) const;
+  void finishFrame(FrameStats& stats) const;
 
   // Clears the per-pixel values and the range; call at the start of a frame that shows a heatmap.
   void recordClear(VkCommandBuffer cmd) const;
@@ -34,6 +48,8 @@ class HeatmapPass {
  private:
   ComputePipeline gather_, colorize_;
   GpuBuffer heat_, range_;
+  HeatmapView view_ = HeatmapView::None;
+  uint32_t bounce_ = 0;
 };
 
 }  // namespace raylab

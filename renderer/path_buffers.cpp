@@ -1,15 +1,21 @@
 #include "renderer/path_buffers.h"
 
-#include "renderer/vk_context.h"
+#include "renderer/settings.h"
+#include "renderer/vk/vk_context.h"
 
 namespace raylab {
 
-PathBuffers::PathBuffers(const VulkanContext& ctx, uint32_t width, uint32_t height, uint32_t spp, uint32_t bounces)
+static_assert(RL_MAX_BOUNCES == SettingLimits::kMaxBounces);
+
+PathBuffers::PathBuffers(const VulkanContext& ctx, uint32_t width, uint32_t height, uint32_t spp)
     : pathCount(width * height * spp), pixelCount(width * height) {
   const VkDeviceSize n = pathCount;
-  const VkDeviceSize elementBytes[7] = {16, 16, 16, 16, 4, 4, 4};
+  VkDeviceSize elementBytes[RL_STATE_ARRAY_COUNT];
+  elementBytes[RL_STATE_ORIGIN] = elementBytes[RL_STATE_DIRECTION] = 16;
+  elementBytes[RL_STATE_THROUGHPUT] = elementBytes[RL_STATE_RADIANCE] = 16;
+  elementBytes[RL_STATE_PATH_ID] = elementBytes[RL_STATE_ALIVE] = elementBytes[RL_STATE_PREDICTED_LENGTH] = 4;
   for (auto& set : state)
-    for (int a = 0; a < 7; ++a) set[a] = GpuBuffer(ctx, n * elementBytes[a]);
+    for (int a = 0; a < RL_STATE_ARRAY_COUNT; ++a) set[a] = GpuBuffer(ctx, n * elementBytes[a]);
   hitT = GpuBuffer(ctx, n * 4);
   hitTriangle = GpuBuffer(ctx, n * 4);
   hitBarycentric = GpuBuffer(ctx, n * 8);
@@ -17,24 +23,24 @@ PathBuffers::PathBuffers(const VulkanContext& ctx, uint32_t width, uint32_t heig
   results = GpuBuffer(ctx, n * 16);
   accumulation = GpuBuffer(ctx, VkDeviceSize(pixelCount) * 16);
   image = GpuBuffer(ctx, VkDeviceSize(pixelCount) * 4);
-  counters = GpuBuffer(ctx, kCounterCount * 4);
-  counterHistory = GpuBuffer(ctx, VkDeviceSize(kCounterCount) * 4 * (bounces + 1), MemoryKind::HostVisible);
+  counters = GpuBuffer(ctx, counterBytes(RL_MAX_BOUNCES));
+  counterHistory = GpuBuffer(ctx, counterBytes(RL_MAX_BOUNCES), MemoryKind::HostVisible);
   keys = GpuBuffer(ctx, n * 4);
   values = GpuBuffer(ctx, n * 4);
-  live = GpuBuffer(ctx, 4 * 4);
+  live = GpuBuffer(ctx, RL_LIVE_WORDS * sizeof(uint32_t));
   frameBlock = GpuBuffer(ctx, sizeof(gpu::GpuFrame));
 }
 
 gpu::GpuFrame PathBuffers::addresses() const {
   gpu::GpuFrame f{};
   for (int s = 0; s < 2; ++s) {
-    f.state[s].origin = state[s][0].address();
-    f.state[s].direction = state[s][1].address();
-    f.state[s].throughput = state[s][2].address();
-    f.state[s].radiance = state[s][3].address();
-    f.state[s].pathId = state[s][4].address();
-    f.state[s].alive = state[s][5].address();
-    f.state[s].predictedLength = state[s][6].address();
+    f.state[s].origin = state[s][RL_STATE_ORIGIN].address();
+    f.state[s].direction = state[s][RL_STATE_DIRECTION].address();
+    f.state[s].throughput = state[s][RL_STATE_THROUGHPUT].address();
+    f.state[s].radiance = state[s][RL_STATE_RADIANCE].address();
+    f.state[s].pathId = state[s][RL_STATE_PATH_ID].address();
+    f.state[s].alive = state[s][RL_STATE_ALIVE].address();
+    f.state[s].predictedLength = state[s][RL_STATE_PREDICTED_LENGTH].address();
   }
   f.hits.t = hitT.address();
   f.hits.triangle = hitTriangle.address();

@@ -4,29 +4,34 @@
 
 #include <cstdint>
 
-#include "renderer/gpu_buffer.h"
+#include "renderer/vk/gpu_buffer.h"
 #include "shaders/shared_types.h"
 
 namespace raylab {
 
 class VulkanContext;
 
-// Slots of the counters buffer (see shaders/shared_types.h, GpuFrame::counters).
-enum CounterSlot : uint32_t { kCounterRays = 0, kCounterSimtActive = 1, kCounterSimtSlots = 2, kCounterCount = 4 };
-
 struct PathBuffers {
-  PathBuffers(const VulkanContext& ctx, uint32_t width, uint32_t height, uint32_t sppPerFrame, uint32_t bounces);
+  // Nothing here depends on the bounce count: the counters have room for RL_MAX_BOUNCES.
+  PathBuffers(const VulkanContext& ctx, uint32_t width, uint32_t height, uint32_t sppPerFrame);
 
   uint32_t pathCount = 0;
   uint32_t pixelCount = 0;
-  GpuBuffer state[2][7];  // origin, direction, throughput, radiance, pathId, alive, predictedLength
+  GpuBuffer state[2][RL_STATE_ARRAY_COUNT];  // indexed by RL_STATE_* (GpuPathState's arrays, in order)
   GpuBuffer hitT, hitTriangle, hitBarycentric, hitSteps;
   GpuBuffer results, accumulation, image;
-  GpuBuffer counters;         // live counters, cleared after every trace
-  GpuBuffer counterHistory;   // kCounterCount per bounce, copied after every trace (host visible)
+  GpuBuffer counters;         // RL_COUNTER_* slots per bounce, cleared at the start of a frame
+  GpuBuffer counterHistory;   // host-visible copy of `counters`, made once at the end of a frame
   GpuBuffer keys, values;     // sort input/output
-  GpuBuffer live;             // live-path count and indirect dispatch size (GpuFrame::live)
+  GpuBuffer live;             // RL_LIVE_* slots: live-path count and indirect dispatch size
   GpuBuffer frameBlock;       // GpuFrame
+
+  // Byte offset of the indirect dispatch arguments in `live` (trace and shade dispatch from there).
+  static constexpr VkDeviceSize kLiveDispatchOffset = RL_LIVE_DISPATCH * sizeof(uint32_t);
+  // Bytes of counters for `bounces` bounces.
+  static constexpr VkDeviceSize counterBytes(uint32_t bounces) {
+    return VkDeviceSize(bounces) * RL_COUNTER_STRIDE * sizeof(uint32_t);
+  }
 
   // The GpuFrame block with every address filled in; the caller sets camera, scene and frame parameters.
   gpu::GpuFrame addresses() const;

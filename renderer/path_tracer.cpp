@@ -4,10 +4,11 @@
 #include <chrono>
 #include <cmath>
 
-#include "renderer/frame_reorder.h"
+#include "renderer/reorder/path_sorter.h"
 #include "renderer/heatmap_pass.h"
-#include "renderer/vk_check.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/stage_timer.h"
+#include "renderer/vk/vk_check.h"
+#include "renderer/vk/vk_context.h"
 #include "renderer/warp_efficiency.h"
 
 namespace raylab {
@@ -49,47 +50,60 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Setti
       megakernel_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup, {0}),
       megakernelCounting_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup, {1}),
       timer_(ctx) {
-  reorder_ = std::make_unique<FrameReorder>(ctx, scene, settings_, camera_.position,
-                                            settings_.width * settings_.height * settings_.sppPerFrame);
   allocate();
+  pathSorter_ = std::make_unique<PathSorter>(ctx, scene, settings_, camera_.position, buffers_->pathCount);
+  restartAccumulation();
 }
 
 PathTracer::~PathTracer() { vkDeviceWaitIdle(ctx_.device()); }
 
 void PathTracer::allocate() {
   buffers_.reset();
-  buffers_ = std::make_unique<PathBuffers>(ctx_, settings_.width, settings_.height, settings_.sppPerFrame,
-                                           settings_.bounces);
-  reorder_->resize(buffers_->pathCount);
+  buffers_ = std::make_unique<PathBuffers>(ctx_, settings_.width, settings_.height, settings_.sppPerFrame);
   heatmap_ = std::make_unique<HeatmapPass>(ctx_, buffers_->pixelCount);
-  resetAccumulation();
 }
 
-void PathTracer::resetAccumulation() {
+void PathTracer::restartAccumulation() {
   frameIndex_ = 0;
   ctx_.submitAndWait([&](VkCommandBuffer cmd) { buffers_->accumulation.recordFill(cmd, 0); });
 }
 
+// The one place a change of settings or camera is acted on; every part gets the same SettingsChange.
+void PathTracer::apply(const SettingsChange& change) {
+  if (change.reallocate) allocate();
+  pathSorter_->apply(settings_, camera_.position, buffers_->pathCount, change);
+  if (change.reallocate || change.resetAccumulation) restartAccumulation();
+}
+
 void PathTracer::applySettings(const Settings& next) {
-  Settings previous = settings_;
+  SettingsChange change = SettingsChange::between(settings_, next);
   settings_ = next;
-  bool resized = next.width != previous.width || next.height != previous.height ||
-                 next.sppPerFrame != previous.sppPerFrame || next.bounces != previous.bounces;
-  reorder_->configure(settings_, camera_.position);
-  if (resized)
-    allocate();
-  else if (next.requiresAccumulationReset(previous))
-    resetAccumulation();
+  apply(change);
 }
 
 void PathTracer::setCamera(const Viewpoint& camera) {
   camera_ = camera;
-  reorder_->configure(settings_, camera_.position);
-  resetAccumulation();
+  apply(SettingsChange::cameraMove(settings_));
 }
 
+// One frame: generate, the bounces, accumulate, then tonemap (or the heatmap instead).
 void PathTracer::recordFrame(VkCommandBuffer cmd) {
   timer_.reset(cmd);
+  recordFrameBlock(cmd);
+  heatmap_->beginFrame(cmd, settings_);
+  const gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0};
+  if (settings_.kernel == Kernel::Megakernel)
+    recordMegakernel(cmd, push);
+  else
+    recordWavefront(cmd, push);
+  recordStage(cmd, &timer_, "accumulate", [&] { accumulate_.dispatchThreads(cmd, push, buffers_->pixelCount); });
+  if (!heatmap_->colorize(cmd, *buffers_, &timer_))
+    recordStage(cmd, &timer_, "tonemap", [&] { tonemap_.dispatchThreads(cmd, push, buffers_->pixelCount); });
+  recordCountersToHost(cmd);
+}
+
+// The GpuFrame block every stage reads (addresses, camera, frame parameters), and cleared counters.
+void PathTracer::recordFrameBlock(VkCommandBuffer cmd) {
   gpu::GpuFrame frame = buffers_->addresses();
   frame.camera = makeGpuCamera(camera_, settings_.width, settings_.height);
   frame.scene = scene_->block();
@@ -103,97 +117,65 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
   vkCmdUpdateBuffer(cmd, buffers_->frameBlock.handle(), 0, sizeof(frame), &frame);
   buffers_->counters.recordFill(cmd, 0);
   computeBarrier(cmd);
-  const HeatmapView view = settings_.heatmap;
-  if (view != HeatmapView::None) heatmap_->recordClear(cmd);
-
-  gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0, settings_.countSimt ? 1u : 0u, 0};
-  if (settings_.kernel == Kernel::Megakernel) {
-    ScopedStage s(&timer_, cmd, "megakernel");
-    (settings_.countSimt ? megakernelCounting_ : megakernel_).dispatchThreads(cmd, push, buffers_->pathCount);
-    computeBarrier(cmd);
-    recordTraceCounters(cmd, 0);
-    if (view == HeatmapView::TraversalSteps || view == HeatmapView::WarpEfficiency)
-      heatmap_->recordGather(cmd, view, *buffers_, 0, 0, true, &timer_);
-  } else {
-    recordWavefront(cmd, push);
-  }
-  {
-    ScopedStage s(&timer_, cmd, "accumulate");
-    accumulate_.dispatchThreads(cmd, push, buffers_->pixelCount);
-    computeBarrier(cmd);
-  }
-  if (view != HeatmapView::None) {
-    heatmap_->recordColorize(cmd, view, *buffers_, &timer_);
-  } else {
-    ScopedStage s(&timer_, cmd, "tonemap");
-    tonemap_.dispatchThreads(cmd, push, buffers_->pixelCount);
-    computeBarrier(cmd);
-  }
-  // Counters and readbacks are read by the host after the frame's fence.
-  VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-  toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
 }
 
-uint32_t PathTracer::heatmapBounce() const { return std::min(settings_.heatmapBounce, settings_.bounces - 1); }
+void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push) {
+  const ComputePipeline& megakernel = settings_.countSimt ? megakernelCounting_ : megakernel_;
+  recordStage(cmd, &timer_, "megakernel", [&] { megakernel.dispatchThreads(cmd, push, buffers_->pathCount); });
+  if (detailedStats_) recordStepsReadback(cmd, 0);
+  heatmap_->afterMegakernel(cmd, *buffers_, &timer_);
+}
 
-// The bounce loop of DESIGN.md: trace, learn, shade, then keys, sort and reorder before the next bounce.
-// Trace and shade are dispatched indirectly over the live paths: all of them until a sort has moved the
-// finished paths behind the live ones (GpuFrame::live).
-void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& basePush) {
-  gpu::PathStagePush push = basePush;
+// The bounce loop: trace, learn, shade, then keys, sort and reorder before the next bounce. Trace and
+// shade are dispatched indirectly over the live paths: all of them until a sort has moved the finished
+// paths behind the live ones (GpuFrame::live).
+void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
   const uint32_t n = buffers_->pathCount;
-  const HeatmapView view = settings_.heatmap;
-  const VkDeviceAddress keyParams = settings_.sorts() ? reorder_->keys().paramsAddress() : 0;
-  {
-    ScopedStage s(&timer_, cmd, "generate");
-    generate_.dispatchThreads(cmd, push, n);
-    computeBarrier(cmd);
-  }
+  const bool sorting = settings_.sorts();
+  const VkDeviceAddress keyParams = sorting ? pathSorter_->keys().paramsAddress() : 0;
+  const ComputePipeline& trace = settings_.countSimt ? traceCounting_ : trace_;
+  const VkBuffer live = buffers_->live.handle();
+  const VkDeviceSize liveDispatch = PathBuffers::kLiveDispatchOffset;
+  recordStage(cmd, &timer_, "generate", [&] { generate_.dispatchThreads(cmd, push, n); });
   for (uint32_t b = 0; b < settings_.bounces; ++b) {
     timer_.setBounce(static_cast<int>(b));
     push.bounce = b;
-    {
-      ScopedStage s(&timer_, cmd, "trace");
-      (settings_.countSimt ? traceCounting_ : trace_).dispatchIndirect(cmd, push, buffers_->live.handle(), 4);
-      computeBarrier(cmd);
-    }
-    recordTraceCounters(cmd, b);
-    if (settings_.sorts()) reorder_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
-    if (view != HeatmapView::None && view != HeatmapView::SortKey && b == heatmapBounce())
-      heatmap_->recordGather(cmd, view, *buffers_, push.stateSet, keyParams, false, &timer_);
-    {
-      ScopedStage s(&timer_, cmd, "shade");
-      shade_.dispatchIndirect(cmd, push, buffers_->live.handle(), 4);
-      computeBarrier(cmd);
-    }
-    if (b + 1 < settings_.bounces && settings_.sorts()) {
-      reorder_->recordKeys(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
-      if (view == HeatmapView::SortKey && b + 1 == heatmapBounce())
-        heatmap_->recordGather(cmd, view, *buffers_, push.stateSet, keyParams, false, &timer_);
-      push.stateSet = reorder_->recordSortAndGather(cmd, *buffers_, push.stateSet, &timer_);
+    recordStage(cmd, &timer_, "trace", [&] { trace.dispatchIndirect(cmd, push, live, liveDispatch); });
+    if (detailedStats_) recordStepsReadback(cmd, b);
+    if (sorting) pathSorter_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
+    heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, keyParams, &timer_);
+    recordStage(cmd, &timer_, "shade", [&] { shade_.dispatchIndirect(cmd, push, live, liveDispatch); });
+    if (sorting && b + 1 < settings_.bounces) {
+      pathSorter_->recordKeys(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
+      heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, keyParams, &timer_);
+      push.stateSet = pathSorter_->recordSortAndGather(cmd, *buffers_, push.stateSet, &timer_);
     }
   }
   timer_.setBounce(-1);
 }
 
-// Saves this trace's counters (rays, SIMT lanes) into the bounce's history slot and clears them; in the
-// detailed mode also keeps the per-path traversal steps for the virtual warp efficiency.
-void PathTracer::recordTraceCounters(VkCommandBuffer cmd, uint32_t bounce) {
-  VkBufferCopy copy{0, VkDeviceSize(bounce) * kCounterCount * 4, kCounterCount * 4};
-  vkCmdCopyBuffer(cmd, buffers_->counters.handle(), buffers_->counterHistory.handle(), 1, &copy);
-  if (detailedStats_) {
-    // Released again by gatherCounters(): only the frame that asked for them holds these copies.
-    if (stepsReadback_.size() <= bounce) stepsReadback_.resize(bounce + 1);
-    stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
-    VkBufferCopy steps{0, 0, VkDeviceSize(buffers_->pathCount) * 4};
-    vkCmdCopyBuffer(cmd, buffers_->hitSteps.handle(), stepsReadback_[bounce].handle(), 1, &steps);
-  }
+// Detailed mode: keeps this trace's per-path traversal steps (the next trace overwrites them) for the
+// virtual warp efficiency. Released again by gatherCounters(): only the frame that asked holds them.
+void PathTracer::recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce) {
+  if (stepsReadback_.size() <= bounce) stepsReadback_.resize(bounce + 1);
+  stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
+  VkBufferCopy steps{0, 0, VkDeviceSize(buffers_->pathCount) * 4};
+  vkCmdCopyBuffer(cmd, buffers_->hitSteps.handle(), stepsReadback_[bounce].handle(), 1, &steps);
   computeBarrier(cmd);
-  buffers_->counters.recordFill(cmd, 0);
-  computeBarrier(cmd);
+}
+
+uint32_t PathTracer::countedBounces() const { return settings_.kernel == Kernel::Megakernel ? 1 : settings_.bounces; }
+
+// This frame's counters, one slot set per bounce, in one copy; then everything the host reads after the
+// frame's fence (counters, readbacks) is made visible to it.
+void PathTracer::recordCountersToHost(VkCommandBuffer cmd) {
+  VkBufferCopy counters{0, 0, PathBuffers::counterBytes(countedBounces())};
+  vkCmdCopyBuffer(cmd, buffers_->counters.handle(), buffers_->counterHistory.handle(), 1, &counters);
+  VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+  toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
 }
 
 const FrameStats& PathTracer::renderFrame() {
@@ -210,8 +192,8 @@ const FrameStats& PathTracer::finishFrame(double wallMs) {
   stats_.stages = timer_.collect();
   stats_.frameMs = timer_.spanMs();
   gatherCounters();
-  if (settings_.sorts()) reorder_->finishFrame(stats_, detailedStats_);
-  if (settings_.heatmap != HeatmapView::None) heatmap_->readRange(settings_.heatmap, stats_);
+  if (settings_.sorts()) pathSorter_->finishFrame(stats_, detailedStats_);
+  heatmap_->finishFrame(stats_);
   stats_.pathStateBytes = buffers_->pathStateBytes();
   stats_.sceneBytes = scene_->memoryBytes();
   double seconds = (stats_.frameMs > 0.0 ? stats_.frameMs : wallMs) * 1e-3;
@@ -222,16 +204,15 @@ const FrameStats& PathTracer::finishFrame(double wallMs) {
 }
 
 void PathTracer::gatherCounters() {
-  const bool mega = settings_.kernel == Kernel::Megakernel;
-  const uint32_t rounds = mega ? 1 : settings_.bounces;
+  const uint32_t rounds = countedBounces();
   const auto* history = static_cast<const uint32_t*>(buffers_->counterHistory.mapped());
   for (uint32_t b = 0; b < rounds; ++b) {
-    const uint32_t* c = history + b * kCounterCount;
+    const uint32_t* c = history + b * RL_COUNTER_STRIDE;
     BounceStats bs;
-    bs.rays = c[kCounterRays];
-    if (settings_.countSimt && c[kCounterSimtSlots] > 0)
-      bs.simtEfficiency = static_cast<double>(c[kCounterSimtActive]) /
-                          (static_cast<double>(c[kCounterSimtSlots]) * ctx_.info().subgroupSize);
+    bs.rays = c[RL_COUNTER_RAYS];
+    if (settings_.countSimt && c[RL_COUNTER_SIMT_SLOTS] > 0)
+      bs.simtEfficiency = static_cast<double>(c[RL_COUNTER_SIMT_ACTIVE]) /
+                          (static_cast<double>(c[RL_COUNTER_SIMT_SLOTS]) * ctx_.info().subgroupSize);
     if (detailedStats_ && b < stepsReadback_.size()) {
       const auto* steps = static_cast<const uint32_t*>(stepsReadback_[b].mapped());
       WarpEfficiency w = virtualWarpEfficiency(steps, buffers_->pathCount, 32);

@@ -5,10 +5,10 @@
 #include <memory>
 #include <vector>
 
-#include "renderer/compute_pipeline.h"
+#include "renderer/vk/compute_pipeline.h"
 #include "renderer/frame_stats.h"
 #include "renderer/gpu_scene.h"
-#include "renderer/gpu_timer.h"
+#include "renderer/vk/gpu_timer.h"
 #include "renderer/path_buffers.h"
 #include "renderer/settings.h"
 #include "scenes/scene.h"
@@ -16,7 +16,7 @@
 namespace raylab {
 
 class VulkanContext;
-class FrameReorder;
+class PathSorter;
 class HeatmapPass;
 
 class PathTracer {
@@ -24,11 +24,12 @@ class PathTracer {
   PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera);
   ~PathTracer();
 
-  // Applies new settings: restarts accumulation and caches only where `Settings` says it must.
+  // Applies new settings: reallocates, restarts accumulation, resets caches and uploads key parameters
+  // only where SettingsChange::between says it must.
   void applySettings(const Settings& settings);
   void setCamera(const Viewpoint& camera);
   // Starts accumulating from zero (the frame index too, so a restarted run repeats its samples).
-  void restartAccumulation() { resetAccumulation(); }
+  void restartAccumulation();
   const Settings& settings() const { return settings_; }
   const Viewpoint& camera() const { return camera_; }
 
@@ -52,19 +53,21 @@ class PathTracer {
 
  private:
   void allocate();
-  void resetAccumulation();
-  void recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& basePush);
-  void recordTraceCounters(VkCommandBuffer cmd, uint32_t bounce);
+  void apply(const SettingsChange& change);
+  void recordFrameBlock(VkCommandBuffer cmd);
+  void recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push);
+  void recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push);
+  void recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce);
+  void recordCountersToHost(VkCommandBuffer cmd);
   void gatherCounters();
-  // Bounce whose paths the heatmap shows, within this frame's bounces.
-  uint32_t heatmapBounce() const;
+  uint32_t countedBounces() const;
 
   const VulkanContext& ctx_;
   Settings settings_;
   Viewpoint camera_;
   std::unique_ptr<GpuSceneData> scene_;
   std::unique_ptr<PathBuffers> buffers_;
-  std::unique_ptr<FrameReorder> reorder_;
+  std::unique_ptr<PathSorter> pathSorter_;
   std::unique_ptr<HeatmapPass> heatmap_;
   ComputePipeline generate_, trace_, traceCounting_, shade_, accumulate_, tonemap_, megakernel_,
       megakernelCounting_;

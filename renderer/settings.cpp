@@ -88,4 +88,24 @@ bool Settings::requiresCacheReset(const Settings& p) const {
          clampDistance != p.clampDistance || fixedFactor != p.fixedFactor;
 }
 
+SettingsChange SettingsChange::between(const Settings& p, const Settings& n) {
+  SettingsChange c;
+  // The bounce count is not here: path state does not depend on it (the counters have room for the most).
+  c.reallocate = n.width != p.width || n.height != p.height || n.sppPerFrame != p.sppPerFrame;
+  c.resetAccumulation = n.requiresAccumulationReset(p);
+  c.resetCache = n.requiresCacheReset(p);
+  // The thresholds below keep what was learned but live in the uploaded parameters, as does the length
+  // unit, which follows the path count.
+  c.keyParameters = c.resetCache || c.reallocate || n.emaAlpha != p.emaAlpha || n.gaussOutlier != p.gaussOutlier ||
+                    n.gaussReset != p.gaussReset;
+  return c;
+}
+
+SettingsChange SettingsChange::cameraMove(const Settings& s) {
+  SettingsChange c;
+  c.resetAccumulation = true;
+  c.keyParameters = s.clampToCamera;
+  return c;
+}
+
 }  // namespace raylab

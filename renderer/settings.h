@@ -1,6 +1,6 @@
 // The one source of truth for what is rendered and how: the CLI parses into it, the UI edits it, the
-// benchmark sweeps it and a screenshot's sidecar records it. Comparing with the previous Settings decides
-// what must restart (accumulation, length caches).
+// benchmark sweeps it and a screenshot's sidecar records it. Comparing with the previous Settings, once
+// (SettingsChange::between), decides what must be reallocated, restarted or uploaded.
 #pragma once
 
 #include <cstdint>
@@ -110,6 +110,20 @@ struct Settings {
   // True when length caches learned under `previous` no longer apply.
   bool requiresCacheReset(const Settings& previous) const;
   bool operator==(const Settings&) const = default;
+};
+
+// What going from one Settings to the next requires of the renderer. PathTracer computes it once per
+// change and passes it down, so no stage keeps a copy of the settings to diff against.
+struct SettingsChange {
+  bool reallocate = false;         // the path count changed (size, samples per frame): new path buffers
+  bool resetAccumulation = false;  // Settings::requiresAccumulationReset: the image starts again
+  bool resetCache = false;         // Settings::requiresCacheReset: what the length caches learned is void
+  bool keyParameters = false;      // the key grid, cache thresholds or path bound changed: rebuild, upload
+
+  static SettingsChange between(const Settings& previous, const Settings& next);
+  // A camera move: the image starts again; the key grid moves only when it is clamped to the camera.
+  static SettingsChange cameraMove(const Settings& settings);
+  bool operator==(const SettingsChange&) const = default;
 };
 
 }  // namespace raylab

@@ -6,7 +6,7 @@
 
 #include "renderer/frame_stats.h"
 #include "renderer/settings.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_context.h"
 
 namespace raylab {
 

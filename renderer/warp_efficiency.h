@@ -1,4 +1,4 @@
-// Virtual warp efficiency (DESIGN.md): device-independent SIMT coherence from per-path loop counts.
+// Virtual warp efficiency: device-independent SIMT coherence from per-path loop counts.
 // For each group of W consecutive threads in dispatch order, efficiency = sum(n_i) / (W * max n_i); the
 // frame's figure weights each warp by W * max n_i, i.e. sum(n_i) / sum(W * max n_i) over all warps.
 #pragma once

@@ -6,19 +6,15 @@
 #include "shared_types.h"
 #include "path_shading.glsl"
 #include "path_stage.glsl"
+#include "live_paths.glsl"
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   uint i = gl_GlobalInvocationID.x;
-  if (i == 0u) {
-    f.live.v[0] = f.pathCount;
-    f.live.v[1] = (f.pathCount + RL_PATH_GROUP_SIZE - 1u) / RL_PATH_GROUP_SIZE;
-    f.live.v[2] = 1u;
-    f.live.v[3] = 1u;
-  }
+  if (i == 0u) writeLivePaths(f.live, f.pathCount);
   if (i >= f.pathCount) return;
   GpuPathState s = f.state[pc.stateSet];
-  uint rng = rngSeed(i, f.frameIndex, 0u, f.seed, 2u);
+  uint rng = rngSeed(i, f.frameIndex, 0u, f.seed, RL_RNG_CAMERA);
   PathVars p = cameraPath(f.camera, i / f.sppPerFrame, f.width, f.height, rng);
   storePath(s, i, p);
   s.pathId.v[i] = i;

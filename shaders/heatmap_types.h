@@ -32,6 +32,7 @@ struct HeatmapPush {
 };
 
 #ifdef __cplusplus
+static_assert(sizeof(HeatmapPush) == 56);
 }  // namespace raylab::gpu
 #endif
 #endif

@@ -128,6 +128,8 @@ struct KeyLearnPush {
 };
 
 #ifdef __cplusplus
+static_assert(sizeof(KeyPush) == 48);
+static_assert(sizeof(KeyLearnPush) == 32);
 }  // namespace raylab::gpu
 #endif
 #endif

@@ -216,7 +216,7 @@ uint keyCached(GpuKeyParams P, KeyEnv env, KeyPath path, bool gaussian, out floa
     GpuCacheEntry c = P.cache.entries.v[e];
     if (c.count > 0u && !gaussian) len = clampLength(c.mean, P.cache.lengthMax);
     if (c.count > 0u && gaussian) {
-      uint rng = rngSeed(path.pathId, env.frameIndex, env.bounce, env.seed, 1u);
+      uint rng = rngSeed(path.pathId, env.frameIndex, env.bounce, env.seed, RL_RNG_KEY);
       precise float sampled = c.mean + c.sigma * gaussianSample(rng);
       len = clampLength(sampled, P.cache.lengthMax);
     }

@@ -5,26 +5,16 @@
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
 #include "shared_types.h"
+#include "live_paths.glsl"
 
 layout(local_size_x_id = 0) in;
-layout(push_constant, scalar) uniform Push {
-  UintBuf sortedKeys;
-  UintBuf live;
-  uint count;  // sorted elements
-} pc;
-
-void writeLive(uint n) {
-  pc.live.v[0] = n;
-  pc.live.v[1] = (n + RL_PATH_GROUP_SIZE - 1u) / RL_PATH_GROUP_SIZE;
-  pc.live.v[2] = 1u;
-  pc.live.v[3] = 1u;
-}
+layout(push_constant, scalar) uniform Push { LiveCountPush pc; };
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= pc.count) return;
   bool here = pc.sortedKeys.v[i] != RL_DEAD_KEY;
-  if (i == 0u && !here) writeLive(0u);
+  if (i == 0u && !here) writeLivePaths(pc.live, 0u);
   // Exactly one thread sees the boundary between the last live and the first finished path.
-  if (here && (i + 1u == pc.count || pc.sortedKeys.v[i + 1u] == RL_DEAD_KEY)) writeLive(i + 1u);
+  if (here && (i + 1u == pc.count || pc.sortedKeys.v[i + 1u] == RL_DEAD_KEY)) writeLivePaths(pc.live, i + 1u);
 }

@@ -12,19 +12,20 @@
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   gCounters = f.counters;
+  gCounterBase = 0u;  // every bounce counts in bounce 0's slots
   uint id = gl_GlobalInvocationID.x;
   if (id >= f.pathCount) {
     countRays(0u);
     return;
   }
-  uint rng = rngSeed(id, f.frameIndex, 0u, f.seed, 2u);
+  uint rng = rngSeed(id, f.frameIndex, 0u, f.seed, RL_RNG_CAMERA);
   PathVars p = cameraPath(f.camera, id / f.sppPerFrame, f.width, f.height, rng);
   uint steps = 0u, rays = 0u;
   for (uint b = 0u; b < f.bounceCount && p.alive; ++b) {
     HitRecord hit = traceClosest(f.scene, p.origin, p.direction, 1e30);
     steps += hit.steps;
     ++rays;
-    rng = rngSeed(id, f.frameIndex, b, f.seed, 0u);
+    rng = rngSeed(id, f.frameIndex, b, f.seed, RL_RNG_SHADE);
     shadePath(f.scene, p, hit, b, f.bounceCount, rng);
   }
   f.hits.steps.v[id] = steps;

@@ -10,7 +10,7 @@ uint pcgHash(uint v) {
   return (word >> 22u) ^ word;
 }
 
-// `stream` separates independent uses within one bounce (e.g. 0 shading, 1 key sampling).
+// `stream` separates independent uses within one bounce (RL_RNG_* in shared_types.h).
 uint rngSeed(uint pathId, uint frame, uint bounce, uint seed, uint stream) {
   return pcgHash(pathId ^ pcgHash(frame ^ pcgHash(bounce * 16u + stream ^ pcgHash(seed))));
 }

@@ -12,7 +12,7 @@
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   uint i = gl_GlobalInvocationID.x;
-  if (i >= f.live.v[0]) return;
+  if (i >= f.live.v[RL_LIVE_COUNT]) return;
   GpuPathState s = f.state[pc.stateSet];
   if (s.alive.v[i] == 0u) return;
   PathVars p = loadPath(s, i);
@@ -22,7 +22,7 @@ void main() {
   hit.triangle = f.hits.triangle.v[i];
   hit.bary = f.hits.barycentric.v[i];
   hit.steps = 0u;
-  uint rng = rngSeed(id, f.frameIndex, pc.bounce, f.seed, 0u);
+  uint rng = rngSeed(id, f.frameIndex, pc.bounce, f.seed, RL_RNG_SHADE);
   shadePath(f.scene, p, hit, pc.bounce, f.bounceCount, rng);
   storePath(s, i, p);
   if (!p.alive) f.results.v[id] = finishedRadiance(p);

@@ -7,6 +7,7 @@
 #define RAYLAB_SHARED_TYPES_H
 
 #ifdef __cplusplus
+#include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
 namespace raylab::gpu {
@@ -25,6 +26,39 @@ using uint = uint32_t;
 #define RL_BVH_STACK 64
 // A key no live path gets: terminated and missed paths sort last.
 #define RL_DEAD_KEY 0xFFFFFFFFu
+
+// ---- Named slots: every index into a GPU-visible array that both sides use is defined here, once.
+
+// GpuFrame::counters: RL_COUNTER_STRIDE words per bounce (the megakernel uses bounce 0's), written by the
+// trace stage (simt_counting.glsl) and copied to the host once per frame.
+#define RL_COUNTER_RAYS 0u         // rays traced
+#define RL_COUNTER_SIMT_ACTIVE 1u  // active lanes summed over the subgroups' traversal iterations (countSimt)
+#define RL_COUNTER_SIMT_SLOTS 2u   // subgroup traversal iterations (countSimt)
+#define RL_COUNTER_STRIDE 4u       // words per bounce (one unused)
+// Bounces the counters buffer has room for (SettingLimits::kMaxBounces).
+#define RL_MAX_BOUNCES 32u
+
+// GpuFrame::live: the live-path count and the indirect dispatch size for RL_PATH_GROUP_SIZE groups.
+// Written by generate.comp (all paths) and live_count.comp (after a sort); trace and shade dispatch
+// indirectly from RL_LIVE_DISPATCH.
+#define RL_LIVE_COUNT 0u     // paths a stage must visit; paths at or past it count as finished
+#define RL_LIVE_DISPATCH 1u  // [1..3]: group counts x, y, z for vkCmdDispatchIndirect
+#define RL_LIVE_WORDS 4u
+
+// Random-number streams (rng.glsl's rngSeed): independent uses within one bounce of one path.
+#define RL_RNG_SHADE 0u   // BSDF and light sampling (shade, megakernel)
+#define RL_RNG_KEY 1u     // the Gaussian key strategy's length sample (keys.glsl and its C++ twin)
+#define RL_RNG_CAMERA 2u  // the camera ray's pixel jitter (generate, megakernel)
+
+// The arrays of GpuPathState, in declaration order (PathBuffers allocates one buffer per array).
+#define RL_STATE_ORIGIN 0
+#define RL_STATE_DIRECTION 1
+#define RL_STATE_THROUGHPUT 2
+#define RL_STATE_RADIANCE 3
+#define RL_STATE_PATH_ID 4
+#define RL_STATE_ALIVE 5
+#define RL_STATE_PREDICTED_LENGTH 6
+#define RL_STATE_ARRAY_COUNT 7
 
 // Flattened BVH node: interior when triCount == 0 (children at leftOrFirst and leftOrFirst + 1),
 // leaf otherwise (triangles leftOrFirst .. leftOrFirst + triCount - 1 in BVH order).
@@ -114,7 +148,8 @@ struct GpuScene {
   float skyLightProbability;  // chance that next-event estimation samples the sky rather than a triangle
 };
 
-// One set of path state, structure of arrays. Two sets exist; the reorder pass gathers one into the other.
+// One set of path state, structure of arrays (RL_STATE_* name each array). Two sets exist; after a sort,
+// gather_path_state.comp gathers one into the other.
 struct GpuPathState {
   RL_REF(Vec4Buf) origin;      // xyz ray origin, w = solid-angle pdf of the BSDF sample (0: camera ray)
   RL_REF(Vec4Buf) direction;   // xyz ray direction (unit), w unused
@@ -141,9 +176,9 @@ struct GpuFrame {
   RL_REF(Vec4Buf) results;      // per path id: radiance of the finished path
   RL_REF(Vec4Buf) accumulation; // per pixel: sum of radiance (xyz) and sample count (w)
   RL_REF(UintBuf) image;        // per pixel: tonemapped RGBA8
-  RL_REF(UintBuf) counters;     // [0] rays traced, [1] SIMT active lanes, [2] SIMT lane slots
-  // [0] paths a stage must visit (all until a sort moved the finished ones behind the live ones), [1..3]
-  // the indirect dispatch size for RL_PATH_GROUP_SIZE groups. Paths at or past [0] count as finished.
+  RL_REF(UintBuf) counters;     // RL_COUNTER_* slots, RL_COUNTER_STRIDE words per bounce
+  // RL_LIVE_* slots: the paths a stage must visit (all until a sort moved the finished ones behind the live
+  // ones) and their indirect dispatch size.
   RL_REF(UintBuf) live;
   uint width;
   uint height;
@@ -164,11 +199,35 @@ struct PathStagePush {
   RL_REF(FrameBuf) frame;
   uint bounce;
   uint stateSet;
-  uint countSimt;  // 1: count active lanes with subgroup ballots (kept out of timed runs)
+};
+
+// Push constants of live_count.comp: after the sort, the length of the live prefix of the sorted keys.
+struct LiveCountPush {
+  RL_REF(UintBuf) sortedKeys;
+  RL_REF(UintBuf) live;  // GpuFrame::live
+  uint count;            // sorted elements
   uint pad0;
 };
 
+// Push constants of gather_path_state.comp: every state array of the current set, gathered through the
+// sorted indices into the other set.
+struct GatherPush {
+  RL_REF(FrameBuf) frame;
+  RL_REF(UintBuf) sortedIndices;
+  uint stateSet;  // source set; the destination is the other one
+  uint count;
+};
+
 #ifdef __cplusplus
+// The layouts the shaders assume (scalar block layout); ComputePipeline also checks every push-constant
+// struct against the size the SPIR-V declares.
+static_assert(sizeof(GpuPathState) == RL_STATE_ARRAY_COUNT * sizeof(uint64_t));
+static_assert(offsetof(GpuPathState, alive) == RL_STATE_ALIVE * sizeof(uint64_t));
+static_assert(offsetof(GpuPathState, predictedLength) == RL_STATE_PREDICTED_LENGTH * sizeof(uint64_t));
+static_assert(sizeof(PathStagePush) == 16);
+static_assert(sizeof(LiveCountPush) == 24);
+static_assert(sizeof(GatherPush) == 24);
+static_assert(RL_COUNTER_SIMT_SLOTS < RL_COUNTER_STRIDE && RL_LIVE_DISPATCH + 3 == RL_LIVE_WORDS);
 }  // namespace raylab::gpu
 #endif
 #endif

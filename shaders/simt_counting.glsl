@@ -8,20 +8,23 @@
 #extension GL_KHR_shader_subgroup_arithmetic : require
 
 layout(constant_id = 1) const bool kCountSimt = false;
+// The counters (GpuFrame::counters) and the first slot of this bounce's RL_COUNTER_STRIDE words; set both
+// at the start of main().
 UintBuf gCounters;
-#define RL_TRAVERSAL_STEP()                                          \
-  if (kCountSimt) {                                                  \
-    uint activeLanes = subgroupBallotBitCount(subgroupBallot(true)); \
-    if (subgroupElect()) {                                           \
-      atomicAdd(gCounters.v[1], activeLanes);                        \
-      atomicAdd(gCounters.v[2], 1u);                                 \
-    }                                                                \
+uint gCounterBase;
+#define RL_TRAVERSAL_STEP()                                                               \
+  if (kCountSimt) {                                                                       \
+    uint activeLanes = subgroupBallotBitCount(subgroupBallot(true));                      \
+    if (subgroupElect()) {                                                                \
+      atomicAdd(gCounters.v[gCounterBase + RL_COUNTER_SIMT_ACTIVE], activeLanes);         \
+      atomicAdd(gCounters.v[gCounterBase + RL_COUNTER_SIMT_SLOTS], 1u);                   \
+    }                                                                                     \
   }
 
-// Adds each lane's ray count to counters[0] with one atomic per subgroup.
+// Adds each lane's ray count to the RL_COUNTER_RAYS slot with one atomic per subgroup.
 void countRays(uint rays) {
   uint total = subgroupAdd(rays);
-  if (subgroupElect() && total > 0u) atomicAdd(gCounters.v[0], total);
+  if (subgroupElect() && total > 0u) atomicAdd(gCounters.v[gCounterBase + RL_COUNTER_RAYS], total);
 }
 
 #endif

@@ -12,8 +12,9 @@
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   gCounters = f.counters;
+  gCounterBase = pc.bounce * RL_COUNTER_STRIDE;
   uint i = gl_GlobalInvocationID.x;
-  uint count = f.live.v[0];
+  uint count = f.live.v[RL_LIVE_COUNT];
   bool live = i < count && f.state[pc.stateSet].alive.v[i] != 0u;
   countRays(live ? 1u : 0u);
   if (i >= count) return;

@@ -2,11 +2,16 @@
 // with the Khronos validation layer on; any validation error during the test fails it.
 #pragma once
 
+// The CPU test binary runs again under LeakSanitizer, which the Vulkan driver's exit-time leak would fail.
+#ifdef RAYLAB_CPU_TESTS
+#error "a test that needs a Vulkan device belongs in tests/gpu/"
+#endif
+
 #include <memory>
 
 #include <gtest/gtest.h>
 
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_context.h"
 
 namespace raylab::test {
 

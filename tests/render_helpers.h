@@ -6,7 +6,7 @@
 
 #include "renderer/image_metrics.h"
 #include "renderer/path_tracer.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_context.h"
 
 namespace raylab::test {
 

@@ -11,10 +11,10 @@
 
 #include <gtest/gtest.h>
 
-#include "renderer/gpu_buffer.h"
-#include "renderer/key_functions.h"
-#include "renderer/key_stage.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/gpu_buffer.h"
+#include "renderer/reorder/key_functions.h"
+#include "renderer/reorder/key_stage.h"
+#include "renderer/vk/vk_context.h"
 #include "scenes/scene.h"
 #include "shaders/shared_types.h"
 

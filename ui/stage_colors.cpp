@@ -6,7 +6,7 @@
 namespace raylab {
 
 ImU32 stageColor(const std::string& stage) {
-  // The stages of DESIGN.md get fixed, distinguishable colours; anything new a stable hashed one.
+  // The frame loop's stages get fixed, distinguishable colours; anything new a stable hashed one.
   static const std::map<std::string, ImU32> known = {
       {"generate", IM_COL32(120, 120, 120, 255)}, {"trace", IM_COL32(230, 85, 60, 255)},
       {"learn", IM_COL32(250, 200, 60, 255)},     {"shade", IM_COL32(80, 160, 230, 255)},

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "renderer/vk_check.h"
+#include "renderer/vk/vk_check.h"
 
 namespace raylab {
 namespace {

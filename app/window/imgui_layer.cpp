@@ -8,8 +8,8 @@
 
 #include "app/window/imgui_vulkan_compat.h"
 #include "app/window/swapchain.h"
-#include "renderer/vk_check.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_check.h"
+#include "renderer/vk/vk_context.h"
 #include "ui/settings_ini.h"
 
 namespace raylab {

@@ -11,7 +11,7 @@
 #include "app/window/screenshot.h"
 #include "app/window/swapchain.h"
 #include "renderer/path_tracer.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_context.h"
 
 namespace raylab {
 

@@ -13,7 +13,7 @@
 #include "app/window/presenter.h"
 #include "app/window/swapchain.h"
 #include "renderer/path_tracer.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_context.h"
 #include "scenes/scene_library.h"
 
 namespace raylab {

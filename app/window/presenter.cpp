@@ -6,8 +6,8 @@
 #include "app/window/render_image.h"
 #include "app/window/swapchain.h"
 #include "renderer/path_tracer.h"
-#include "renderer/vk_check.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_check.h"
+#include "renderer/vk/vk_context.h"
 
 namespace raylab {
 namespace {

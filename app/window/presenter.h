@@ -8,7 +8,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "renderer/gpu_buffer.h"
+#include "renderer/vk/gpu_buffer.h"
 
 struct ImDrawData;
 

@@ -1,7 +1,7 @@
 #include "app/window/render_image.h"
 
-#include "renderer/vk_check.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_check.h"
+#include "renderer/vk/vk_context.h"
 
 namespace raylab {
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "renderer/vk_check.h"
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_check.h"
+#include "renderer/vk/vk_context.h"
 
 namespace raylab {
 

@@ -1,0 +1,104 @@
+// Sorting (key, value) uint32 pairs on the GPU, in place in the caller's buffers, by the low `keyBits` bits of
+// the key: the step between computing the rays' sort keys and reordering the path state.
+//
+// Keys: the caller guarantees key < 2^keyBits or key == 0xFFFFFFFF (a dead path, RL_DEAD_KEY). Dead keys sort
+// after every live key: the sort compares min(key, 2^keyBits), i.e. it sorts keyBits + 1 bits (when keyBits
+// < 32), so a dead key never ties with the largest live key. Any other key >= 2^keyBits sorts as a dead one.
+//
+// Radix (the default): LSD, stable, 8-bit digits, reduce-then-scan with no work group ever waiting on
+// another (so it runs on CPU devices like lavapipe that give no forward progress between groups). Each pass
+// is three dispatches: per-tile digit histograms, a scan of those per digit, and a stable scatter ranked by
+// subgroup ballots. Only ceil((keyBits + 1) / 8) passes run (4 for the lab's 30-bit Morton keys).
+// OneSweep (optional, Tuning::oneSweep): the same tile ranking, but one dispatch per pass using decoupled
+// look-back (plus one histogram dispatch for all passes). Work groups wait on earlier ones, so it is used
+// only on devices known to give forward progress (NVIDIA and AMD GPUs); elsewhere the portable path runs.
+// Bitonic (the study's baseline): any count, padded virtually to a power of two; steps whose distance fits a
+// 2048-element tile run in shared memory, the others as one dispatch per step. Not stable.
+//
+// The caller makes the keys and values visible to compute shaders before record() (computeBarrier).
+#pragma once
+
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/vk/compute_pipeline.h"
+#include "renderer/vk/gpu_buffer.h"
+#include "renderer/settings.h"
+
+namespace raylab {
+
+class VulkanContext;
+
+class GpuSorter {
+ public:
+  // Radix scatter shape; 0 picks the device default. For tuning runs (sortbench --radix-group/--radix-kpt).
+  struct Tuning {
+    uint32_t radixGroupSize = 0;      // power of two, 16..256, a multiple of the subgroup size
+    uint32_t radixKeysPerThread = 0;  // 1..32
+    bool oneSweep = false;            // use the OneSweep variant where the device supports it
+    // Tests only: run OneSweep on any device with one work group per dispatch, so no look-back ever waits;
+    // checks its arithmetic where work groups have no forward progress (lavapipe). Slow.
+    bool oneSweepSerialTest = false;
+  };
+
+  // Whether the OneSweep variant may run on this device (a GPU known to give forward progress).
+  static bool oneSweepSupported(const VulkanContext& ctx);
+
+  GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t maxCount);
+  GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t maxCount, const Tuning& tuning);
+
+  // Records commands that sort `count` (key, value) pairs held in the device buffers at addresses `keys` and
+  // `values` (each at least count elements) by the low `keyBits` bits (1..32) of the key, in place, and a
+  // barrier at the end so later stages may read the result. Radix: stable. Bitonic: keys sorted, values
+  // carried with their keys. count <= maxCount. SortAlgorithm::None records nothing.
+  void record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count, uint32_t keyBits);
+
+  SortAlgorithm algorithm() const { return algorithm_; }
+  uint64_t scratchBytes() const;  // memory the sorter owns (for the stats)
+  uint32_t maxCount() const { return maxCount_; }
+
+  // Radix passes run for `keyBits` (one extra bit for dead keys below 32 bits).
+  static uint32_t radixPasses(uint32_t keyBits);
+  // Elements per radix tile (scatter group size times keys per invocation) on this device.
+  uint32_t radixTile() const { return radixTile_; }
+  // True when record() runs the OneSweep variant (requested and supported).
+  bool usesOneSweep() const { return oneSweep_; }
+
+ private:
+  void recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
+                   uint32_t keyBits);
+  // After an odd number of radix passes the result is in scratch: copy it to the caller's buffers.
+  void recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count);
+  void recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
+                      uint32_t keyBits);
+  void recordBitonic(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
+                     uint32_t keyBits);
+
+  const VulkanContext* ctx_ = nullptr;
+  SortAlgorithm algorithm_ = SortAlgorithm::None;
+  uint32_t maxCount_ = 0;
+  uint32_t radixTile_ = 0;
+  bool oneSweep_ = false;
+  bool oneSweepSerial_ = false;
+
+  // Radix
+  ComputePipeline histogram_;
+  ComputePipeline scan_;
+  ComputePipeline scatter_;
+  ComputePipeline copy_;
+  GpuBuffer scratchKeys_;
+  GpuBuffer scratchValues_;
+  GpuBuffer hist_;  // per-tile digit counts (digit-major), then the digit totals
+
+  // OneSweep
+  ComputePipeline oneSweepHistogram_;
+  ComputePipeline oneSweepPass_;
+  GpuBuffer oneSweepState_;  // histograms, tile counters, look-back status (shaders/sort_types.h)
+
+  // Bitonic
+  ComputePipeline bitonicLocal_;
+  ComputePipeline bitonicGlobal_;
+};
+
+}  // namespace raylab

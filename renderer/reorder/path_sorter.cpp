@@ -1,0 +1,144 @@
+#include "renderer/reorder/path_sorter.h"
+
+#include "renderer/reorder/key_accuracy.h"
+#include "renderer/path_buffers.h"
+#include "renderer/vk/stage_timer.h"
+#include "renderer/vk/vk_context.h"
+
+namespace raylab {
+namespace {
+
+void copyInto(VkCommandBuffer cmd, const GpuBuffer& from, const GpuBuffer& to, VkDeviceSize bytes) {
+  VkBufferCopy region{0, 0, bytes};
+  vkCmdCopyBuffer(cmd, from.handle(), to.handle(), 1, &region);
+}
+
+}  // namespace
+
+struct PathSorter::Capture {
+  GpuBuffer origin, direction, predicted, alive, hitT, keys;
+  bool haveRays = false, haveKeys = false;
+  Capture(const VulkanContext& ctx, uint32_t n)
+      : origin(ctx, VkDeviceSize(n) * 16, MemoryKind::HostVisible),
+        direction(ctx, VkDeviceSize(n) * 16, MemoryKind::HostVisible),
+        predicted(ctx, VkDeviceSize(n) * 4, MemoryKind::HostVisible),
+        alive(ctx, VkDeviceSize(n) * 4, MemoryKind::HostVisible),
+        hitT(ctx, VkDeviceSize(n) * 4, MemoryKind::HostVisible),
+        keys(ctx, VkDeviceSize(n) * 4, MemoryKind::HostVisible) {}
+};
+
+PathSorter::PathSorter(const VulkanContext& ctx, const Scene& scene, const Settings& settings,
+                           glm::vec3 cameraPos, uint32_t maxPaths)
+    : ctx_(ctx),
+      keys_(ctx, scene, cameraPos, settings, maxPaths),
+      maxPaths_(maxPaths),
+      gather_(ctx, "gather_path_state", sizeof(gpu::GatherPush), RL_PATH_GROUP_SIZE),
+      liveCount_(ctx, "live_count", sizeof(gpu::LiveCountPush), RL_PATH_GROUP_SIZE) {
+  makeSorter(settings);
+}
+
+PathSorter::~PathSorter() = default;
+
+void PathSorter::apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths,
+                       const SettingsChange& change) {
+  if (change.reallocate) {
+    maxPaths_ = maxPaths;
+    sorter_.reset();
+    captures_.clear();
+  }
+  keys_.apply(settings, cameraPos, maxPaths_, change);
+  makeSorter(settings);
+}
+
+void PathSorter::makeSorter(const Settings& settings) {
+  if (!settings.sorts()) return;  // the sorter's scratch is only paid for while sorting
+  if (!sorter_ || sorter_->algorithm() != settings.sort || sorter_->maxCount() < maxPaths_)
+    sorter_ = std::make_unique<GpuSorter>(ctx_, settings.sort, maxPaths_);
+}
+
+void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
+                                    uint32_t bounce, bool detailed, StageTimer* timer) {
+  const uint32_t n = buffers.pathCount;
+  if (bounce > 0) keys_.recordLearn(cmd, buffers.frameBlock.address(), stateSet, bounce, n, timer);
+  if (!detailed || bounce == 0) return;
+  // The rays of this bounce with the predictions made for them, before shading overwrites them.
+  if (captures_.size() <= bounce) captures_.resize(bounce + 1);
+  if (!captures_[bounce]) captures_[bounce] = std::make_unique<Capture>(ctx_, n);
+  Capture& c = *captures_[bounce];
+  const GpuBuffer* state = buffers.state[stateSet];
+  copyInto(cmd, state[RL_STATE_ORIGIN], c.origin, VkDeviceSize(n) * 16);
+  copyInto(cmd, state[RL_STATE_DIRECTION], c.direction, VkDeviceSize(n) * 16);
+  copyInto(cmd, state[RL_STATE_PREDICTED_LENGTH], c.predicted, VkDeviceSize(n) * 4);
+  copyInto(cmd, state[RL_STATE_ALIVE], c.alive, VkDeviceSize(n) * 4);
+  copyInto(cmd, buffers.hitT, c.hitT, VkDeviceSize(n) * 4);
+  c.haveRays = true;
+  computeBarrier(cmd);
+}
+
+void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
+                              bool detailed, StageTimer* timer) {
+  const uint32_t n = buffers.pathCount;
+  keys_.recordKeys(cmd, buffers.frameBlock.address(), stateSet, bounce, buffers.keys.address(),
+                   buffers.values.address(), n, timer);
+  if (detailed) {
+    // Keys made now sort the rays of the next bounce.
+    if (captures_.size() <= bounce + 1) captures_.resize(bounce + 2);
+    if (!captures_[bounce + 1]) captures_[bounce + 1] = std::make_unique<Capture>(ctx_, n);
+    copyInto(cmd, buffers.keys, captures_[bounce + 1]->keys, VkDeviceSize(n) * 4);
+    captures_[bounce + 1]->haveKeys = true;
+    computeBarrier(cmd);
+  }
+}
+
+uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
+                                           StageTimer* timer) {
+  const uint32_t n = buffers.pathCount;
+  {
+    ScopedStage s(timer, cmd, "sort");  // the sorter fences its own passes
+    sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, keys_.keyBits());
+  }
+  // "reorder": the live prefix's length, then every state array gathered into the other set.
+  const gpu::LiveCountPush live{buffers.keys.address(), buffers.live.address(), n, 0};
+  const gpu::GatherPush gather{buffers.frameBlock.address(), buffers.values.address(), stateSet, n};
+  recordStage(cmd, timer, "reorder", [&] {
+    liveCount_.dispatchThreads(cmd, live, n);
+    computeBarrier(cmd);
+    gather_.dispatchThreads(cmd, gather, n);
+  });
+  return 1u - stateSet;
+}
+
+void PathSorter::finishFrame(FrameStats& stats, bool detailed) {
+  stats.keyBits = keys_.keyBits();
+  stats.lengthCacheBytes = keys_.cacheMemoryBytes();
+  stats.sortScratchBytes = sorter_ ? sorter_->scratchBytes() : 0;
+  if (!detailed) return;
+  stats.lengthCacheOccupancy = keys_.cacheOccupancy();
+  for (size_t b = 1; b < captures_.size() && b < stats.bounces.size(); ++b) {
+    if (!captures_[b] || !captures_[b]->haveRays) continue;
+    Capture& c = *captures_[b];
+    size_t n = c.hitT.size() / 4;
+    KeyAccuracyInput in{
+        {static_cast<const glm::vec4*>(c.origin.mapped()), n},
+        {static_cast<const glm::vec4*>(c.direction.mapped()), n},
+        {static_cast<const float*>(c.predicted.mapped()), n},
+        {static_cast<const float*>(c.hitT.mapped()), n},
+        {static_cast<const uint32_t*>(c.alive.mapped()), n},
+        c.haveKeys ? std::span<const uint32_t>(static_cast<const uint32_t*>(c.keys.mapped()), n)
+                   : std::span<const uint32_t>()};
+    KeyAccuracy a = measureKeyAccuracy(keys_.grid(), in, static_cast<uint32_t>(b), stats.keyBits,
+                                       stats.lengthCacheBytes, stats.lengthCacheOccupancy);
+    BounceStats& bs = stats.bounces[b];
+    if (a.evaluated > 0) {
+      bs.predictionErrorMean = a.meanError;
+      bs.predictionErrorMedian = a.medianError;
+      bs.cellHitRate = a.cellHitRate;
+    }
+    bs.distinctKeys = a.distinctKeys;
+  }
+  // Hundreds of MB of host-visible copies at 2048x1024: release them rather than hold them between
+  // detailed frames (holding them was seen to slow the following frames on an H100).
+  captures_.clear();
+}
+
+}  // namespace raylab

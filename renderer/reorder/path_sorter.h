@@ -1,0 +1,64 @@
+// Sorts the paths between bounces when a key strategy is on: sort keys (KeyStage), the GPU sort, the
+// live-prefix count and the gather of the path state into the other ping-pong set (timed together as the
+// "reorder" stage). Also the length-cache learning after a trace, and, in the detailed mode, the readbacks
+// that measure prediction accuracy.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
+
+#include "renderer/vk/compute_pipeline.h"
+#include "renderer/frame_stats.h"
+#include "renderer/vk/gpu_buffer.h"
+#include "renderer/reorder/gpu_sort.h"
+#include "renderer/reorder/key_stage.h"
+#include "renderer/settings.h"
+#include "scenes/scene.h"
+
+namespace raylab {
+
+class VulkanContext;
+class StageTimer;
+struct PathBuffers;
+
+class PathSorter {
+ public:
+  PathSorter(const VulkanContext& ctx, const Scene& scene, const Settings& settings, glm::vec3 cameraPos,
+               uint32_t maxPaths);
+  ~PathSorter();
+
+  // Applies a change PathTracer computed (new path bound, key grid and caches as `change` says) and makes
+  // the sorter the settings ask for; the sorter's scratch is only held while sorting.
+  void apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths, const SettingsChange& change);
+
+  // After the trace of `bounce`: the learn stage, and in detailed mode the accuracy readbacks.
+  void recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
+                        bool detailed, StageTimer* timer);
+  // After shading `bounce`: the keys of the next rays (in buffers.keys, current set order).
+  void recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
+                  bool detailed, StageTimer* timer);
+  // Sort, live count and gather; returns the state set that holds the reordered paths.
+  uint32_t recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, StageTimer* timer);
+  // Adds key width, cache and sort memory and, in detailed mode, prediction accuracy to the stats.
+  void finishFrame(FrameStats& stats, bool detailed);
+
+  const KeyStage& keys() const { return keys_; }
+
+ private:
+  struct Capture;  // host-visible copies of one bounce's rays, predictions, hits and keys
+
+  void makeSorter(const Settings& settings);
+
+  const VulkanContext& ctx_;
+  KeyStage keys_;
+  std::unique_ptr<GpuSorter> sorter_;
+  uint32_t maxPaths_;
+  ComputePipeline gather_, liveCount_;
+  std::vector<std::unique_ptr<Capture>> captures_;
+};
+
+}  // namespace raylab

@@ -1,0 +1,71 @@
+// One compute shader as a pipeline with no descriptor sets: every buffer reaches the shader as a device
+// address inside its push constants. The work-group size is specialization constant 0 (local_size_x_id = 0)
+// so the host knows it without reflection; further specialization constants (ids 1..) select variants.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace raylab {
+
+class VulkanContext;
+
+class ComputePipeline {
+ public:
+  ComputePipeline() = default;
+  // `pushBytes` (callers pass sizeof(their struct)) must equal the push-constant block size the SPIR-V
+  // declares, or the constructor throws; every dispatch checks sizeof(Push) against it again.
+  ComputePipeline(const VulkanContext& ctx, const std::string& shaderName, uint32_t pushBytes,
+                  uint32_t groupSize = 64, const std::vector<uint32_t>& extraConstants = {});
+  ~ComputePipeline();
+  ComputePipeline(ComputePipeline&& other) noexcept;
+  ComputePipeline& operator=(ComputePipeline&& other) noexcept;
+  ComputePipeline(const ComputePipeline&) = delete;
+  ComputePipeline& operator=(const ComputePipeline&) = delete;
+
+  uint32_t groupSize() const { return groupSize_; }
+  const std::string& name() const { return name_; }
+
+  // Binds, pushes constants and dispatches enough groups to cover `threads` threads (none if zero).
+  void dispatchThreads(VkCommandBuffer cmd, const void* push, uint64_t threads) const;
+  // Binds, pushes constants and dispatches exactly `groups` work groups.
+  void dispatchGroups(VkCommandBuffer cmd, const void* push, uint32_t groups) const;
+
+  // Binds, pushes constants and dispatches the group counts stored at `offset` in `args` (x, y, z uints).
+  template <class Push>
+  void dispatchIndirect(VkCommandBuffer cmd, const Push& push, VkBuffer args, VkDeviceSize offset) const {
+    checkPushSize(sizeof(Push));
+    bindAndPush(cmd, &push);
+    vkCmdDispatchIndirect(cmd, args, offset);
+  }
+  template <class Push>
+  void dispatchThreads(VkCommandBuffer cmd, const Push& push, uint64_t threads) const {
+    checkPushSize(sizeof(Push));
+    dispatchThreads(cmd, static_cast<const void*>(&push), threads);
+  }
+  template <class Push>
+  void dispatchGroups(VkCommandBuffer cmd, const Push& push, uint32_t groups) const {
+    checkPushSize(sizeof(Push));
+    dispatchGroups(cmd, static_cast<const void*>(&push), groups);
+  }
+
+ private:
+  void checkPushSize(size_t bytes) const;
+  void bindAndPush(VkCommandBuffer cmd, const void* push) const;
+  void release();
+
+  const VulkanContext* ctx_ = nullptr;
+  std::string name_;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  uint32_t pushBytes_ = 0;
+  uint32_t groupSize_ = 0;
+};
+
+// Makes all earlier shader and transfer writes visible to later shader and transfer reads and writes.
+void computeBarrier(VkCommandBuffer cmd);
+
+}  // namespace raylab

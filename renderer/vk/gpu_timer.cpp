@@ -1,0 +1,69 @@
+#include "renderer/vk/gpu_timer.h"
+
+#include <algorithm>
+
+#include "renderer/vk/vk_check.h"
+#include "renderer/vk/vk_context.h"
+
+namespace raylab {
+
+GpuTimer::GpuTimer(const VulkanContext& ctx, uint32_t maxScopes) : ctx_(ctx), capacity_(2 * maxScopes) {
+  if (!ctx.info().timestamps) return;  // stage times then stay empty; frame wall time still works
+  VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  info.queryCount = capacity_;
+  VK_CHECK(vkCreateQueryPool(ctx.device(), &info, nullptr, &pool_));
+}
+
+GpuTimer::~GpuTimer() {
+  if (pool_) vkDestroyQueryPool(ctx_.device(), pool_, nullptr);
+}
+
+void GpuTimer::reset(VkCommandBuffer cmd) {
+  used_ = 0;
+  scopes_.clear();
+  open_.clear();
+  bounce_ = -1;
+  if (pool_) vkCmdResetQueryPool(cmd, pool_, 0, capacity_);
+}
+
+void GpuTimer::begin(VkCommandBuffer cmd, std::string_view stage) {
+  if (!pool_ || used_ + 2 > capacity_) {
+    open_.push_back(UINT32_MAX);
+    return;
+  }
+  scopes_.push_back({std::string(stage), bounce_, used_});
+  open_.push_back(static_cast<uint32_t>(scopes_.size() - 1));
+  // BOTTOM_OF_PIPE: written once all earlier commands completed. A TOP_OF_PIPE start would be taken
+  // while the previous stage still runs and charge part of it to this one.
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, used_);
+  used_ += 2;
+}
+
+void GpuTimer::end(VkCommandBuffer cmd) {
+  if (open_.empty()) return;
+  uint32_t scope = open_.back();
+  open_.pop_back();
+  if (scope == UINT32_MAX) return;
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, scopes_[scope].first + 1);
+}
+
+std::vector<StageTime> GpuTimer::collect() {
+  std::vector<StageTime> out;
+  if (!pool_ || used_ == 0) return out;
+  std::vector<uint64_t> ticks(used_);
+  VK_CHECK(vkGetQueryPoolResults(ctx_.device(), pool_, 0, used_, ticks.size() * sizeof(uint64_t), ticks.data(),
+                                 sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  double nsPerTick = ctx_.info().timestampPeriodNs;
+  uint64_t first = UINT64_MAX, last = 0;
+  for (const Scope& s : scopes_) {
+    uint64_t a = ticks[s.first], b = ticks[s.first + 1];
+    out.push_back({s.stage, s.bounce, b > a ? (b - a) * nsPerTick * 1e-6 : 0.0});
+    first = std::min(first, a);
+    last = std::max(last, b);
+  }
+  spanMs_ = last > first ? (last - first) * nsPerTick * 1e-6 : 0.0;
+  return out;
+}
+
+}  // namespace raylab

@@ -1,0 +1,267 @@
+#include "renderer/vk/vk_context.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <cstring>
+
+#include "renderer/vk/vk_check.h"
+
+namespace raylab {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+bool hasLayer(const char* name) {
+  uint32_t count = 0;
+  vkEnumerateInstanceLayerProperties(&count, nullptr);
+  std::vector<VkLayerProperties> layers(count);
+  vkEnumerateInstanceLayerProperties(&count, layers.data());
+  for (const auto& l : layers)
+    if (std::strcmp(l.layerName, name) == 0) return true;
+  return false;
+}
+
+int deviceRank(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
+    default: return 4;
+  }
+}
+
+std::vector<VkPhysicalDevice> enumerateDevices(VkInstance instance) {
+  uint32_t count = 0;
+  VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
+  std::vector<VkPhysicalDevice> devices(count);
+  VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, devices.data()));
+  return devices;
+}
+
+}  // namespace
+
+VulkanContext::VulkanContext(const ContextOptions& options) {
+  createInstance(options);
+  pickPhysicalDevice(options);
+  createDevice(options);
+  if (!options.quiet)
+    std::fprintf(stderr, "raylab: device %s (%s), subgroup %u%s\n", info_.name.c_str(), info_.driver.c_str(),
+                 info_.subgroupSize, options.validate ? ", validation on" : "");
+}
+
+VulkanContext::~VulkanContext() {
+  if (device_) {
+    vkDeviceWaitIdle(device_);
+    vkDestroyFence(device_, fence_, nullptr);
+    vkDestroyCommandPool(device_, commandPool_, nullptr);
+    vkDestroyDevice(device_, nullptr);
+  }
+  if (messenger_) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+    if (destroy) destroy(instance_, messenger_, nullptr);
+  }
+  if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL VulkanContext::onValidationMessage(
+    VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
+    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+  auto* self = static_cast<VulkanContext*>(user);
+  if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) {
+    self->validationErrors_++;
+    std::fprintf(stderr, "validation error: %s\n", data->pMessage);
+  } else if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) {
+    self->validationWarnings_++;
+    std::fprintf(stderr, "validation warning: %s\n", data->pMessage);
+  }
+  return VK_FALSE;
+}
+
+void VulkanContext::createInstance(const ContextOptions& options) {
+  std::vector<const char*> extensions = options.instanceExtensions;
+  std::vector<const char*> layers;
+  if (options.validate) {
+    if (!hasLayer(kValidationLayer))
+      throw VulkanError("--validate: the Khronos validation layer is not installed (apt-get install "
+                        "vulkan-validationlayers)");
+    layers.push_back(kValidationLayer);
+    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  }
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "raylab";
+  app.apiVersion = VK_API_VERSION_1_2;
+
+  VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  messengerInfo.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  messengerInfo.pfnUserCallback = &VulkanContext::onValidationMessage;
+  messengerInfo.pUserData = this;
+
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pNext = options.validate ? &messengerInfo : nullptr;
+  info.pApplicationInfo = &app;
+  info.enabledLayerCount = static_cast<uint32_t>(layers.size());
+  info.ppEnabledLayerNames = layers.data();
+  info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  VK_CHECK(vkCreateInstance(&info, nullptr, &instance_));
+
+  if (options.validate) {
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+    if (!create) throw VulkanError("vkCreateDebugUtilsMessengerEXT is unavailable");
+    VK_CHECK(create(instance_, &messengerInfo, nullptr, &messenger_));
+  }
+}
+
+void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
+  std::vector<VkPhysicalDevice> devices = enumerateDevices(instance_);
+  if (devices.empty()) throw VulkanError("no Vulkan device found (apt-get install mesa-vulkan-drivers for lavapipe)");
+  int bestRank = 1 << 30;
+  std::string names;
+  for (VkPhysicalDevice d : devices) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(d, &p);
+    names += std::string(names.empty() ? "" : ", ") + p.deviceName;
+    if (p.apiVersion < VK_API_VERSION_1_2) continue;
+    if (!options.deviceName.empty()) {
+      if (lower(p.deviceName).find(lower(options.deviceName)) != std::string::npos && !physical_) physical_ = d;
+    } else if (deviceRank(p.deviceType) < bestRank) {
+      bestRank = deviceRank(p.deviceType);
+      physical_ = d;
+    }
+  }
+  if (!physical_) {
+    if (!options.deviceName.empty())
+      throw VulkanError("--device '" + options.deviceName + "' matches no Vulkan 1.2 device; devices: " + names);
+    throw VulkanError("no Vulkan 1.2 device found; devices: " + names);
+  }
+
+  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+  subgroup.pNext = &driver;
+  VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+  props.pNext = &subgroup;
+  vkGetPhysicalDeviceProperties2(physical_, &props);
+  info_.name = props.properties.deviceName;
+  info_.driver = std::string(driver.driverName) + " " + driver.driverInfo;
+  info_.vendorId = props.properties.vendorID;
+  info_.subgroupSize = subgroup.subgroupSize;
+  info_.timestampPeriodNs = props.properties.limits.timestampPeriod;
+  info_.maxGroupCountX = props.properties.limits.maxComputeWorkGroupCount[0];
+  info_.isCpu = props.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  vkGetPhysicalDeviceMemoryProperties(physical_, &memoryProperties_);
+}
+
+void VulkanContext::createDevice(const ContextOptions& options) {
+  uint32_t familyCount = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
+  std::vector<VkQueueFamilyProperties> families(familyCount);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, families.data());
+  // Prefer a family that does graphics too: the window draws its panels on the same queue.
+  int chosen = -1;
+  for (uint32_t i = 0; i < familyCount && chosen < 0; ++i)
+    if ((families[i].queueFlags & (VK_QUEUE_COMPUTE_BIT | VK_QUEUE_GRAPHICS_BIT)) ==
+        (VK_QUEUE_COMPUTE_BIT | VK_QUEUE_GRAPHICS_BIT))
+      chosen = static_cast<int>(i);
+  for (uint32_t i = 0; i < familyCount && chosen < 0; ++i)
+    if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) chosen = static_cast<int>(i);
+  if (chosen < 0) throw VulkanError(info_.name + " has no compute queue");
+  queueFamily_ = static_cast<uint32_t>(chosen);
+  info_.timestamps = families[queueFamily_].timestampValidBits > 0;
+
+  VkPhysicalDeviceVulkan12Features have12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceFeatures2 have{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  have.pNext = &have12;
+  vkGetPhysicalDeviceFeatures2(physical_, &have);
+  if (!have12.bufferDeviceAddress || !have12.scalarBlockLayout || !have.features.shaderInt64)
+    throw VulkanError(info_.name + " lacks bufferDeviceAddress, scalarBlockLayout or shaderInt64");
+
+  VkPhysicalDeviceVulkan12Features want12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  want12.bufferDeviceAddress = VK_TRUE;
+  want12.scalarBlockLayout = VK_TRUE;
+  want12.hostQueryReset = have12.hostQueryReset;
+  want12.shaderSubgroupExtendedTypes = have12.shaderSubgroupExtendedTypes;
+  VkPhysicalDeviceFeatures2 want{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  want.pNext = &want12;
+  want.features.shaderInt64 = VK_TRUE;
+
+  float priority = 1.0f;
+  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queueInfo.queueFamilyIndex = queueFamily_;
+  queueInfo.queueCount = 1;
+  queueInfo.pQueuePriorities = &priority;
+
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  info.pNext = &want;
+  info.queueCreateInfoCount = 1;
+  info.pQueueCreateInfos = &queueInfo;
+  info.enabledExtensionCount = static_cast<uint32_t>(options.deviceExtensions.size());
+  info.ppEnabledExtensionNames = options.deviceExtensions.data();
+  VK_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
+  vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  poolInfo.queueFamilyIndex = queueFamily_;
+  VK_CHECK(vkCreateCommandPool(device_, &poolInfo, nullptr, &commandPool_));
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VK_CHECK(vkCreateFence(device_, &fenceInfo, nullptr, &fence_));
+}
+
+void VulkanContext::submitAndWait(const std::function<void(VkCommandBuffer)>& record) const {
+  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  alloc.commandPool = commandPool_;
+  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  alloc.commandBufferCount = 1;
+  VkCommandBuffer cmd;
+  VK_CHECK(vkAllocateCommandBuffers(device_, &alloc, &cmd));
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  record(cmd);
+  VK_CHECK(vkEndCommandBuffer(cmd));
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  VK_CHECK(vkResetFences(device_, 1, &fence_));
+  VK_CHECK(vkQueueSubmit(queue_, 1, &submit, fence_));
+  VK_CHECK(vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
+  vkFreeCommandBuffers(device_, commandPool_, 1, &cmd);
+}
+
+uint32_t VulkanContext::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const {
+  for (uint32_t i = 0; i < memoryProperties_.memoryTypeCount; ++i)
+    if ((typeBits & (1u << i)) && (memoryProperties_.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
+  throw VulkanError("no memory type with the wanted properties");
+}
+
+std::vector<std::string> VulkanContext::listDevices() {
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.apiVersion = VK_API_VERSION_1_2;
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pApplicationInfo = &app;
+  VkInstance instance;
+  VK_CHECK(vkCreateInstance(&info, nullptr, &instance));
+  std::vector<std::string> names;
+  for (VkPhysicalDevice d : enumerateDevices(instance)) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(d, &p);
+    names.emplace_back(p.deviceName);
+  }
+  vkDestroyInstance(instance, nullptr);
+  return names;
+}
+
+}  // namespace raylab

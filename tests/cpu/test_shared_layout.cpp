@@ -1,0 +1,73 @@
+// The structs in shaders/shared_types.h are read by GLSL with the scalar block layout; these asserts pin
+// the host side to the same sizes and offsets the shaders assume.
+#include <cstddef>
+#include <stdexcept>
+#include <utility>
+
+#include <gtest/gtest.h>
+
+#include "renderer/vk/shader_table.h"
+#include "renderer/vk/spirv_reflect.h"
+#include "shaders/heatmap_types.h"
+#include "shaders/key_types.h"
+#include "shaders/shared_types.h"
+#include "shaders/sort_types.h"
+
+namespace raylab::gpu {
+
+static_assert(sizeof(BvhNode) == 32);
+static_assert(offsetof(BvhNode, leftOrFirst) == 12);
+static_assert(offsetof(BvhNode, triCount) == 28);
+static_assert(sizeof(GpuTriangle) == 48);
+static_assert(offsetof(GpuTriangle, e2) == 32);
+static_assert(sizeof(GpuTriangleUv) == 24);
+static_assert(sizeof(GpuMaterial) == 48);
+static_assert(offsetof(GpuMaterial, emissive) == 16);
+static_assert(offsetof(GpuMaterial, emitterPdfScale) == 40);
+static_assert(sizeof(GpuTextureInfo) == 16);
+static_assert(sizeof(GpuEmitter) == 8);
+static_assert(sizeof(GpuCamera) == 64);
+static_assert(offsetof(GpuCamera, up) == 48);
+static_assert(sizeof(GpuScene) == 7 * 8 + 8 + 16);
+static_assert(sizeof(GpuPathState) == 7 * 8);
+static_assert(sizeof(GpuHits) == 4 * 8);
+static_assert(offsetof(GpuFrame, scene) == 64);
+static_assert(offsetof(GpuFrame, state) == 64 + sizeof(GpuScene));
+static_assert(sizeof(PathStagePush) == 16);
+
+TEST(SharedLayout, StructSizesMatchScalarLayout) {
+  // Scalar layout packs vec3 in 12 bytes with 4-byte alignment, as glm does on the host.
+  EXPECT_EQ(sizeof(vec3), 12u);
+  EXPECT_EQ(alignof(vec3), 4u);
+  EXPECT_EQ(offsetof(GpuFrame, width), 64 + sizeof(GpuScene) + 2 * sizeof(GpuPathState) + sizeof(GpuHits) + 5 * 8);
+}
+
+// Every shader's push-constant block, read from its SPIR-V, has the size of the C++ struct the host pushes
+// (ComputePipeline checks the same when it builds a pipeline; this finds a drift without a device).
+TEST(SharedLayout, PushConstantBlocksMatchTheHostStructs) {
+  const std::pair<const char*, size_t> shaders[] = {
+      {"generate", sizeof(PathStagePush)},       {"trace", sizeof(PathStagePush)},
+      {"shade", sizeof(PathStagePush)},          {"accumulate", sizeof(PathStagePush)},
+      {"tonemap", sizeof(PathStagePush)},        {"megakernel", sizeof(PathStagePush)},
+      {"live_count", sizeof(LiveCountPush)},     {"gather_path_state", sizeof(GatherPush)},
+      {"keys", sizeof(KeyPush)},                 {"key_oracle", sizeof(KeyPush)},
+      {"key_learn", sizeof(KeyLearnPush)},       {"key_merge", sizeof(KeyLearnPush)},
+      {"heatmap_gather", sizeof(HeatmapPush)},   {"heatmap_colorize", sizeof(HeatmapPush)},
+      {"sort_radix_histogram", sizeof(SortRadixPush)}, {"sort_radix_scatter", sizeof(SortRadixPush)},
+      {"sort_radix_scan", sizeof(SortScanPush)}, {"sort_copy", sizeof(SortCopyPush)},
+      {"sort_bitonic_local", sizeof(SortBitonicPush)}, {"sort_bitonic_global", sizeof(SortBitonicPush)},
+      {"sort_onesweep_histogram", sizeof(SortOneSweepPush)}, {"sort_onesweep_pass", sizeof(SortOneSweepPush)},
+  };
+  for (const auto& [name, bytes] : shaders)
+    EXPECT_EQ(raylab::spirvPushConstantBytes(raylab::shaderSpirv(name)), bytes) << name;
+}
+
+TEST(SharedLayout, ReflectionRejectsWhatIsNotSpirv) {
+  const uint32_t junk[] = {1, 2, 3, 4, 5, 6};
+  EXPECT_THROW(raylab::spirvPushConstantBytes(junk), std::runtime_error);
+  // A truncated module: the header's magic, then an instruction claiming more words than remain.
+  const uint32_t truncated[] = {0x07230203u, 0x00010500u, 0, 10, 0, (9u << 16) | 21u, 1};
+  EXPECT_THROW(raylab::spirvPushConstantBytes(truncated), std::runtime_error);
+}
+
+}  // namespace raylab::gpu

@@ -1,0 +1,281 @@
+// GPU sorts against std::stable_sort on (key, index) pairs: radix must reproduce the stable order exactly,
+// bitonic must sort the keys and carry each value with its key.
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "renderer/vk/gpu_buffer.h"
+#include "renderer/reorder/gpu_sort.h"
+#include "shaders/sort_types.h"
+#include "tests/gpu_test.h"
+
+namespace raylab {
+namespace {
+
+static_assert(sizeof(gpu::SortRadixPush) == 64);
+static_assert(sizeof(gpu::SortScanPush) == 16);
+static_assert(sizeof(gpu::SortBitonicPush) == 48);
+static_assert(sizeof(gpu::SortCopyPush) == 40);
+static_assert(sizeof(gpu::SortOneSweepPush) == 64);
+
+constexpr uint32_t kDead = 0xFFFFFFFFu;
+constexpr uint32_t kMaxCount = (1u << 20) + 3;
+
+enum class Dist { Uniform, Sorted, Reversed, Equal, Few, Full32, Dead12 };
+
+const char* distName(Dist d) {
+  switch (d) {
+    case Dist::Uniform: return "uniform";
+    case Dist::Sorted: return "sorted";
+    case Dist::Reversed: return "reversed";
+    case Dist::Equal: return "equal";
+    case Dist::Few: return "few";
+    case Dist::Full32: return "full32";
+    case Dist::Dead12: return "dead12";
+  }
+  return "?";
+}
+
+uint32_t distKeyBits(Dist d) { return d == Dist::Full32 ? 32 : d == Dist::Dead12 ? 12 : 30; }
+
+std::vector<uint32_t> makeKeys(Dist dist, uint32_t count, uint32_t seed) {
+  std::mt19937 rng(seed * 7919u + count);
+  const uint32_t bits = distKeyBits(dist);
+  const uint32_t mask = bits == 32 ? ~0u : (1u << bits) - 1u;
+  std::vector<uint32_t> keys(count);
+  for (uint32_t& k : keys) k = rng() & mask;
+  switch (dist) {
+    case Dist::Sorted: std::sort(keys.begin(), keys.end()); break;
+    case Dist::Reversed: std::sort(keys.begin(), keys.end(), std::greater<>()); break;
+    case Dist::Equal: std::fill(keys.begin(), keys.end(), 0x2345678u); break;
+    case Dist::Few: {
+      const uint32_t values[5] = {3, 0x1000000, 0x3FFFFFFF, 77777, 0x155};
+      for (uint32_t& k : keys) k = values[rng() % 5];
+      break;
+    }
+    case Dist::Full32:  // the extremes too: 0xFFFFFFFF is a real key at 32 bits
+      for (uint32_t& k : keys)
+        if (rng() % 16 == 0) k = rng() % 2 ? 0u : kDead;
+      break;
+    case Dist::Dead12:
+      for (uint32_t& k : keys)
+        if (rng() % 4 == 0) k = kDead;
+      break;
+    default: break;
+  }
+  return keys;
+}
+
+// The stable order of (effective key, index): what radix must produce.
+std::vector<uint32_t> stableOrder(const std::vector<uint32_t>& keys, uint32_t keyBits) {
+  std::vector<uint32_t> order(keys.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    return gpu::sortEffectiveKey(keys[a], keyBits) < gpu::sortEffectiveKey(keys[b], keyBits);
+  });
+  return order;
+}
+
+// What is sorted with: the portable radix sort, the OneSweep radix variant, the bitonic sort.
+enum class Variant { Radix, OneSweep, Bitonic };
+
+std::string variantName(Variant v) {
+  return v == Variant::Radix ? "radix" : v == Variant::OneSweep ? "onesweep" : "bitonic";
+}
+
+class GpuSortTest : public test::GpuTest {
+ protected:
+  static GpuSorter& sorter(Variant variant) {
+    static std::unique_ptr<GpuSorter> sorters[3];
+    auto& slot = sorters[static_cast<int>(variant)];
+    if (!slot) {
+      GpuSorter::Tuning tuning;
+      // OneSweep's look-back needs forward progress between work groups; where the device does not promise
+      // it (lavapipe), the serial test mode runs one work group per dispatch so the arithmetic is still checked.
+      tuning.oneSweep = variant == Variant::OneSweep;
+      tuning.oneSweepSerialTest = tuning.oneSweep && !GpuSorter::oneSweepSupported(ctx());
+      slot = std::make_unique<GpuSorter>(
+          ctx(), variant == Variant::Bitonic ? SortAlgorithm::Bitonic : SortAlgorithm::Radix, kMaxCount, tuning);
+      EXPECT_EQ(slot->usesOneSweep(), variant == Variant::OneSweep);
+    }
+    return *slot;
+  }
+  static GpuSorter& sorter(SortAlgorithm algorithm) {
+    return sorter(algorithm == SortAlgorithm::Bitonic ? Variant::Bitonic : Variant::Radix);
+  }
+
+  // Sorts (keys, 0..n-1) on the GPU and checks the result against the stable order.
+  void sortAndCheck(SortAlgorithm algorithm, const std::vector<uint32_t>& keys, uint32_t keyBits) {
+    sortAndCheck(algorithm == SortAlgorithm::Bitonic ? Variant::Bitonic : Variant::Radix, keys, keyBits);
+  }
+  void sortAndCheck(Variant variant, const std::vector<uint32_t>& keys, uint32_t keyBits) {
+    const SortAlgorithm algorithm = variant == Variant::Bitonic ? SortAlgorithm::Bitonic : SortAlgorithm::Radix;
+    const uint32_t n = static_cast<uint32_t>(keys.size());
+    std::vector<uint32_t> values(n);
+    std::iota(values.begin(), values.end(), 0u);
+    GpuBuffer keyBuf = makeBufferFrom(ctx(), keys);
+    GpuBuffer valueBuf = makeBufferFrom(ctx(), values);
+    GpuSorter& s = sorter(variant);
+    ctx().submitAndWait([&](VkCommandBuffer cmd) { s.record(cmd, keyBuf.address(), valueBuf.address(), n, keyBits); });
+    const std::vector<uint32_t> gotKeys = keyBuf.downloadVector<uint32_t>(n);
+    const std::vector<uint32_t> gotValues = valueBuf.downloadVector<uint32_t>(n);
+
+    const std::vector<uint32_t> order = stableOrder(keys, keyBits);
+    size_t keyMismatches = 0, valueMismatches = 0, firstBad = n;
+    std::vector<bool> seen(n, false);
+    for (uint32_t i = 0; i < n; ++i) {
+      const bool keyOk = gotKeys[i] == keys[order[i]];
+      bool valueOk;
+      if (algorithm == SortAlgorithm::Radix) {
+        valueOk = gotValues[i] == order[i];
+      } else {  // a permutation whose every (key, value) pair was in the input
+        valueOk = gotValues[i] < n && !seen[gotValues[i]] && keys[gotValues[i]] == gotKeys[i];
+        if (gotValues[i] < n) seen[gotValues[i]] = true;
+      }
+      keyMismatches += !keyOk;
+      valueMismatches += !valueOk;
+      if ((!keyOk || !valueOk) && firstBad == n) firstBad = i;
+    }
+    EXPECT_EQ(keyMismatches, 0u) << "first bad index " << firstBad;
+    EXPECT_EQ(valueMismatches, 0u) << "first bad index " << firstBad;
+  }
+};
+
+struct SortCase {
+  Variant variant;
+  uint32_t count;
+  Dist dist;
+};
+
+std::string caseName(const ::testing::TestParamInfo<SortCase>& info) {
+  return variantName(info.param.variant) + "_" + std::to_string(info.param.count) + "_" + distName(info.param.dist);
+}
+
+std::vector<SortCase> allCases() {
+  const uint32_t counts[] = {1, 2, 19, 2001, 3103, 11025, 65537, kMaxCount};
+  const Dist dists[] = {Dist::Uniform, Dist::Sorted, Dist::Reversed, Dist::Equal,
+                        Dist::Few,     Dist::Full32, Dist::Dead12};
+  std::vector<SortCase> cases;
+  for (Variant v : {Variant::Radix, Variant::OneSweep, Variant::Bitonic})
+    for (uint32_t n : counts)
+      for (Dist d : dists)
+        // Bitonic at 2^20+3 takes seconds on a CPU device: four distributions are enough there.
+        if (v != Variant::Bitonic || n < kMaxCount || d == Dist::Uniform || d == Dist::Reversed ||
+            d == Dist::Few || d == Dist::Dead12)
+          cases.push_back({v, n, d});
+  return cases;
+}
+
+class GpuSortCases : public GpuSortTest, public ::testing::WithParamInterface<SortCase> {};
+
+TEST_P(GpuSortCases, MatchesStableSort) {
+  const SortCase c = GetParam();
+  sortAndCheck(c.variant, makeKeys(c.dist, c.count, 1), distKeyBits(c.dist));
+}
+
+INSTANTIATE_TEST_SUITE_P(Sort, GpuSortCases, ::testing::ValuesIn(allCases()), caseName);
+
+// Every key bit below keyBits matters (no pass skipped too many), including pass counts that are odd
+// (7 and 16 bits: 1 and 3 passes, copied back) and dead keys on top.
+class GpuSortBits : public GpuSortTest, public ::testing::WithParamInterface<std::tuple<Variant, uint32_t>> {};
+
+TEST_P(GpuSortBits, KeysBelowTwoToTheBitsSort) {
+  const auto [variant, bits] = GetParam();
+  std::mt19937 rng(bits);
+  const uint32_t mask = bits == 32 ? ~0u : (1u << bits) - 1u;
+  for (bool withDead : {false, true}) {
+    std::vector<uint32_t> keys(11025);
+    for (uint32_t& k : keys) k = (withDead && rng() % 5 == 0) ? kDead : rng() & mask;
+    // Keys at the top of the range too, so the highest bit's pass is exercised.
+    keys[17] = mask;
+    keys[4000] = mask;
+    SCOPED_TRACE(withDead ? "with dead keys" : "live keys only");
+    sortAndCheck(variant, keys, bits);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Sort, GpuSortBits,
+                         ::testing::Combine(::testing::Values(Variant::Radix, Variant::OneSweep, Variant::Bitonic),
+                                            ::testing::Values(1u, 7u, 8u, 9u, 16u, 24u, 30u, 32u)),
+                         [](const auto& info) {
+                           return variantName(std::get<0>(info.param)) + "_bits" +
+                                  std::to_string(std::get<1>(info.param));
+                         });
+
+TEST_F(GpuSortTest, PassCountFollowsKeyBits) {
+  EXPECT_EQ(GpuSorter::radixPasses(1), 1u);
+  EXPECT_EQ(GpuSorter::radixPasses(7), 1u);
+  EXPECT_EQ(GpuSorter::radixPasses(8), 2u);
+  EXPECT_EQ(GpuSorter::radixPasses(15), 2u);
+  EXPECT_EQ(GpuSorter::radixPasses(16), 3u);
+  EXPECT_EQ(GpuSorter::radixPasses(30), 4u);
+  EXPECT_EQ(GpuSorter::radixPasses(32), 4u);
+}
+
+TEST_F(GpuSortTest, ScratchIsReported) {
+  EXPECT_GE(sorter(SortAlgorithm::Radix).scratchBytes(), 8ull * kMaxCount);
+  EXPECT_EQ(sorter(SortAlgorithm::Bitonic).scratchBytes(), 0u);
+  EXPECT_GE(sorter(Variant::OneSweep).scratchBytes(), 8ull * kMaxCount);
+  GpuSorter none(ctx(), SortAlgorithm::None, 1000);
+  EXPECT_EQ(none.scratchBytes(), 0u);
+  EXPECT_EQ(none.algorithm(), SortAlgorithm::None);
+}
+
+TEST_F(GpuSortTest, NoneAndEmptyLeaveBuffersAlone) {
+  const std::vector<uint32_t> keys = {5, 3, 9, 1};
+  GpuBuffer keyBuf = makeBufferFrom(ctx(), keys);
+  GpuBuffer valueBuf = makeBufferFrom(ctx(), keys);
+  GpuSorter none(ctx(), SortAlgorithm::None, 4);
+  ctx().submitAndWait([&](VkCommandBuffer cmd) {
+    none.record(cmd, keyBuf.address(), valueBuf.address(), 4, 8);
+    sorter(SortAlgorithm::Radix).record(cmd, keyBuf.address(), valueBuf.address(), 0, 8);
+    sorter(SortAlgorithm::Bitonic).record(cmd, keyBuf.address(), valueBuf.address(), 0, 8);
+  });
+  EXPECT_EQ(keyBuf.downloadVector<uint32_t>(4), keys);
+}
+
+TEST_F(GpuSortTest, RejectsCountOverCapacity) {
+  GpuSorter small(ctx(), SortAlgorithm::Radix, 100);
+  GpuBuffer buf(ctx(), 1024);
+  EXPECT_THROW(ctx().submitAndWait([&](VkCommandBuffer cmd) { small.record(cmd, buf.address(), buf.address(), 101, 8); }),
+               std::exception);
+}
+
+// The lab never runs OneSweep on a CPU device unless forced.
+TEST_F(GpuSortTest, OneSweepOnlyWhereSupported) {
+  GpuSorter::Tuning tuning;
+  tuning.oneSweep = true;
+  GpuSorter s(ctx(), SortAlgorithm::Radix, 1000, tuning);
+  EXPECT_EQ(s.usesOneSweep(), GpuSorter::oneSweepSupported(ctx()));
+  if (ctx().info().isCpu) {
+    EXPECT_FALSE(s.usesOneSweep());
+  }
+}
+
+// A sorter is reused frame after frame with varying counts; small sorts after a large one must not see its
+// leftovers, and a tuned shape (other group size and keys per thread) must sort the same.
+TEST_F(GpuSortTest, ReuseAndTunedShapes) {
+  for (Variant v : {Variant::Radix, Variant::OneSweep})
+    for (uint32_t n : {70000u, 3u, 4099u}) sortAndCheck(v, makeKeys(Dist::Dead12, n, 2), 12);
+  const uint32_t sub = ctx().info().subgroupSize;
+  for (uint32_t kpt : {1u, 4u, 16u}) {
+    GpuSorter::Tuning tuning{std::max(64u, sub), kpt};
+    tuning.oneSweep = kpt == 4;
+    tuning.oneSweepSerialTest = tuning.oneSweep && !GpuSorter::oneSweepSupported(ctx());
+    GpuSorter tuned(ctx(), SortAlgorithm::Radix, 50000, tuning);
+    const std::vector<uint32_t> keys = makeKeys(Dist::Uniform, 50000, kpt);
+    std::vector<uint32_t> values(keys.size());
+    std::iota(values.begin(), values.end(), 0u);
+    GpuBuffer keyBuf = makeBufferFrom(ctx(), keys);
+    GpuBuffer valueBuf = makeBufferFrom(ctx(), values);
+    ctx().submitAndWait([&](VkCommandBuffer cmd) { tuned.record(cmd, keyBuf.address(), valueBuf.address(), 50000, 30); });
+    EXPECT_EQ(valueBuf.downloadVector<uint32_t>(keys.size()), stableOrder(keys, 30)) << "keys per thread " << kpt;
+  }
+}
+
+}  // namespace
+}  // namespace raylab
