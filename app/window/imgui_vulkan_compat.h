@@ -5,7 +5,7 @@
 #include <imgui.h>
 #include <imgui_impl_vulkan.h>
 
-#include "renderer/vk_context.h"
+#include "renderer/vk/vk_context.h"
 
 namespace raylab {
 
