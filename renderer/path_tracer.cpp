@@ -236,6 +236,9 @@ const FrameStats& PathTracer::finishFrame(double wallMs) {
   if (usesRt()) {
     stats_.accelerationStructureBytes = rt_->accelerationStructureBytes();
     stats_.traversalStatsUnavailable = "not available with the rt tracer";
+    // The step heatmaps would show the zeros the rt stages write: the legend says why instead.
+    if (settings_.heatmap == HeatmapView::TraversalSteps || settings_.heatmap == HeatmapView::WarpEfficiency)
+      stats_.heatmapUnit = "traversal steps: not available with the rt tracer";
   }
   double seconds = (stats_.frameMs > 0.0 ? stats_.frameMs : wallMs) * 1e-3;
   stats_.raysPerSecond = seconds > 0.0 ? static_cast<double>(stats_.raysTraced) / seconds : 0.0;
