@@ -7,6 +7,8 @@ Writes, per (scene, view) case, into BENCH_OUT_DIR:
   speed_accuracy_<case>.png  prediction accuracy against trace time and total frame time
   equal_time_<case>.png  relative MSE against cumulative GPU time, one curve per strategy
   coherence_<case>.png   SIMT and virtual warp efficiency per strategy
+  tracers_<case>.png     (sweeps with --tracers) frame and trace-after-first time of every cell, compute
+                         tracer against the rt tracer and SER; the SER reordering hint in the title
 Uses Debian's python3-matplotlib (run with /usr/bin/python3).
 """
 import csv
@@ -120,6 +122,30 @@ def coherence(rows, title, path):
     plt.close(fig)
 
 
+def tracers(rows, title, path):
+    """Frame time and trace time of bounces >= 1 per cell, coloured by tracer (hatched: SER)."""
+    fig, ax = plt.subplots(figsize=(max(7, 0.55 * len(rows) + 2), 4.8))
+    labels = [r["label"] for r in rows]
+    x = range(len(rows))
+    colours = ["tab:blue" if r.get("tracer", "compute") == "compute" else "tab:orange" for r in rows]
+    hatches = ["//" if r.get("ser", "off") != "off" else "" for r in rows]
+    for i, r in enumerate(rows):
+        ax.bar(i - 0.2, num(r, "frame_ms_median"), width=0.4, color=colours[i], hatch=hatches[i],
+               label="frame" if i == 0 else None)
+        ax.bar(i + 0.2, num(r, "trace_after_first_ms"), width=0.4, color=colours[i], alpha=0.45,
+               label="trace, bounces >= 1" if i == 0 else None)
+    ax.set_xticks(list(x))
+    ax.set_xticklabels(labels, rotation=45, ha="right", fontsize=7)
+    ax.set_ylabel("GPU time per frame (ms, median)")
+    hint = sorted({r.get("ser_reordering_hint", "") for r in rows} - {""})
+    ax.set_title(f"Compute (blue) vs rt tracer (orange, hatched: SER) — {title}"
+                 + (f"\nSER reordering hint: {', '.join(hint)}" if hint else ""), fontsize=9)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 def main():
     if len(sys.argv) < 2:
         print(__doc__)
@@ -135,6 +161,8 @@ def main():
         speed_accuracy(case_rows, title, os.path.join(folder, f"speed_accuracy_{name}.png"))
         equal_time(case_rows, curves, title, os.path.join(folder, f"equal_time_{name}.png"))
         coherence(case_rows, title, os.path.join(folder, f"coherence_{name}.png"))
+        if len({r.get("tracer", "compute") for r in case_rows}) > 1:
+            tracers(case_rows, title, os.path.join(folder, f"tracers_{name}.png"))
         print(f"charts for {name} in {folder}")
     return 0
 

@@ -9,6 +9,7 @@
 #include "app/bench_measure.h"
 #include "app/bench_sweep.h"
 #include "app/scene_setup.h"
+#include "renderer/rt_tracer.h"
 #include "renderer/stats_json.h"
 
 namespace raylab {
@@ -44,7 +45,8 @@ const char* kStages[] = {"generate", "trace", "learn", "shade", "keys", "oracle-
                          "accumulate", "tonemap", "megakernel"};
 
 void writeCsvHeader(std::ofstream& csv) {
-  csv << "device,driver,git_revision,scene,view,width,height,bounces,spp_per_frame,kernel,strategy,sort,label,"
+  csv << "device,driver,git_revision,scene,view,width,height,bounces,spp_per_frame,kernel,tracer,ser,ser_reordering_hint,"
+         "strategy,sort,label,"
          "frame_ms_median,frame_ms_min,frame_ms_max,trace_after_first_ms";
   for (const char* s : kStages) csv << "," << s << "_ms";
   csv << ",rays_per_second,simt_efficiency,virtual_warp_efficiency,virtual_warp_efficiency_after_first,"
@@ -59,13 +61,16 @@ void writeCsvRow(std::ofstream& csv, const VulkanContext& ctx, const BenchCell& 
   const auto& b = r.detailed.bounces;
   csv << csvQuote(ctx.info().name) << "," << csvQuote(ctx.info().driver) << "," << RAYLAB_GIT_REV << ","
       << csvQuote(s.scene) << "," << view << "," << s.width << "," << s.height << "," << s.bounces << ","
-      << s.sppPerFrame << "," << toString(s.kernel) << "," << toString(s.strategy) << "," << toString(s.sort) << ","
+      << s.sppPerFrame << "," << toString(s.kernel) << "," << toString(s.tracer) << "," << toString(s.ser) << ","
+      << (s.reordersInHardware() ? ctx.info().serReorderingHint : "") << "," << toString(s.strategy) << "," << toString(s.sort) << ","
       << csvQuote(cell.label) << "," << r.frameMs.median << "," << r.frameMs.min << "," << r.frameMs.max << ","
       << r.traceAfterFirstMs.median;
   for (const char* st : kStages) csv << "," << (r.stageMs.count(st) ? r.stageMs.at(st).median : 0.0);
-  csv << "," << r.raysPerSecond << "," << meanOf(b, &BounceStats::simtEfficiency, false) << ","
-      << meanOf(b, &BounceStats::virtualWarpEfficiency, false) << ","
-      << meanOf(b, &BounceStats::virtualWarpEfficiency, true) << ","
+  // Figures of our traversal loop do not exist with the rt tracer: written as n/a, never as numbers.
+  auto loop = [&](double v) { return r.detailed.traversalStatsUnavailable.empty() ? std::to_string(v) : std::string("n/a"); };
+  csv << "," << r.raysPerSecond << "," << loop(meanOf(b, &BounceStats::simtEfficiency, false)) << ","
+      << loop(meanOf(b, &BounceStats::virtualWarpEfficiency, false)) << ","
+      << loop(meanOf(b, &BounceStats::virtualWarpEfficiency, true)) << ","
       << meanOf(b, &BounceStats::predictionErrorMean, true) << ","
       << meanOf(b, &BounceStats::predictionErrorMedian, true) << "," << meanOf(b, &BounceStats::cellHitRate, true)
       << "," << r.detailed.keyBits << "," << r.detailed.lengthCacheBytes << ","
@@ -85,6 +90,11 @@ int runBenchCommand(const std::vector<std::string>& args) {
   }
   std::filesystem::create_directories(plan.outDir);
   VulkanContext ctx(contextOptionsFor(plan.common));
+  for (const BenchCell& cell : plan.cells)
+    if (std::string why = unsupportedSettings(ctx.info(), cell.settings); !why.empty()) {
+      std::fprintf(stderr, "raylab bench: %s\n", why.c_str());
+      return kExitUsage;
+    }
   std::ofstream csv(plan.outDir + "/results.csv");
   std::ofstream jsonl(plan.outDir + "/results.jsonl");
   writeCsvHeader(csv);

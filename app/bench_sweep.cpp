@@ -40,6 +40,7 @@ std::vector<std::string> readSweepFile(const std::string& path) {
 
 struct Axes {
   std::vector<std::string> strategies{"all"}, sorts{"radix"}, grids{"auto"}, clamps{"off"}, resets{}, factors{};
+  std::vector<std::string> tracers{}, sers{}, serHints{"two-point"};
 };
 
 // One sweep-axis value applied to a copy of the settings, with the CLI's validation ("clamp off" too).
@@ -90,6 +91,9 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
     else if (flag == "--clamps") axes.clamps = splitList(v);
     else if (flag == "--gauss-resets") axes.resets = splitList(v);
     else if (flag == "--fixed-factors") axes.factors = splitList(v);
+    else if (flag == "--tracers") axes.tracers = splitList(v);
+    else if (flag == "--sers") axes.sers = splitList(v);
+    else if (flag == "--ser-hints") axes.serHints = splitList(v);
     else if (flag == "--timed-frames") plan.timedFrames = parseUint(flag, v, 1, 10000);
     else if (flag == "--warmup") plan.warmupFrames = parseUint(flag, v, 0, 10000);
     else if (flag == "--reference-spp") plan.referenceSpp = parseUint(flag, v, 1, 1 << 16);
@@ -107,47 +111,64 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
   }
 
   const Settings& base = plan.common.settings;
+  if (axes.tracers.empty()) axes.tracers = {toString(base.tracer)};
   for (size_t ci = 0; ci < plan.cases.size(); ++ci) {
-    Settings caseBase = base;
-    caseBase.scene = plan.cases[ci].scene;
-    caseBase.view = plan.cases[ci].view;
-    // Baselines first: the megakernel and the unsorted wavefront are in every sweep.
-    Settings mega = caseBase;
-    mega.kernel = Kernel::Megakernel;
-    mega.strategy = KeyStrategy::None;
-    plan.cells.push_back({ci, mega, "megakernel"});
-    Settings plain = caseBase;
-    plain.kernel = Kernel::Wavefront;
-    plain.strategy = KeyStrategy::None;
-    plan.cells.push_back({ci, plain, "none"});
-    for (const std::string& strategy : axes.strategies) {
-      Settings st = withFlag(plain, "--strategy", strategy);
-      if (st.strategy == KeyStrategy::None) continue;
-      for (const std::string& sort : axes.sorts) {
-        Settings so = withFlag(st, "--sort", sort);
-        std::vector<Settings> variants{so};
-        auto expand = [&](const std::vector<std::string>& values, const char* flag) {
-          if (values.empty() || !usesGrid(so.strategy)) return;
-          std::vector<Settings> next;
-          for (const Settings& v : variants)
-            for (const std::string& value : values) next.push_back(withFlag(v, flag, value));
-          variants = next;
-        };
-        expand(axes.grids, "--grid");
-        expand(axes.clamps, "--clamp");
-        if (so.strategy == KeyStrategy::Gaussian) expand(axes.resets, "--gauss-reset");
-        if (so.strategy == KeyStrategy::Fixed || so.strategy == KeyStrategy::TwoPoint) expand(axes.factors, "--fixed-factor");
-        for (const Settings& v : variants) {
-          std::string label = strategy + "/" + sort;
-          if (usesGrid(v.strategy)) {
-            label += v.grid.automatic ? " grid=auto" : " grid=" + std::to_string(v.grid.cells.x) + "x" +
-                                                         std::to_string(v.grid.cells.y) + "x" + std::to_string(v.grid.cells.z);
-            label += v.clampToCamera ? " clamp=" + std::to_string(int(v.clampDistance)) : " clamp=off";
+    for (const std::string& tracer : axes.tracers) {
+      Settings caseBase = withFlag(base, "--tracer", tracer);
+      caseBase.scene = plan.cases[ci].scene;
+      caseBase.view = plan.cases[ci].view;
+      caseBase.ser = Ser::Off;
+      // Labels of rt cells start with "rt "; the compute tracer's keep their names.
+      const std::string prefix = caseBase.tracer == Tracer::Rt ? "rt " : "";
+      // Baselines first: the megakernel and the unsorted wavefront are in every sweep.
+      Settings mega = caseBase;
+      mega.kernel = Kernel::Megakernel;
+      mega.strategy = KeyStrategy::None;
+      plan.cells.push_back({ci, mega, prefix + "megakernel"});
+      // SER (rt megakernel only): by hit, and by hit with the hint of each --ser-hints strategy.
+      for (const std::string& ser : caseBase.tracer == Tracer::Rt ? axes.sers : std::vector<std::string>{}) {
+        Settings withSer = withFlag(mega, "--ser", ser);
+        if (withSer.ser == Ser::On) plan.cells.push_back({ci, withSer, prefix + "megakernel ser"});
+        if (withSer.ser != Ser::Hint) continue;
+        for (const std::string& hint : axes.serHints) {
+          Settings hinted = withFlag(withSer, "--strategy", hint);
+          if (hinted.strategy == KeyStrategy::None) throw UsageError("--ser-hints: a hint needs a key strategy");
+          plan.cells.push_back({ci, hinted, prefix + "megakernel ser+hint " + hint});
+        }
+      }
+      Settings plain = caseBase;
+      plain.kernel = Kernel::Wavefront;
+      plain.strategy = KeyStrategy::None;
+      plan.cells.push_back({ci, plain, prefix + "none"});
+      for (const std::string& strategy : axes.strategies) {
+        Settings st = withFlag(plain, "--strategy", strategy);
+        if (st.strategy == KeyStrategy::None) continue;
+        for (const std::string& sort : axes.sorts) {
+          Settings so = withFlag(st, "--sort", sort);
+          std::vector<Settings> variants{so};
+          auto expand = [&](const std::vector<std::string>& values, const char* flag) {
+            if (values.empty() || !usesGrid(so.strategy)) return;
+            std::vector<Settings> next;
+            for (const Settings& v : variants)
+              for (const std::string& value : values) next.push_back(withFlag(v, flag, value));
+            variants = next;
+          };
+          expand(axes.grids, "--grid");
+          expand(axes.clamps, "--clamp");
+          if (so.strategy == KeyStrategy::Gaussian) expand(axes.resets, "--gauss-reset");
+          if (so.strategy == KeyStrategy::Fixed || so.strategy == KeyStrategy::TwoPoint) expand(axes.factors, "--fixed-factor");
+          for (const Settings& v : variants) {
+            std::string label = prefix + strategy + "/" + sort;
+            if (usesGrid(v.strategy)) {
+              label += v.grid.automatic ? " grid=auto" : " grid=" + std::to_string(v.grid.cells.x) + "x" +
+                                                           std::to_string(v.grid.cells.y) + "x" + std::to_string(v.grid.cells.z);
+              label += v.clampToCamera ? " clamp=" + std::to_string(int(v.clampDistance)) : " clamp=off";
+            }
+            if (!axes.resets.empty() && v.strategy == KeyStrategy::Gaussian) label += " reset=" + shortNumber(v.gaussReset);
+            if (!axes.factors.empty() && (v.strategy == KeyStrategy::Fixed || v.strategy == KeyStrategy::TwoPoint))
+              label += " factor=" + shortNumber(v.fixedFactor);
+            plan.cells.push_back({ci, v, label});
           }
-          if (!axes.resets.empty() && v.strategy == KeyStrategy::Gaussian) label += " reset=" + shortNumber(v.gaussReset);
-          if (!axes.factors.empty() && (v.strategy == KeyStrategy::Fixed || v.strategy == KeyStrategy::TwoPoint))
-            label += " factor=" + shortNumber(v.fixedFactor);
-          plan.cells.push_back({ci, v, label});
         }
       }
     }
@@ -164,13 +185,16 @@ std::string benchHelp() {
          "  --clamps off,50           camera clamp distances to sweep\n"
          "  --gauss-resets 20,inf     Gaussian reset thresholds to sweep\n"
          "  --fixed-factors 0.5,0.25  fixed-length factors to sweep\n"
+         "  --tracers compute,rt      tracers to sweep (default: --tracer's); rt labels start with \"rt \"\n"
+         "  --sers on,hint            SER cells of the rt megakernel (by hit; by hit with a key hint)\n"
+         "  --ser-hints two-point,... key strategies whose keys make the SER hint (default two-point)\n"
          "  --timed-frames N          measured frames per cell (default 8)\n"
          "  --warmup N                unmeasured frames first (default 2)\n"
          "  --reference-spp N         samples of the megakernel reference image (default 64)\n"
          "  --no-detail               skip the untimed counting frame (no SIMT/accuracy figures)\n"
          "  --out-dir DIR             results.csv, results.jsonl and charts (default bench-out)\n"
          "  --sweep FILE              the same flags as `name = value` lines\n"
-         "The megakernel and the unsorted wavefront are always measured.\n";
+         "The megakernel and the unsorted wavefront are always measured, per tracer.\n";
 }
 
 }  // namespace raylab

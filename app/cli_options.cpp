@@ -79,6 +79,8 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       {"--seed", [&](const std::string& v) { s.seed = parseUint("--seed", v, 0, UINT32_MAX); }},
       {"--exposure", [&](const std::string& v) { s.exposure = parseFloat("--exposure", v, 0.0f, 1e6f); }},
       {"--kernel", [&](const std::string& v) { s.kernel = parseEnum("--kernel", v, &parseKernel, "wavefront|megakernel"); }},
+      {"--tracer", [&](const std::string& v) { s.tracer = parseEnum("--tracer", v, &parseTracer, "compute|rt"); }},
+      {"--ser", [&](const std::string& v) { s.ser = parseEnum("--ser", v, &parseSer, "off|on|hint"); }},
       {"--strategy", [&](const std::string& v) { s.strategy = parseEnum("--strategy", v, &parseKeyStrategy, keyStrategyNames()); }},
       {"--sort", [&](const std::string& v) { s.sort = parseEnum("--sort", v, &parseSortAlgorithm, "none|bitonic|radix"); }},
       {"--grid", [&](const std::string& v) { parseGrid(v, s); }},
@@ -131,6 +133,9 @@ std::string commonOptionsHelp() {
          "  --frames N             frames to accumulate (default 1)\n"
          "  --seed N               random seed (default 1)\n"
          "  --kernel wavefront|megakernel\n"
+         "  --tracer compute|rt    our BVH in compute shaders (default), or VK_KHR_ray_tracing_pipeline\n"
+         "  --ser off|on|hint      rt megakernel: Shader Execution Reordering by hit, or by hit with the\n"
+         "                         top bits of --strategy's key as coherence hint (needs a strategy)\n"
          "  --strategy " + keyStrategyNames() + "\n"
          "  --sort none|bitonic|radix   sort used when a strategy is set (default radix)\n"
          "  --grid auto|N|NXxNYxNZ  key grid (default auto, 64 cells on the largest axis)\n"

@@ -20,7 +20,7 @@ void printHelp() {
       "  raylab render [options]     render headless to a PNG (raylab render --help)\n"
       "  raylab sortbench [options]  time the GPU sorts alone\n"
       "  raylab bench [options]      sweep strategies and sorts, write CSV/JSON and charts\n"
-      "  raylab devices              list Vulkan devices");
+      "  raylab devices              list Vulkan devices and whether each can run --tracer rt and --ser");
 }
 
 }  // namespace
@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
     if (mode == "bench") return raylab::runBenchCommand(rest);
     if (mode == "sortbench") return raylab::runSortBenchCommand(rest);
     if (mode == "devices") {
-      for (const std::string& name : raylab::VulkanContext::listDevices()) std::puts(name.c_str());
+      for (const std::string& line : raylab::VulkanContext::describeDevices()) std::puts(line.c_str());
       return raylab::kExitOk;
     }
     if (mode == "help" || mode == "--help" || (!args.empty() && args[0] == "--help")) {

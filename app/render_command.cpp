@@ -13,6 +13,7 @@
 #include "app/sidecar.h"
 #include "renderer/path_tracer.h"
 #include "renderer/png_writer.h"
+#include "renderer/rt_tracer.h"
 #include "renderer/stats_json.h"
 
 namespace raylab {
@@ -44,6 +45,10 @@ int runRenderCommand(const std::vector<std::string>& args) {
   const Settings& s = options.settings;
 
   VulkanContext ctx(contextOptionsFor(options));
+  if (std::string why = unsupportedSettings(ctx.info(), s); !why.empty()) {
+    std::fprintf(stderr, "raylab render: %s\n", why.c_str());
+    return kExitUsage;
+  }
   PathTracer tracer(ctx, loaded.scene, s, loaded.view);
   tracer.setDetailedStats(!options.statsPath.empty());
   std::fprintf(stderr, "raylab: %s/%s, %u triangles, BVH %u nodes in %.1f ms\n", loaded.scene.name.c_str(),
@@ -62,10 +67,10 @@ int runRenderCommand(const std::vector<std::string>& args) {
   }
   writePng(options.out, s.width, s.height, tracer.readImage());
   double seconds = (gpuMs > 0.0 ? gpuMs : wallMs) * 1e-3;
-  std::printf("wrote %s (%ux%u, %u spp, %s, %s) in %.2f s wall; %.3g rays/s\n",
+  std::printf("wrote %s (%ux%u, %u spp, %s, %s, %s tracer) in %.2f s wall; %.3g rays/s\n",
               std::filesystem::absolute(options.out).string().c_str(), s.width,
               s.height, tracer.accumulatedFrames() * s.sppPerFrame, loaded.view.name.c_str(),
-              toString(s.kernel).c_str(), wallMs * 1e-3, seconds > 0 ? rays / seconds : 0.0);
+              toString(s.kernel).c_str(), toString(s.tracer).c_str(), wallMs * 1e-3, seconds > 0 ? rays / seconds : 0.0);
 
   if (!options.statsPath.empty()) {
     nlohmann::json doc = {{"device", toJson(ctx.info())},

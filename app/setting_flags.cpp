@@ -23,6 +23,8 @@ const std::map<std::string, Copy>& fieldsOfFlag() {
       {"seed", [](Settings& t, const Settings& f) { t.seed = f.seed; }},
       {"exposure", [](Settings& t, const Settings& f) { t.exposure = f.exposure; }},
       {"kernel", [](Settings& t, const Settings& f) { t.kernel = f.kernel; }},
+      {"tracer", [](Settings& t, const Settings& f) { t.tracer = f.tracer; }},
+      {"ser", [](Settings& t, const Settings& f) { t.ser = f.ser; }},
       {"strategy", [](Settings& t, const Settings& f) { t.strategy = f.strategy; }},
       {"sort", [](Settings& t, const Settings& f) { t.sort = f.sort; }},
       {"grid", [](Settings& t, const Settings& f) { t.grid = f.grid; }},

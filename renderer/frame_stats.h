@@ -41,6 +41,10 @@ struct FrameStats {
   uint64_t sortScratchBytes = 0;
   uint64_t pathStateBytes = 0;
   uint64_t sceneBytes = 0;
+  uint64_t accelerationStructureBytes = 0;  // BLAS + TLAS of the rt tracer (compacted)
+  // Set when the figures of our traversal loop (SIMT lane counts, traversal steps, virtual warp
+  // efficiency) do not exist for this frame: "not available with the rt tracer". Never reported as zeros.
+  std::string traversalStatsUnavailable;
   // Value range of the heatmap shown this frame, for the colour legend (unit names the quantity).
   double heatmapMin = 0.0;
   double heatmapMax = 0.0;

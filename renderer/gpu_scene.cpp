@@ -51,6 +51,7 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene) {
   for (uint32_t src : bvh.triangleOrder) {
     const Triangle& t = scene.triangles[src];
     tris.push_back({t.v[0], t.material, t.v[1] - t.v[0], src, t.v[2] - t.v[0], triangleArea(t)});
+    bvhOrderVertices_.insert(bvhOrderVertices_.end(), {t.v[0], t.v[1], t.v[2]});
   }
   bool hasUvs = false;
   for (const Triangle& t : scene.triangles) {

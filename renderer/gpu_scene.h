@@ -23,6 +23,9 @@ class GpuSceneData {
   uint32_t triangleCount() const { return triangleCount_; }
   uint32_t emitterCount() const { return block_.emitterCount; }
   uint64_t memoryBytes() const;
+  // The triangles' corners in BVH order, three per triangle: the rt tracer's bottom-level structure is
+  // built from them, so its primitive index is the BVH-order index the shaders use.
+  const std::vector<glm::vec3>& bvhOrderVertices() const { return bvhOrderVertices_; }
 
  private:
   std::vector<GpuBuffer> buffers_;
@@ -30,6 +33,7 @@ class GpuSceneData {
   BvhBuildStats bvhStats_;
   Bounds bounds_;
   uint32_t triangleCount_ = 0;
+  std::vector<glm::vec3> bvhOrderVertices_;
 };
 
 // Light-sampling tables of a scene, exposed for tests: emitter triangles (BVH order) with their CDF over

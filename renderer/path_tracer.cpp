@@ -4,7 +4,9 @@
 #include <chrono>
 #include <cmath>
 
+#include "renderer/reorder/key_functions.h"
 #include "renderer/reorder/path_sorter.h"
+#include "renderer/rt_tracer.h"
 #include "renderer/heatmap_pass.h"
 #include "renderer/vk/stage_timer.h"
 #include "renderer/vk/vk_check.h"
@@ -50,7 +52,9 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Setti
       megakernel_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup, {0}),
       megakernelCounting_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup, {1}),
       timer_(ctx) {
+  checkSupported(settings_);
   allocate();
+  if (usesRt()) rt_ = std::make_unique<RtTracer>(ctx_, *scene_);
   pathSorter_ = std::make_unique<PathSorter>(ctx, scene, settings_, camera_.position, buffers_->pathCount);
   restartAccumulation();
 }
@@ -68,14 +72,22 @@ void PathTracer::restartAccumulation() {
   ctx_.submitAndWait([&](VkCommandBuffer cmd) { buffers_->accumulation.recordFill(cmd, 0); });
 }
 
+// Settings the device cannot run (the rt tracer or SER without their extensions) are refused here too; the
+// commands check first (unsupportedSettings) to exit with a usage error, the window greys them out.
+void PathTracer::checkSupported(const Settings& settings) const {
+  if (std::string why = unsupportedSettings(ctx_.info(), settings); !why.empty()) throw VulkanError(why);
+}
+
 // The one place a change of settings or camera is acted on; every part gets the same SettingsChange.
 void PathTracer::apply(const SettingsChange& change) {
   if (change.reallocate) allocate();
+  if (usesRt() && !rt_) rt_ = std::make_unique<RtTracer>(ctx_, *scene_);
   pathSorter_->apply(settings_, camera_.position, buffers_->pathCount, change);
   if (change.reallocate || change.resetAccumulation) restartAccumulation();
 }
 
 void PathTracer::applySettings(const Settings& next) {
+  checkSupported(next);
   SettingsChange change = SettingsChange::between(settings_, next);
   settings_ = next;
   apply(change);
@@ -107,6 +119,7 @@ void PathTracer::recordFrameBlock(VkCommandBuffer cmd) {
   gpu::GpuFrame frame = buffers_->addresses();
   frame.camera = makeGpuCamera(camera_, settings_.width, settings_.height);
   frame.scene = scene_->block();
+  frame.scene.tlas = usesRt() ? rt_->tlasAddress() : 0;
   frame.width = settings_.width;
   frame.height = settings_.height;
   frame.sppPerFrame = settings_.sppPerFrame;
@@ -120,9 +133,23 @@ void PathTracer::recordFrameBlock(VkCommandBuffer cmd) {
 }
 
 void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push) {
+  const uint32_t n = buffers_->pathCount;
   const ComputePipeline& megakernel = settings_.countSimt ? megakernelCounting_ : megakernel_;
-  recordStage(cmd, &timer_, "megakernel", [&] { megakernel.dispatchThreads(cmd, push, buffers_->pathCount); });
-  if (detailedStats_) recordStepsReadback(cmd, 0);
+  recordStage(cmd, &timer_, "megakernel", [&] {
+    if (!usesRt()) {
+      megakernel.dispatchThreads(cmd, push, n);
+    } else if (settings_.ser == Ser::Off) {
+      rt_->megakernel(cmd, push, n);
+    } else {
+      // The hint: the top bits (at most 16) of the key Settings::strategy gives each ray.
+      const KeyStrategy hint = settings_.ser == Ser::Hint ? settings_.strategy : KeyStrategy::None;
+      const uint32_t bits = hint == KeyStrategy::None ? 0 : spatialKeyBits(hint, pathSorter_->keys().grid().gpu);
+      gpu::RtSerPush ser{push.frame, hint == KeyStrategy::None ? 0 : pathSorter_->keys().paramsAddress(),
+                         bits > 16 ? bits - 16 : 0, std::min(bits, 16u)};
+      rt_->serMegakernel(cmd, ser, hint, n);
+    }
+  });
+  if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, 0);
   heatmap_->afterMegakernel(cmd, *buffers_, &timer_);
 }
 
@@ -140,11 +167,21 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
   for (uint32_t b = 0; b < settings_.bounces; ++b) {
     timer_.setBounce(static_cast<int>(b));
     push.bounce = b;
-    recordStage(cmd, &timer_, "trace", [&] { trace.dispatchIndirect(cmd, push, live, liveDispatch); });
-    if (detailedStats_) recordStepsReadback(cmd, b);
+    recordStage(cmd, &timer_, "trace", [&] {
+      if (usesRt())
+        rt_->traceRays(cmd, push, n);  // every path; the shader skips those past the live count
+      else
+        trace.dispatchIndirect(cmd, push, live, liveDispatch);
+    });
+    if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, b);
     if (sorting) pathSorter_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
     heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, keyParams, &timer_);
-    recordStage(cmd, &timer_, "shade", [&] { shade_.dispatchIndirect(cmd, push, live, liveDispatch); });
+    recordStage(cmd, &timer_, "shade", [&] {
+      if (usesRt())
+        rt_->shade(cmd, push, n);
+      else
+        shade_.dispatchIndirect(cmd, push, live, liveDispatch);
+    });
     if (sorting && b + 1 < settings_.bounces) {
       pathSorter_->recordKeys(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
       heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, keyParams, &timer_);
@@ -196,6 +233,13 @@ const FrameStats& PathTracer::finishFrame(double wallMs) {
   heatmap_->finishFrame(stats_);
   stats_.pathStateBytes = buffers_->pathStateBytes();
   stats_.sceneBytes = scene_->memoryBytes();
+  if (usesRt()) {
+    stats_.accelerationStructureBytes = rt_->accelerationStructureBytes();
+    stats_.traversalStatsUnavailable = "not available with the rt tracer";
+    // The step heatmaps would show the zeros the rt stages write: the legend says why instead.
+    if (settings_.heatmap == HeatmapView::TraversalSteps || settings_.heatmap == HeatmapView::WarpEfficiency)
+      stats_.heatmapUnit = "traversal steps: not available with the rt tracer";
+  }
   double seconds = (stats_.frameMs > 0.0 ? stats_.frameMs : wallMs) * 1e-3;
   stats_.raysPerSecond = seconds > 0.0 ? static_cast<double>(stats_.raysTraced) / seconds : 0.0;
   ++frameIndex_;
@@ -210,7 +254,7 @@ void PathTracer::gatherCounters() {
     const uint32_t* c = history + b * RL_COUNTER_STRIDE;
     BounceStats bs;
     bs.rays = c[RL_COUNTER_RAYS];
-    if (settings_.countSimt && c[RL_COUNTER_SIMT_SLOTS] > 0)
+    if (settings_.countSimt && !usesRt() && c[RL_COUNTER_SIMT_SLOTS] > 0)
       bs.simtEfficiency = static_cast<double>(c[RL_COUNTER_SIMT_ACTIVE]) /
                           (static_cast<double>(c[RL_COUNTER_SIMT_SLOTS]) * ctx_.info().subgroupSize);
     if (detailedStats_ && b < stepsReadback_.size()) {

@@ -18,6 +18,7 @@ namespace raylab {
 class VulkanContext;
 class PathSorter;
 class HeatmapPass;
+class RtTracer;
 
 class PathTracer {
  public:
@@ -54,6 +55,8 @@ class PathTracer {
  private:
   void allocate();
   void apply(const SettingsChange& change);
+  void checkSupported(const Settings& settings) const;
+  bool usesRt() const { return settings_.tracer == Tracer::Rt; }
   void recordFrameBlock(VkCommandBuffer cmd);
   void recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push);
   void recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push);
@@ -69,6 +72,7 @@ class PathTracer {
   std::unique_ptr<PathBuffers> buffers_;
   std::unique_ptr<PathSorter> pathSorter_;
   std::unique_ptr<HeatmapPass> heatmap_;
+  std::unique_ptr<RtTracer> rt_;  // acceleration structures and rt pipelines, made when the rt tracer is first used
   ComputePipeline generate_, trace_, traceCounting_, shade_, accumulate_, tonemap_, megakernel_,
       megakernelCounting_;
   GpuTimer timer_;

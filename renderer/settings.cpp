@@ -27,6 +27,8 @@ const std::pair<HeatmapView, const char*> kHeatmapNames[] = {
     {HeatmapView::CacheVariance, "cache-variance"}};
 const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},
                                                        {Kernel::Megakernel, "megakernel"}};
+const std::pair<Tracer, const char*> kTracerNames[] = {{Tracer::Compute, "compute"}, {Tracer::Rt, "rt"}};
+const std::pair<Ser, const char*> kSerNames[] = {{Ser::Off, "off"}, {Ser::On, "on"}, {Ser::Hint, "hint"}};
 
 template <class E, size_t N>
 std::string nameOf(const std::pair<E, const char*> (&table)[N], E value) {
@@ -69,6 +71,10 @@ std::string toString(Kernel k) { return nameOf(kKernelNames, k); }
 std::optional<KeyStrategy> parseKeyStrategy(const std::string& n) { return parse(kStrategyNames, n); }
 std::optional<SortAlgorithm> parseSortAlgorithm(const std::string& n) { return parse(kSortNames, n); }
 std::optional<Kernel> parseKernel(const std::string& n) { return parse(kKernelNames, n); }
+std::string toString(Tracer t) { return nameOf(kTracerNames, t); }
+std::string toString(Ser s) { return nameOf(kSerNames, s); }
+std::optional<Tracer> parseTracer(const std::string& n) { return parse(kTracerNames, n); }
+std::optional<Ser> parseSer(const std::string& n) { return parse(kSerNames, n); }
 
 std::string keyStrategyNames() {
   std::string s;

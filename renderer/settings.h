@@ -39,6 +39,11 @@ enum class HeatmapView {
   CacheVariance,   // length-cache variance there
 };
 enum class Kernel { Wavefront, Megakernel };
+// Who traverses: our BVH in compute shaders, or the driver through VK_KHR_ray_tracing_pipeline.
+enum class Tracer { Compute, Rt };
+// Shader Execution Reordering in the rt megakernel: off, by hit (hit object), or by hit with a coherence hint
+// made of the top bits of the key of Settings::strategy.
+enum class Ser { Off, On, Hint };
 
 const std::vector<KeyStrategy>& allKeyStrategies();
 std::string toString(KeyStrategy s);
@@ -48,6 +53,10 @@ std::string toString(Kernel k);
 std::optional<KeyStrategy> parseKeyStrategy(const std::string& name);
 std::optional<SortAlgorithm> parseSortAlgorithm(const std::string& name);
 std::optional<Kernel> parseKernel(const std::string& name);
+std::string toString(Tracer t);
+std::string toString(Ser s);
+std::optional<Tracer> parseTracer(const std::string& name);
+std::optional<Ser> parseSer(const std::string& name);
 std::string keyStrategyNames();  // "none|dead-last|fixed|..."
 std::string toString(HeatmapView v);
 std::optional<HeatmapView> parseHeatmapView(const std::string& name);
@@ -87,6 +96,8 @@ struct Settings {
   uint32_t seed = 1;
   float exposure = 1.0f;
   Kernel kernel = Kernel::Wavefront;
+  Tracer tracer = Tracer::Compute;
+  Ser ser = Ser::Off;  // rt tracer's megakernel only
 
   // Reordering
   KeyStrategy strategy = KeyStrategy::None;
@@ -105,6 +116,8 @@ struct Settings {
   uint32_t heatmapBounce = 1;  // which bounce the heatmap shows (0 = camera rays)
 
   bool sorts() const { return kernel == Kernel::Wavefront && strategy != KeyStrategy::None && sort != SortAlgorithm::None; }
+  // SER runs only in the rt megakernel; elsewhere the setting is kept but does nothing.
+  bool reordersInHardware() const { return tracer == Tracer::Rt && kernel == Kernel::Megakernel && ser != Ser::Off; }
   // True when the image of `previous` cannot be accumulated into: anything that changes what a pixel converges to.
   bool requiresAccumulationReset(const Settings& previous) const;
   // True when length caches learned under `previous` no longer apply.

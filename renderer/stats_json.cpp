@@ -19,6 +19,8 @@ json toJson(const Settings& s) {
       {"seed", s.seed},
       {"exposure", s.exposure},
       {"kernel", toString(s.kernel)},
+      {"tracer", toString(s.tracer)},
+      {"ser", toString(s.ser)},
       {"strategy", toString(s.strategy)},
       {"sort", toString(s.sort)},
       {"grid", s.grid.automatic ? json("auto") : json::array({s.grid.cells.x, s.grid.cells.y, s.grid.cells.z})},
@@ -70,6 +72,17 @@ Settings settingsFromJson(const json& j) {
     s.gaussOutlier = need("gauss_outlier").get<float>();
     s.gaussReset = need("gauss_reset").is_null() ? INFINITY : need("gauss_reset").get<float>();
     s.countSimt = need("count_simt").get<bool>();
+    // Older sidecars have no tracer or SER: they used the compute tracer.
+    if (j.contains("tracer")) {
+      auto tracer = parseTracer(j.at("tracer").get<std::string>());
+      if (!tracer) throw std::invalid_argument("settings: unknown tracer");
+      s.tracer = *tracer;
+    }
+    if (j.contains("ser")) {
+      auto ser = parseSer(j.at("ser").get<std::string>());
+      if (!ser) throw std::invalid_argument("settings: unknown ser");
+      s.ser = *ser;
+    }
     // Older sidecars have no heatmap fields: they showed the render.
     if (j.contains("heatmap")) {
       auto view = parseHeatmapView(j.at("heatmap").get<std::string>());
@@ -90,11 +103,13 @@ json toJson(const FrameStats& s) {
   for (size_t b = 0; b < s.bounces.size(); ++b) {
     const BounceStats& x = s.bounces[b];
     auto opt = [](double v) { return v < 0.0 ? json(nullptr) : json(v); };
+    // Figures of our traversal loop: the rt tracer has none, and says so instead of writing zeros.
+    auto loop = [&](json v) { return s.traversalStatsUnavailable.empty() ? v : json(s.traversalStatsUnavailable); };
     bounces.push_back({{"bounce", b},
                        {"rays", x.rays},
-                       {"simt_efficiency", opt(x.simtEfficiency)},
-                       {"virtual_warp_efficiency", opt(x.virtualWarpEfficiency)},
-                       {"mean_traversal_steps", x.meanTraversalSteps},
+                       {"simt_efficiency", loop(opt(x.simtEfficiency))},
+                       {"virtual_warp_efficiency", loop(opt(x.virtualWarpEfficiency))},
+                       {"mean_traversal_steps", loop(x.meanTraversalSteps)},
                        {"prediction_error_mean", opt(x.predictionErrorMean)},
                        {"prediction_error_median", opt(x.predictionErrorMedian)},
                        {"cell_hit_rate", opt(x.cellHitRate)},
@@ -112,12 +127,19 @@ json toJson(const FrameStats& s) {
           {"sort_scratch_bytes", s.sortScratchBytes},
           {"path_state_bytes", s.pathStateBytes},
           {"scene_bytes", s.sceneBytes},
+          {"acceleration_structure_bytes", s.accelerationStructureBytes},
           {"stages", stages},
           {"bounces", bounces}};
 }
 
 json toJson(const DeviceInfo& d) {
-  return {{"name", d.name}, {"driver", d.driver}, {"subgroup_size", d.subgroupSize}, {"cpu", d.isCpu}};
+  return {{"name", d.name},
+          {"driver", d.driver},
+          {"subgroup_size", d.subgroupSize},
+          {"cpu", d.isCpu},
+          {"ray_tracing", d.rayTracing ? json("yes") : json("no: lacks " + d.rayTracingMissing)},
+          {"ser", d.ser ? json("yes") : json("no: lacks " + d.serMissing)},
+          {"ser_reordering_hint", d.serReorderingHint}};
 }
 
 }  // namespace raylab

@@ -105,6 +105,16 @@ struct GpuKeyParams {
 layout(buffer_reference, scalar) buffer KeyParamsBuf { GpuKeyParams p; };
 #endif
 
+// Push constants of the rt megakernel with shader execution reordering (megakernel_ser.rgen): the frame
+// block, and the key parameters whose key function (specialization constant 2) gives the coherence hint:
+// the key's top hintBits bits (key >> hintShift). Without a hint the threads are reordered by hit only.
+struct RtSerPush {
+  RL_REF(FrameBuf) frame;
+  RL_REF(KeyParamsBuf) keyParams;  // 0 without a hint
+  uint hintShift;
+  uint hintBits;
+};
+
 // keys.comp and key_oracle.comp: one thread per path of the current state set.
 struct KeyPush {
   RL_REF(FrameBuf) frame;
@@ -128,6 +138,7 @@ struct KeyLearnPush {
 };
 
 #ifdef __cplusplus
+static_assert(sizeof(RtSerPush) == 24);
 static_assert(sizeof(KeyPush) == 48);
 static_assert(sizeof(KeyLearnPush) == 32);
 }  // namespace raylab::gpu

@@ -9,6 +9,12 @@
 #include "material.glsl"
 #include "rng.glsl"
 
+// The visibility test of next-event estimation: our BVH's any-hit traversal, unless a ray-tracing stage
+// defined RL_OCCLUDED as its traceRayEXT test (rt_stage.glsl) before including this file.
+#ifndef RL_OCCLUDED
+#define RL_OCCLUDED occluded
+#endif
+
 struct PathVars {
   vec3 origin;
   float pdf;  // solid-angle pdf of the BSDF sample that made this ray; 0 for camera rays (no MIS)
@@ -107,7 +113,7 @@ vec3 nextEventEstimate(GpuScene scene, vec3 pos, vec3 n, vec3 wo, SurfaceParams 
   float bsdfPdf;
   vec3 fcos = evalSurface(s, n, wo, wi, bsdfPdf);
   if (bsdfPdf <= 0.0 || lightPdf <= 0.0) return vec3(0.0);
-  if (occluded(scene, offsetOrigin(pos, n, wi), wi, dist)) return vec3(0.0);
+  if (RL_OCCLUDED(scene, offsetOrigin(pos, n, wi), wi, dist)) return vec3(0.0);
   return fcos * le * powerHeuristic(lightPdf, bsdfPdf) / lightPdf;
 }
 

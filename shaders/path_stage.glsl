@@ -1,4 +1,4 @@
-// Preamble of the wavefront stages: push constants, the frame block, and loading/storing one path's
+// Preamble of the wavefront stages (compute, and the rt tracer's ray-generation shaders): push constants, the frame block, and loading/storing one path's
 // state from the structure-of-arrays buffers of the current set.
 #ifndef RAYLAB_PATH_STAGE_GLSL
 #define RAYLAB_PATH_STAGE_GLSL
@@ -6,7 +6,9 @@
 #include "shared_types.h"
 #include "path_shading.glsl"
 
-layout(local_size_x_id = 0) in;
+#ifndef RL_RAY_TRACING_STAGE
+layout(local_size_x_id = 0) in;  // ray-generation shaders have a launch size instead
+#endif
 layout(push_constant, scalar) uniform Push { PathStagePush pc; };
 
 PathVars loadPath(GpuPathState s, uint i) {

@@ -16,8 +16,12 @@ using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uint = uint32_t;
 #define RL_REF(Type) uint64_t
+// A device address that is not a buffer reference (an acceleration structure): uvec2 in GLSL, which
+// accelerationStructureEXT() takes, so shaders that do not trace need no 64-bit integer extension.
+#define RL_ADDRESS uint64_t
 #else
 #define RL_REF(Type) Type
+#define RL_ADDRESS uvec2
 #endif
 
 // Work-group size of every path stage (one thread per path).
@@ -146,6 +150,7 @@ struct GpuScene {
   uint hasUvs;
   vec3 skyColor;
   float skyLightProbability;  // chance that next-event estimation samples the sky rather than a triangle
+  RL_ADDRESS tlas;            // top-level acceleration structure of the rt tracer (0 with the compute tracer)
 };
 
 // One set of path state, structure of arrays (RL_STATE_* name each array). Two sets exist; after a sort,
@@ -225,6 +230,7 @@ static_assert(sizeof(GpuPathState) == RL_STATE_ARRAY_COUNT * sizeof(uint64_t));
 static_assert(offsetof(GpuPathState, alive) == RL_STATE_ALIVE * sizeof(uint64_t));
 static_assert(offsetof(GpuPathState, predictedLength) == RL_STATE_PREDICTED_LENGTH * sizeof(uint64_t));
 static_assert(sizeof(PathStagePush) == 16);
+static_assert(offsetof(GpuScene, tlas) % 8 == 0 && sizeof(GpuScene) == offsetof(GpuScene, tlas) + 8);
 static_assert(sizeof(LiveCountPush) == 24);
 static_assert(sizeof(GatherPush) == 24);
 static_assert(RL_COUNTER_SIMT_SLOTS < RL_COUNTER_STRIDE && RL_LIVE_DISPATCH + 3 == RL_LIVE_WORDS);

@@ -33,11 +33,23 @@ bool sliderU32(const char* label, uint32_t& v, uint32_t lo, uint32_t hi, ImGuiSl
   return changed;
 }
 
-void drawSortSection(Settings& s) {
+void drawSortSection(Settings& s, const ViewOptions& view) {
   comboEnum("strategy", s.strategy, allKeyStrategies());
   comboEnum("sort", s.sort, {SortAlgorithm::None, SortAlgorithm::Bitonic, SortAlgorithm::Radix});
   comboEnum("kernel", s.kernel, {Kernel::Wavefront, Kernel::Megakernel});
   if (s.kernel == Kernel::Megakernel) ImGui::TextDisabled("the megakernel never sorts");
+  // The rt tracer and SER need extensions the device may lack: greyed out with the reason.
+  ImGui::BeginDisabled(!view.rtUnavailable.empty());
+  comboEnum("tracer", s.tracer, {Tracer::Compute, Tracer::Rt});
+  ImGui::EndDisabled();
+  if (!view.rtUnavailable.empty()) ImGui::TextWrapped("rt tracer unavailable: %s", view.rtUnavailable.c_str());
+  ImGui::BeginDisabled(!view.serUnavailable.empty() || s.tracer != Tracer::Rt || s.kernel != Kernel::Megakernel);
+  comboEnum("SER", s.ser, {Ser::Off, Ser::On, Ser::Hint});
+  ImGui::EndDisabled();
+  if (!view.serUnavailable.empty())
+    ImGui::TextWrapped("SER unavailable: %s", view.serUnavailable.c_str());
+  else if (s.ser == Ser::Hint)
+    ImGui::TextDisabled("hint: top bits of the strategy's key");
 }
 
 void drawGridSection(Settings& s) {
@@ -103,7 +115,7 @@ void drawMethodPanel(Settings& s, ViewOptions& view) {
     return;
   }
   ImGui::PushItemWidth(150);
-  drawSortSection(s);
+  drawSortSection(s, view);
   sliderU32("bounces", s.bounces, 1, L::kMaxBounces);
   sliderU32("samples per frame", s.sppPerFrame, 1, L::kMaxSpp, kLog);
   ImGui::SliderFloat("resolution scale", &view.resolutionScale, ViewOptions::kMinScale, ViewOptions::kMaxScale, "%.2f", kClamp);

@@ -15,6 +15,10 @@ struct ViewOptions {
   bool detailedStats = true;     // per-bounce readbacks: virtual warp efficiency, prediction accuracy
   bool showPanels = true;        // Tab hides them to look at the render alone
   bool showHelp = false;         // F1
+  // Why the device cannot run the rt tracer / SER (empty: it can); the window fills them from its device,
+  // the method panel greys the options out with the reason.
+  std::string rtUnavailable;
+  std::string serUnavailable;
   static constexpr float kMinScale = 0.05f;
   static constexpr float kMaxScale = 2.0f;
 };

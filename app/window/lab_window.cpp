@@ -13,6 +13,7 @@
 #include "app/window/presenter.h"
 #include "app/window/swapchain.h"
 #include "renderer/path_tracer.h"
+#include "renderer/rt_tracer.h"
 #include "renderer/vk/vk_context.h"
 #include "scenes/scene_library.h"
 
@@ -94,6 +95,15 @@ void LabWindow::openWindow() {
   // A CPU device (lavapipe) renders a quarter of the width and height by default: at 1280x720 that is
   // 320x180, about a frame per second on two cores, where the full size would take ten or more.
   view_.defaultScale = ctx_->info().isCpu ? 0.25f : 1.0f;
+  {
+    Settings rt = settings_, ser = settings_;
+    rt.tracer = ser.tracer = Tracer::Rt;
+    rt.ser = Ser::Off;
+    ser.ser = Ser::On;
+    view_.rtUnavailable = unsupportedSettings(ctx_->info(), rt);
+    view_.serUnavailable = unsupportedSettings(ctx_->info(), ser);
+  }
+  if (std::string why = unsupportedSettings(ctx_->info(), settings_); !why.empty()) throw UsageError(why);
   if (!ini_.loadedScale) view_.resolutionScale = view_.defaultScale;
   if (options_.scale) view_.resolutionScale = *options_.scale;
 

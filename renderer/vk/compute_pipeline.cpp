@@ -1,5 +1,6 @@
 #include "renderer/vk/compute_pipeline.h"
 
+#include <atomic>
 #include <utility>
 
 #include "renderer/vk/shader_table.h"
@@ -97,6 +98,15 @@ void ComputePipeline::dispatchThreads(VkCommandBuffer cmd, const void* push, uin
   dispatchGroups(cmd, push, static_cast<uint32_t>((threads + groupSize_ - 1) / groupSize_));
 }
 
+namespace {
+// Every context of a process picks the same device features, so one flag serves them all.
+std::atomic<VkPipelineStageFlags> gExtraShaderStages{0};
+}  // namespace
+
+void setRayTracingBarriers(bool on) {
+  gExtraShaderStages = on ? VkPipelineStageFlags(VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR) : 0;
+}
+
 void computeBarrier(VkCommandBuffer cmd) {
   // Indirect dispatch sizes written by a shader (GpuFrame::live) are read by the DRAW_INDIRECT stage, so
   // it is part of the destination: without it a GPU may launch a stage with a stale group count.
@@ -104,9 +114,10 @@ void computeBarrier(VkCommandBuffer cmd) {
   barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
   barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT |
                           VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+  const VkPipelineStageFlags extra = gExtraShaderStages.load();
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT | extra,
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
-                           VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                           VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | extra,
                        0, 1, &barrier, 0, nullptr, 0, nullptr);
 }
 

@@ -65,7 +65,10 @@ class ComputePipeline {
   uint32_t groupSize_ = 0;
 };
 
-// Makes all earlier shader and transfer writes visible to later shader and transfer reads and writes.
+// Makes all earlier shader and transfer writes visible to later shader and transfer reads and writes; the
+// ray-tracing shader stage is on both sides once a context enabled ray tracing (setRayTracingBarriers),
+// so the rt tracer's stages are fenced like compute ones.
 void computeBarrier(VkCommandBuffer cmd);
+void setRayTracingBarriers(bool on);
 
 }  // namespace raylab

@@ -9,13 +9,14 @@
 
 namespace raylab {
 
-GpuBuffer::GpuBuffer(const VulkanContext& ctx, VkDeviceSize bytes, MemoryKind kind) : ctx_(&ctx) {
+GpuBuffer::GpuBuffer(const VulkanContext& ctx, VkDeviceSize bytes, MemoryKind kind, VkBufferUsageFlags extraUsage)
+    : ctx_(&ctx) {
   size_ = std::max<VkDeviceSize>(bytes, 16);
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = size_;
   info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
-               VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+               VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | extraUsage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   VK_CHECK(vkCreateBuffer(ctx.device(), &info, nullptr, &buffer_));
 

@@ -17,7 +17,10 @@ enum class MemoryKind { DeviceLocal, HostVisible };
 class GpuBuffer {
  public:
   GpuBuffer() = default;
-  GpuBuffer(const VulkanContext& ctx, VkDeviceSize bytes, MemoryKind kind = MemoryKind::DeviceLocal);
+  // `extraUsage` adds usages beyond storage, transfer, device address and indirect (acceleration-structure
+  // storage and build input, shader binding tables).
+  GpuBuffer(const VulkanContext& ctx, VkDeviceSize bytes, MemoryKind kind = MemoryKind::DeviceLocal,
+            VkBufferUsageFlags extraUsage = 0);
   ~GpuBuffer();
   GpuBuffer(GpuBuffer&& other) noexcept;
   GpuBuffer& operator=(GpuBuffer&& other) noexcept;

@@ -4,7 +4,9 @@
 #include <cctype>
 #include <cstdio>
 #include <cstring>
+#include <type_traits>
 
+#include "renderer/vk/compute_pipeline.h"
 #include "renderer/vk/vk_check.h"
 
 namespace raylab {
@@ -188,11 +190,88 @@ void VulkanContext::createDevice(const ContextOptions& options) {
   if (!have12.bufferDeviceAddress || !have12.scalarBlockLayout || !have.features.shaderInt64)
     throw VulkanError(info_.name + " lacks bufferDeviceAddress, scalarBlockLayout or shaderInt64");
 
+  // Ray tracing (the rt tracer) and SER, enabled where the device has them.
+  std::vector<const char*> extensions = options.deviceExtensions;
+  uint32_t extensionCount = 0;
+  vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount, nullptr);
+  std::vector<VkExtensionProperties> available(extensionCount);
+  vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount, available.data());
+  auto has = [&](const char* name) {
+    for (const auto& e : available)
+      if (std::strcmp(e.extensionName, name) == 0) return true;
+    return false;
+  };
+  VkPhysicalDeviceAccelerationStructureFeaturesKHR haveAs{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+  VkPhysicalDeviceRayTracingPipelineFeaturesKHR haveRt{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+  VkPhysicalDeviceRayTracingInvocationReorderFeaturesNV haveSer{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_INVOCATION_REORDER_FEATURES_NV};
+  const char* rtExtensions[] = {VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
+                                VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+  std::string missing;
+  for (const char* e : rtExtensions)
+    if (!has(e)) missing += (missing.empty() ? "" : ", ") + std::string(e);
+  const bool serExtension = has(VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME);
+  if (missing.empty()) {
+    haveAs.pNext = &haveRt;
+    if (serExtension) haveRt.pNext = &haveSer;
+    VkPhysicalDeviceFeatures2 query{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    query.pNext = &haveAs;
+    vkGetPhysicalDeviceFeatures2(physical_, &query);
+    if (!haveAs.accelerationStructure) missing = "the accelerationStructure feature";
+    if (!haveRt.rayTracingPipeline) missing += (missing.empty() ? "" : ", ") + std::string("the rayTracingPipeline feature");
+  }
+  info_.rayTracing = missing.empty();
+  info_.rayTracingMissing = missing;
+  VkPhysicalDeviceAccelerationStructureFeaturesKHR wantAs{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+  VkPhysicalDeviceRayTracingPipelineFeaturesKHR wantRt{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+  VkPhysicalDeviceRayTracingInvocationReorderFeaturesNV wantSer{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_INVOCATION_REORDER_FEATURES_NV};
+  if (info_.rayTracing) {
+    for (const char* e : rtExtensions) extensions.push_back(e);
+    wantAs.accelerationStructure = VK_TRUE;
+    wantRt.rayTracingPipeline = VK_TRUE;
+    wantAs.pNext = &wantRt;
+    info_.ser = serExtension && haveSer.rayTracingInvocationReorder;
+    if (info_.ser) {
+      extensions.push_back(VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME);
+      wantSer.rayTracingInvocationReorder = VK_TRUE;
+      wantRt.pNext = &wantSer;
+    }
+    VkPhysicalDeviceRayTracingPipelinePropertiesKHR rtProps{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR};
+    VkPhysicalDeviceAccelerationStructurePropertiesKHR asProps{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
+    VkPhysicalDeviceRayTracingInvocationReorderPropertiesNV serProps{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_INVOCATION_REORDER_PROPERTIES_NV};
+    VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+    rtProps.pNext = &asProps;
+    asProps.pNext = &subgroup;
+    if (info_.ser) subgroup.pNext = &serProps;
+    VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    props.pNext = &rtProps;
+    vkGetPhysicalDeviceProperties2(physical_, &props);
+    info_.shaderGroupHandleSize = rtProps.shaderGroupHandleSize;
+    info_.shaderGroupHandleAlignment = rtProps.shaderGroupHandleAlignment;
+    info_.shaderGroupBaseAlignment = rtProps.shaderGroupBaseAlignment;
+    info_.maxRayDispatchInvocationCount = rtProps.maxRayDispatchInvocationCount;
+    info_.minAccelerationStructureScratchOffsetAlignment = asProps.minAccelerationStructureScratchOffsetAlignment;
+    info_.subgroupsInRayGen = (subgroup.supportedStages & VK_SHADER_STAGE_RAYGEN_BIT_KHR) &&
+                              (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT);
+    if (info_.ser)
+      info_.serReorderingHint =
+          serProps.rayTracingInvocationReorderReorderingHint == VK_RAY_TRACING_INVOCATION_REORDER_MODE_REORDER_NV
+              ? "reorder"
+              : "none";
+  }
+  if (!info_.ser)
+    info_.serMissing = !info_.rayTracing ? missing + ", " + VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME
+                       : !serExtension   ? std::string(VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME)
+                                         : "the rayTracingInvocationReorder feature";
+
   VkPhysicalDeviceVulkan12Features want12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   want12.bufferDeviceAddress = VK_TRUE;
   want12.scalarBlockLayout = VK_TRUE;
   want12.hostQueryReset = have12.hostQueryReset;
   want12.shaderSubgroupExtendedTypes = have12.shaderSubgroupExtendedTypes;
+  if (info_.rayTracing) want12.pNext = &wantAs;
   VkPhysicalDeviceFeatures2 want{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   want.pNext = &want12;
   want.features.shaderInt64 = VK_TRUE;
@@ -207,10 +286,27 @@ void VulkanContext::createDevice(const ContextOptions& options) {
   info.pNext = &want;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queueInfo;
-  info.enabledExtensionCount = static_cast<uint32_t>(options.deviceExtensions.size());
-  info.ppEnabledExtensionNames = options.deviceExtensions.data();
+  info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
   VK_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+  if (info_.rayTracing) {
+    auto load = [&](auto& fn, const char* name) {
+      fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(vkGetDeviceProcAddr(device_, name));
+      if (!fn) throw VulkanError(std::string("the device has no ") + name);
+    };
+    load(rt_.createAccelerationStructure, "vkCreateAccelerationStructureKHR");
+    load(rt_.destroyAccelerationStructure, "vkDestroyAccelerationStructureKHR");
+    load(rt_.getAccelerationStructureBuildSizes, "vkGetAccelerationStructureBuildSizesKHR");
+    load(rt_.cmdBuildAccelerationStructures, "vkCmdBuildAccelerationStructuresKHR");
+    load(rt_.getAccelerationStructureDeviceAddress, "vkGetAccelerationStructureDeviceAddressKHR");
+    load(rt_.cmdCopyAccelerationStructure, "vkCmdCopyAccelerationStructureKHR");
+    load(rt_.cmdWriteAccelerationStructuresProperties, "vkCmdWriteAccelerationStructuresPropertiesKHR");
+    load(rt_.createRayTracingPipelines, "vkCreateRayTracingPipelinesKHR");
+    load(rt_.getRayTracingShaderGroupHandles, "vkGetRayTracingShaderGroupHandlesKHR");
+    load(rt_.cmdTraceRays, "vkCmdTraceRaysKHR");
+    setRayTracingBarriers(true);
+  }
 
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
@@ -262,6 +358,43 @@ std::vector<std::string> VulkanContext::listDevices() {
   }
   vkDestroyInstance(instance, nullptr);
   return names;
+}
+
+}  // namespace raylab
+
+namespace raylab {
+
+std::vector<std::string> VulkanContext::describeDevices() {
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.apiVersion = VK_API_VERSION_1_2;
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pApplicationInfo = &app;
+  VkInstance instance;
+  VK_CHECK(vkCreateInstance(&info, nullptr, &instance));
+  std::vector<std::string> lines;
+  for (VkPhysicalDevice d : enumerateDevices(instance)) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(d, &p);
+    uint32_t count = 0;
+    vkEnumerateDeviceExtensionProperties(d, nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> extensions(count);
+    vkEnumerateDeviceExtensionProperties(d, nullptr, &count, extensions.data());
+    auto lacking = [&](std::initializer_list<const char*> names) {
+      std::string missing;
+      for (const char* n : names) {
+        bool found = false;
+        for (const auto& e : extensions) found = found || std::strcmp(e.extensionName, n) == 0;
+        if (!found) missing += (missing.empty() ? "" : ", ") + std::string(n);
+      }
+      return missing.empty() ? std::string("yes") : "no (lacks " + missing + ")";
+    };
+    lines.push_back(std::string(p.deviceName) + "\n  rt tracer: " +
+                    lacking({VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
+                             VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME}) +
+                    "\n  SER: " + lacking({VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME}));
+  }
+  vkDestroyInstance(instance, nullptr);
+  return lines;
 }
 
 }  // namespace raylab

@@ -28,6 +28,37 @@ struct DeviceInfo {
   bool timestamps = false;
   uint32_t maxGroupCountX = 0;
   bool isCpu = false;
+
+  // Hardware-API ray tracing (the rt tracer): VK_KHR_acceleration_structure and VK_KHR_ray_tracing_pipeline
+  // with their features, enabled whenever the device has them. rayTracingMissing names what is missing.
+  bool rayTracing = false;
+  std::string rayTracingMissing;
+  bool subgroupsInRayGen = false;  // subgroup operations in ray-generation shaders
+  uint32_t shaderGroupHandleSize = 0;
+  uint32_t shaderGroupHandleAlignment = 0;
+  uint32_t shaderGroupBaseAlignment = 0;
+  uint32_t maxRayDispatchInvocationCount = 0;
+  uint32_t minAccelerationStructureScratchOffsetAlignment = 0;
+  // Shader Execution Reordering (VK_NV_ray_tracing_invocation_reorder), enabled when present; serMissing
+  // names what is missing. serReorderingHint is the device's VkRayTracingInvocationReorderModeNV:
+  // "reorder" (it may reorder) or "none" (reorderThreadNV is a no-op on this device).
+  bool ser = false;
+  std::string serMissing;
+  std::string serReorderingHint = "n/a";
+};
+
+// Entry points of the ray-tracing extensions (the loader exports only core functions).
+struct RayTracingFunctions {
+  PFN_vkCreateAccelerationStructureKHR createAccelerationStructure = nullptr;
+  PFN_vkDestroyAccelerationStructureKHR destroyAccelerationStructure = nullptr;
+  PFN_vkGetAccelerationStructureBuildSizesKHR getAccelerationStructureBuildSizes = nullptr;
+  PFN_vkCmdBuildAccelerationStructuresKHR cmdBuildAccelerationStructures = nullptr;
+  PFN_vkGetAccelerationStructureDeviceAddressKHR getAccelerationStructureDeviceAddress = nullptr;
+  PFN_vkCmdCopyAccelerationStructureKHR cmdCopyAccelerationStructure = nullptr;
+  PFN_vkCmdWriteAccelerationStructuresPropertiesKHR cmdWriteAccelerationStructuresProperties = nullptr;
+  PFN_vkCreateRayTracingPipelinesKHR createRayTracingPipelines = nullptr;
+  PFN_vkGetRayTracingShaderGroupHandlesKHR getRayTracingShaderGroupHandles = nullptr;
+  PFN_vkCmdTraceRaysKHR cmdTraceRays = nullptr;
 };
 
 class VulkanContext {
@@ -43,6 +74,8 @@ class VulkanContext {
   VkQueue queue() const { return queue_; }
   uint32_t queueFamily() const { return queueFamily_; }
   const DeviceInfo& info() const { return info_; }
+  // Valid only when info().rayTracing.
+  const RayTracingFunctions& rt() const { return rt_; }
 
   // Records commands into a one-time command buffer, submits it and waits for completion.
   void submitAndWait(const std::function<void(VkCommandBuffer)>& record) const;
@@ -54,6 +87,8 @@ class VulkanContext {
 
   // Names of all devices the loader sees (for --device errors and `raylab devices`).
   static std::vector<std::string> listDevices();
+  // One line per device: its name, and whether it has the rt tracer's and SER's extensions (which it lacks).
+  static std::vector<std::string> describeDevices();
 
  private:
   void createInstance(const ContextOptions& options);
@@ -73,6 +108,7 @@ class VulkanContext {
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
   DeviceInfo info_;
+  RayTracingFunctions rt_;
   VkPhysicalDeviceMemoryProperties memoryProperties_{};
   std::atomic<uint32_t> validationErrors_{0};
   std::atomic<uint32_t> validationWarnings_{0};

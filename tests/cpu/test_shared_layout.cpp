@@ -28,7 +28,8 @@ static_assert(sizeof(GpuTextureInfo) == 16);
 static_assert(sizeof(GpuEmitter) == 8);
 static_assert(sizeof(GpuCamera) == 64);
 static_assert(offsetof(GpuCamera, up) == 48);
-static_assert(sizeof(GpuScene) == 7 * 8 + 8 + 16);
+static_assert(sizeof(GpuScene) == 7 * 8 + 8 + 16 + 8);  // + the TLAS address (uvec2 in GLSL)
+static_assert(offsetof(GpuScene, tlas) == 80);
 static_assert(sizeof(GpuPathState) == 7 * 8);
 static_assert(sizeof(GpuHits) == 4 * 8);
 static_assert(offsetof(GpuFrame, scene) == 64);
@@ -57,6 +58,11 @@ TEST(SharedLayout, PushConstantBlocksMatchTheHostStructs) {
       {"sort_radix_scan", sizeof(SortScanPush)}, {"sort_copy", sizeof(SortCopyPush)},
       {"sort_bitonic_local", sizeof(SortBitonicPush)}, {"sort_bitonic_global", sizeof(SortBitonicPush)},
       {"sort_onesweep_histogram", sizeof(SortOneSweepPush)}, {"sort_onesweep_pass", sizeof(SortOneSweepPush)},
+      {"trace_rt", sizeof(PathStagePush)},       {"trace_rt_atomic", sizeof(PathStagePush)},
+      {"shade_rt", sizeof(PathStagePush)},       {"megakernel_rt", sizeof(PathStagePush)},
+      {"megakernel_rt_atomic", sizeof(PathStagePush)}, {"megakernel_ser", sizeof(RtSerPush)},
+      {"rt_miss", 0},                            {"rt_shadow_miss", 0},
+      {"rt_closest_hit", 0},
   };
   for (const auto& [name, bytes] : shaders)
     EXPECT_EQ(raylab::spirvPushConstantBytes(raylab::shaderSpirv(name)), bytes) << name;
