@@ -10,6 +10,7 @@
 #include "app/cli_options.h"
 #include "app/scene_setup.h"
 #include "app/sidecar.h"
+#include "renderer/heatmap_rules.h"
 #include "renderer/path_tracer.h"
 #include "renderer/png_writer.h"
 #include "renderer/stats_json.h"
@@ -34,6 +35,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
   std::optional<Viewpoint> sidecarCamera;  // --settings FILE.json: a screenshot sidecar's settings and camera
   try {
     options = parseOptionsWithSettingsFile(args, &sidecarCamera);
+    // A view without data would be an empty image: refuse it, saying what it needs.
+    if (auto why = heatmapUnavailable(options.settings)) throw UsageError("--heatmap " + *why);
     loaded = loadSceneForSettings(options.settings);
     if (sidecarCamera) loaded.view = *sidecarCamera;
   } catch (const UsageError& e) {

@@ -26,12 +26,12 @@ void HeatmapPass::recordClear(VkCommandBuffer cmd) const {
 }
 
 void HeatmapPass::recordGather(VkCommandBuffer cmd, HeatmapView view, const PathBuffers& buffers,
-                               uint32_t stateSet, VkDeviceAddress keyParams, bool megakernel,
+                               uint32_t stateSet, VkDeviceAddress keyParams, bool hasCache, bool megakernel,
                                StageTimer* timer) const {
   ScopedStage s(timer, cmd, "heatmap");
   gpu::HeatmapPush push{buffers.frameBlock.address(), keyParams, buffers.keys.address(), heat_.address(),
                         range_.address(), static_cast<uint32_t>(view), stateSet, megakernel ? 1u : 0u,
-                        keyParams != 0 ? 1u : 0u};
+                        keyParams != 0 ? 1u : 0u, keyParams != 0 && hasCache ? 1u : 0u};
   gather_.dispatchThreads(cmd, push, buffers.pathCount);
   computeBarrier(cmd);
 }
@@ -40,7 +40,7 @@ void HeatmapPass::recordColorize(VkCommandBuffer cmd, HeatmapView view, const Pa
                                  StageTimer* timer) const {
   ScopedStage s(timer, cmd, "heatmap");
   gpu::HeatmapPush push{buffers.frameBlock.address(), 0, buffers.keys.address(), heat_.address(),
-                        range_.address(), static_cast<uint32_t>(view), 0, 0, 0};
+                        range_.address(), static_cast<uint32_t>(view), 0, 0, 0, 0};
   colorize_.dispatchThreads(cmd, push, buffers.pixelCount);
   computeBarrier(cmd);
 }

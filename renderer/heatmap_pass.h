@@ -23,9 +23,10 @@ class HeatmapPass {
   // Clears the per-pixel values and the range; call at the start of a frame that shows a heatmap.
   void recordClear(VkCommandBuffer cmd) const;
   // Gathers the view's value from the paths of the current set (after the trace, or the key stage for
-  // SortKey). keyParams: KeyStage::paramsAddress(), or 0 without a key stage.
+  // SortKey). keyParams: KeyStage::paramsAddress(), or 0 without a key stage; hasCache: the key stage
+  // holds a length cache (its addresses in keyParams are zero otherwise and must not be read).
   void recordGather(VkCommandBuffer cmd, HeatmapView view, const PathBuffers& buffers, uint32_t stateSet,
-                    VkDeviceAddress keyParams, bool megakernel, StageTimer* timer) const;
+                    VkDeviceAddress keyParams, bool hasCache, bool megakernel, StageTimer* timer) const;
   // Writes the colours into the display image (instead of the tonemap).
   void recordColorize(VkCommandBuffer cmd, HeatmapView view, const PathBuffers& buffers, StageTimer* timer) const;
   // After the frame completed: the legend's value range and unit.

@@ -6,6 +6,7 @@
 
 #include "renderer/frame_reorder.h"
 #include "renderer/heatmap_pass.h"
+#include "renderer/heatmap_rules.h"
 #include "renderer/vk_check.h"
 #include "renderer/vk_context.h"
 #include "renderer/warp_efficiency.h"
@@ -103,7 +104,8 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
   vkCmdUpdateBuffer(cmd, buffers_->frameBlock.handle(), 0, sizeof(frame), &frame);
   buffers_->counters.recordFill(cmd, 0);
   computeBarrier(cmd);
-  const HeatmapView view = settings_.heatmap;
+  // An unavailable view (heatmap_rules.h) is never gathered: its data would come from a stage not running.
+  const HeatmapView view = heatmapShown(settings_);
   if (view != HeatmapView::None) heatmap_->recordClear(cmd);
 
   gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0, settings_.countSimt ? 1u : 0u, 0};
@@ -113,7 +115,7 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
     computeBarrier(cmd);
     recordTraceCounters(cmd, 0);
     if (view == HeatmapView::TraversalSteps || view == HeatmapView::WarpEfficiency)
-      heatmap_->recordGather(cmd, view, *buffers_, 0, 0, true, &timer_);
+      heatmap_->recordGather(cmd, view, *buffers_, 0, 0, false, true, &timer_);
   } else {
     recordWavefront(cmd, push);
   }
@@ -137,7 +139,7 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
                        VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
 }
 
-uint32_t PathTracer::heatmapBounce() const { return std::min(settings_.heatmapBounce, settings_.bounces - 1); }
+uint32_t PathTracer::heatmapBounce() const { return heatmapBounceShown(settings_); }
 
 // The bounce loop of DESIGN.md: trace, learn, shade, then keys, sort and reorder before the next bounce.
 // Trace and shade are dispatched indirectly over the live paths: all of them until a sort has moved the
@@ -145,8 +147,9 @@ uint32_t PathTracer::heatmapBounce() const { return std::min(settings_.heatmapBo
 void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& basePush) {
   gpu::PathStagePush push = basePush;
   const uint32_t n = buffers_->pathCount;
-  const HeatmapView view = settings_.heatmap;
+  const HeatmapView view = heatmapShown(settings_);
   const VkDeviceAddress keyParams = settings_.sorts() ? reorder_->keys().paramsAddress() : 0;
+  const bool hasCache = settings_.sorts() && reorder_->keys().cache() != nullptr;
   {
     ScopedStage s(&timer_, cmd, "generate");
     generate_.dispatchThreads(cmd, push, n);
@@ -163,7 +166,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
     recordTraceCounters(cmd, b);
     if (settings_.sorts()) reorder_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
     if (view != HeatmapView::None && view != HeatmapView::SortKey && b == heatmapBounce())
-      heatmap_->recordGather(cmd, view, *buffers_, push.stateSet, keyParams, false, &timer_);
+      heatmap_->recordGather(cmd, view, *buffers_, push.stateSet, keyParams, hasCache, false, &timer_);
     {
       ScopedStage s(&timer_, cmd, "shade");
       shade_.dispatchIndirect(cmd, push, buffers_->live.handle(), 4);
@@ -172,7 +175,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
     if (b + 1 < settings_.bounces && settings_.sorts()) {
       reorder_->recordKeys(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
       if (view == HeatmapView::SortKey && b + 1 == heatmapBounce())
-        heatmap_->recordGather(cmd, view, *buffers_, push.stateSet, keyParams, false, &timer_);
+        heatmap_->recordGather(cmd, view, *buffers_, push.stateSet, keyParams, hasCache, false, &timer_);
       push.stateSet = reorder_->recordSortAndGather(cmd, *buffers_, push.stateSet, &timer_);
     }
   }
@@ -211,7 +214,7 @@ const FrameStats& PathTracer::finishFrame(double wallMs) {
   stats_.frameMs = timer_.spanMs();
   gatherCounters();
   if (settings_.sorts()) reorder_->finishFrame(stats_, detailedStats_);
-  if (settings_.heatmap != HeatmapView::None) heatmap_->readRange(settings_.heatmap, stats_);
+  if (heatmapShown(settings_) != HeatmapView::None) heatmap_->readRange(heatmapShown(settings_), stats_);
   stats_.pathStateBytes = buffers_->pathStateBytes();
   stats_.sceneBytes = scene_->memoryBytes();
   double seconds = (stats_.frameMs > 0.0 ? stats_.frameMs : wallMs) * 1e-3;

@@ -29,6 +29,7 @@ struct HeatmapPush {
   uint stateSet;
   uint megakernel;  // 1: paths are in id order and hits.steps holds whole-path totals
   uint hasKeyParams;
+  uint hasCache;  // 1: keyParams' length cache exists (its buffer addresses are zero otherwise)
 };
 
 #ifdef __cplusplus

@@ -12,6 +12,7 @@
 #include "app/window/lab_input.h"
 #include "app/window/presenter.h"
 #include "app/window/swapchain.h"
+#include "renderer/heatmap_rules.h"
 #include "renderer/path_tracer.h"
 #include "renderer/vk_context.h"
 #include "scenes/scene_library.h"
@@ -174,7 +175,7 @@ bool LabWindow::frame() {
   syncTracer();
 
   PresentedFrame shown = presenter_->drawFrame(*tracer_, ImGui::GetDrawData(), !pendingWindowShot_.empty(),
-                                               settings_.heatmap != HeatmapView::None);
+                                               heatmapShown(settings_) != HeatmapView::None);
   recreate_ = shown.recreateSwapchain;
   if (!shown.rendered) return true;
   ui_.onFrame(tracer_->settings(), tracer_->finishFrame(shown.wallMs));

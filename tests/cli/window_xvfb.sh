@@ -35,6 +35,22 @@ heatmaps=$(sed -n 's/.*must be one of \([a-z|-]*\).*/\1/p' <<<"$probe" | tr '|' 
   echo "set strategy gaussian"
   for h in $heatmaps; do printf 'set heatmap %s\nwait 1\nscreenshot heat-%s\n' "$h" "$h"; done
   echo "set heatmap none"
+  # The reported crash: a cache view showing, then a strategy without a cache. The window shows the render
+  # and says why instead.
+  printf 'set strategy gaussian\nset heatmap cache-mean\nwait 1\nset strategy fixed\nwait 1\n'
+  printf 'screenshot-window unavailable\nset heatmap none\n'
+  # Every kernel x sort x strategy x heatmap, one frame each: unavailable views must not crash either.
+  for k in wavefront megakernel; do
+    echo "set kernel $k"
+    for so in none bitonic radix; do
+      echo "set sort $so"
+      for s in $strategies; do
+        echo "set strategy $s"
+        for h in $heatmaps; do printf 'set heatmap %s\nwait 1\n' "$h"; done
+      done
+    done
+  done
+  printf 'set kernel wavefront\nset sort radix\nset strategy gaussian\nset heatmap none\n'
   printf 'set size 200x120\nwait 2\nscreenshot-window resized\nset size 160x90\nwait 1\n'  # resizing
   echo "camera 0.3 1.6 9 0 1.2 0"
   echo "wait 2"
@@ -124,6 +140,8 @@ for name, (w, h, px) in shots.items():
     for key in ('settings', 'stats', 'device', 'git_revision', 'camera'):
         assert key in sidecar, '%s.json has no %s' % (name, key)
 resized = read_png('shots/resized.png')
+gone = json.load(open('shots/unavailable.json'))['settings']
+assert (gone['strategy'], gone['heatmap']) == ('fixed', 'cache-mean'), gone
 assert resized[:2] == (200, 120), 'after resizing the window shot is %dx%d, not 200x120' % resized[:2]
 assert variance(shots['render'][2]) > 1.0, 'the render is blank'
 assert variance(shots['window'][2]) > 1.0, 'the window shot is blank'
