@@ -76,6 +76,10 @@ void writeCsvRow(std::ofstream& csv, const VulkanContext& ctx, const BenchCell& 
 }  // namespace
 
 int runBenchCommand(const std::vector<std::string>& args) {
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+    std::printf("usage: raylab bench [options]\n%s", benchHelp().c_str());
+    return kExitOk;
+  }
   BenchPlan plan;
   try {
     plan = parseBenchPlan(args);

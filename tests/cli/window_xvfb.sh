@@ -87,6 +87,20 @@ import json
 assert json.load(open('remembered.json'))['settings']['strategy'] == 'ema', 'imgui.ini settings not restored'
 assert json.load(open('shots/remembered.json'))['settings']['strategy'] == 'none', '--reset did not start clean'"
 
+# A hostile imgui.ini (settings out of range) is checked like the command line: the lab says why and
+# starts from the defaults instead of allocating for -5 bounces.
+python3 -c "
+import json
+s = json.load(open('remembered.json'))['settings']
+s['bounces'] = -5
+open('hostile.ini', 'w').write('[Raylab][State]\\nsettings=' + json.dumps(s) + '\\n')"
+xvfb "${size[@]}" --ini hostile.ini --script ini2.txt >hostile.log 2>&1 || { echo "FAIL: hostile ini run"; tail hostile.log; exit 1; }
+grep -q "ignoring the saved settings.*--bounces must be between 1 and 32, got -5" hostile.log ||
+  { echo "FAIL: the hostile imgui.ini was not refused with the range"; cat hostile.log; exit 1; }
+python3 -c "
+import json
+assert json.load(open('shots/remembered.json'))['settings']['bounces'] == 4, 'hostile ini settings were used'"
+
 # Without a display the window mode says so and renders headless, pointing to `raylab render`.
 out=$(env -u DISPLAY -u WAYLAND_DISPLAY "$raylab" --size 32x18 --out nodisplay.png 2>&1) || { echo "FAIL: no-display fallback"; echo "$out"; exit 1; }
 grep -q "no display" <<<"$out" && grep -q "raylab render" <<<"$out" && [ -s nodisplay.png ] ||
