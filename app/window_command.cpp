@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "app/config_dir.h"
 #include "app/render_command.h"
 #include "app/scene_setup.h"
 #include "app/sidecar.h"
@@ -22,8 +23,9 @@ const char* const kWindowHelp =
     "  --scale S              render resolution / window resolution, 0.05..2 (default 1; 0.25 on CPU devices)\n"
     "  --settings FILE.json   start from a screenshot's sidecar (its settings and camera)\n"
     "  --script FILE          run UI actions from FILE, then quit (see app/ui_script.h)\n"
-    "  --screenshot-dir DIR   where F12 / Shift+F12 save (default ./screenshots)\n"
-    "  --ini FILE             layout and last settings (default ./imgui.ini; none for scripts)\n"
+    "  --screenshot-dir DIR   where F12 / Shift+F12 and scripts save (default CONFIG/screenshots)\n"
+    "  --ini FILE             layout and last settings (default CONFIG/imgui.ini; none for scripts)\n"
+    "  CONFIG is $XDG_CONFIG_HOME/raylab or ~/.config/raylab\n"
     "  --reset                start with the default layout and settings\n";
 
 void printUsage(const std::string& error) {
@@ -39,6 +41,9 @@ std::string valueOf(const std::vector<std::string>& rest, size_t& i) {
 // Splits the window's own flags from the render flags (which parseOptionsWithSettingsFile checks).
 WindowOptions parseWindowOptions(const std::vector<std::string>& args) {
   WindowOptions o;
+  const std::string config = configDir();
+  o.screenshotDir = config.empty() ? "screenshots" : config + "/screenshots";
+  o.iniPath = config.empty() ? "" : config + "/imgui.ini";  // no config folder: remember nothing
   std::optional<Viewpoint> camera;
   std::vector<std::string> rest;
   o.common = parseOptionsWithSettingsFile(args, &camera, &rest);

@@ -213,6 +213,8 @@ void LabWindow::updateCamera(float seconds) { camera_.update(input_->cameraInput
 
 void LabWindow::fillCameraModel() {
   cameraModel_.scene = settings_.scene;
+  if (cameraModel_.loadWarnings.size() != scene_.scene.loadWarnings.size())
+    cameraModel_.loadWarnings = scene_.scene.loadWarnings;
   cameraModel_.viewpoints.clear();
   for (const Viewpoint& v : scene_.scene.viewpoints) cameraModel_.viewpoints.push_back(v.name);
   cameraModel_.cameraText = cameraToText(camera_.viewpoint());

@@ -101,6 +101,19 @@ python3 -c "
 import json
 assert json.load(open('shots/remembered.json'))['settings']['bounces'] == 4, 'hostile ini settings were used'"
 
+# Unasked files go to the config folder ($XDG_CONFIG_HOME/raylab), never the working directory.
+mkdir -p cwd cfg
+printf 'wait 1\nscreenshot default-place\nquit\n' >place.txt
+(cd cwd && XDG_CONFIG_HOME="$dir/cfg" timeout 120 xvfb-run -a -s "-screen 0 1280x720x24" "$raylab" --size 160x90 \
+   --script ../place.txt >../place.log 2>&1) || { echo "FAIL: default-place run"; tail place.log; exit 1; }
+[ -s cfg/raylab/screenshots/default-place.png ] || { echo "FAIL: screenshot not in the config folder"; ls -R cfg cwd; exit 1; }
+[ -z "$(ls -A cwd)" ] || { echo "FAIL: the window wrote into the working directory: $(ls -A cwd)"; exit 1; }
+
+# A scene file that cannot be loaded exits 3 from a script as from the command line.
+printf 'set scene %s/missing.gltf\nquit\n' "$dir" >missing.txt
+code=0; xvfb "${size[@]}" --script missing.txt >missing.log 2>&1 || code=$?
+[ $code -eq 3 ] && grep -q "missing.txt:1:" missing.log || { echo "FAIL: set scene missing.gltf exited $code"; cat missing.log; exit 1; }
+
 # Without a display the window mode says so and renders headless, pointing to `raylab render`.
 out=$(env -u DISPLAY -u WAYLAND_DISPLAY "$raylab" --size 32x18 --out nodisplay.png 2>&1) || { echo "FAIL: no-display fallback"; echo "$out"; exit 1; }
 grep -q "no display" <<<"$out" && grep -q "raylab render" <<<"$out" && [ -s nodisplay.png ] ||
