@@ -1,5 +1,6 @@
 #include "app/window_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -84,9 +85,18 @@ std::vector<std::string> renderArgsOf(const std::vector<std::string>& args) {
   return out;
 }
 
+// Without a window, `raylab` still shows the scene: unless frames or a budget are given, it accumulates
+// for kHeadlessBudget seconds (one sample per pixel would be noise; 10 s on two CPU cores is a clear image
+// of the default overview).
+constexpr const char* kHeadlessBudget = "10";
+
 int renderHeadless(const std::string& why, const std::vector<std::string>& args) {
   std::fprintf(stderr, "raylab: %s; rendering headless instead (raylab render --help for the options)\n", why.c_str());
-  return runRenderCommand(renderArgsOf(args));
+  std::vector<std::string> renderArgs = renderArgsOf(args);
+  auto given = [&](const char* flag) { return std::find(args.begin(), args.end(), flag) != args.end(); };
+  if (!given("--frames") && !given("--time-budget") && !given("--settings"))
+    renderArgs.insert(renderArgs.end(), {"--time-budget", kHeadlessBudget});
+  return runRenderCommand(renderArgs);
 }
 
 bool haveDisplayVariable() {

@@ -114,9 +114,11 @@ printf 'set scene %s/missing.gltf\nquit\n' "$dir" >missing.txt
 code=0; xvfb "${size[@]}" --script missing.txt >missing.log 2>&1 || code=$?
 [ $code -eq 3 ] && grep -q "missing.txt:1:" missing.log || { echo "FAIL: set scene missing.gltf exited $code"; cat missing.log; exit 1; }
 
-# Without a display the window mode says so and renders headless, pointing to `raylab render`.
+# Without a display the window mode says so and renders headless, pointing to `raylab render`, for a
+# time budget (10 s) so that the image shows the scene rather than noise.
 out=$(env -u DISPLAY -u WAYLAND_DISPLAY "$raylab" --size 32x18 --out nodisplay.png 2>&1) || { echo "FAIL: no-display fallback"; echo "$out"; exit 1; }
-grep -q "no display" <<<"$out" && grep -q "raylab render" <<<"$out" && [ -s nodisplay.png ] ||
+grep -q "no display" <<<"$out" && grep -q "raylab render" <<<"$out" && grep -q "accumulating for 10 s" <<<"$out" &&
+  [ -s nodisplay.png ] ||
   { echo "FAIL: no-display message or image missing"; echo "$out"; exit 1; }
 
 python3 - "$strategies" "$heatmaps" "$headless" <<'PY'
