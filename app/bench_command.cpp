@@ -41,7 +41,7 @@ double meanOf(const std::vector<BounceStats>& bounces, double BounceStats::*fiel
 }
 
 const char* kStages[] = {"generate", "trace", "learn", "shade", "keys", "oracle-trace", "sort", "reorder",
-                         "accumulate", "tonemap", "megakernel"};
+                         "accumulate", "tonemap", "megakernel", "setup", "counters"};
 
 void writeCsvHeader(std::ofstream& csv) {
   csv << "device,driver,git_revision,scene,view,width,height,bounces,spp_per_frame,kernel,strategy,sort,label,"

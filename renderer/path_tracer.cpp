@@ -101,12 +101,16 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
   frame.bounceCount = settings_.bounces;
   frame.seed = settings_.seed;
   frame.exposure = settings_.exposure;
-  vkCmdUpdateBuffer(cmd, buffers_->frameBlock.handle(), 0, sizeof(frame), &frame);
-  buffers_->counters.recordFill(cmd, 0);
-  computeBarrier(cmd);
   // An unavailable view (heatmap_rules.h) is never gathered: its data would come from a stage not running.
   const HeatmapView view = heatmapShown(settings_);
-  if (view != HeatmapView::None) heatmap_->recordClear(cmd);
+  {
+    // Every command of the frame is inside a timed scope, so the stages account for the frame's GPU time.
+    ScopedStage s(&timer_, cmd, "setup");
+    vkCmdUpdateBuffer(cmd, buffers_->frameBlock.handle(), 0, sizeof(frame), &frame);
+    buffers_->counters.recordFill(cmd, 0);
+    computeBarrier(cmd);
+    if (view != HeatmapView::None) heatmap_->recordClear(cmd);
+  }
 
   gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0, settings_.countSimt ? 1u : 0u, 0};
   if (settings_.kernel == Kernel::Megakernel) {
@@ -185,6 +189,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, const gpu::PathStagePush& 
 // Saves this trace's counters (rays, SIMT lanes) into the bounce's history slot and clears them; in the
 // detailed mode also keeps the per-path traversal steps for the virtual warp efficiency.
 void PathTracer::recordTraceCounters(VkCommandBuffer cmd, uint32_t bounce) {
+  ScopedStage s(&timer_, cmd, "counters");
   VkBufferCopy copy{0, VkDeviceSize(bounce) * kCounterCount * 4, kCounterCount * 4};
   vkCmdCopyBuffer(cmd, buffers_->counters.handle(), buffers_->counterHistory.handle(), 1, &copy);
   if (detailedStats_) {

@@ -130,6 +130,8 @@ json toJson(const FrameStats& s) {
   return {{"frame", s.frameIndex},
           {"samples_per_pixel", s.samplesPerPixel},
           {"gpu_frame_ms", s.frameMs},
+          {"stage_sum_ms", s.stageSumMs()},
+          {"unattributed_ms", s.unattributedMs()},
           {"wall_ms", s.wallMs},
           {"rays_traced", s.raysTraced},
           {"rays_per_second", s.raysPerSecond},
