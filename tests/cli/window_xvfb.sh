@@ -91,8 +91,7 @@ assert json.load(open('shots/remembered.json'))['settings']['strategy'] == 'none
 
 # Timing as headless: the window's stages cover its GPU frame time (before the timestamp fix each stage read
 # ~0.05 ms of a 400 ms frame) and its rays/s match a headless render of the same settings (they were off by
-# a factor of 260). The window keeps some time outside the stages (lavapipe runs a raster scene at each
-# timestamp once the UI has bound a framebuffer: about 5% at this size), shown as its own bar.
+# a factor of 260). What time stays outside the stages is shown as its own bar; it must stay under 5%.
 printf 'set bounces 4\nwait 3\nscreenshot timing\nquit\n' >timing.txt
 xvfb --size 320x180 --scale 1 --screenshot-dir shots --script timing.txt >timing.log 2>&1 || { echo "FAIL: timing run"; tail timing.log; exit 1; }
 "$raylab" render --settings shots/timing.json --stats timing-headless.json --out timing-headless.png >>timing.log 2>&1 ||
@@ -101,7 +100,7 @@ python3 - <<'PY'
 import json
 w = json.load(open('shots/timing.json'))['stats']
 h = json.load(open('timing-headless.json'))['frames'][-1]
-for name, f, need in (('window', w, 0.90), ('headless', h, 0.95)):
+for name, f, need in (('window', w, 0.95), ('headless', h, 0.95)):
     cover = f['stage_sum_ms'] / f['gpu_frame_ms']
     print('%s: GPU frame %.1f ms, stages %.1f ms (%.1f%%), unattributed %.1f ms, %.3g rays/s' %
           (name, f['gpu_frame_ms'], f['stage_sum_ms'], 100 * cover, f['unattributed_ms'], f['rays_per_second']))
