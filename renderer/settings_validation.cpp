@@ -5,13 +5,17 @@
 #include <cstdio>
 
 namespace raylab {
-namespace {
-
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.7g", v);
+std::string formatNumber(double v) {
+  char text[40];
+  // Whole numbers in full (4294967295, not 4.294967e+09); others to float precision.
+  if (v == std::floor(v) && std::abs(v) < 1e15) std::snprintf(text, sizeof(text), "%.0f", v);
+  else std::snprintf(text, sizeof(text), "%.7g", v);
   return text;
 }
+
+namespace {
+
+std::string number(double v) { return formatNumber(v); }
 
 // A double as the float a setting holds; beyond float's range it is infinite (never converted: UB).
 float asFloat(double v) {

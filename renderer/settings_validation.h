@@ -41,7 +41,9 @@ inline constexpr NumberRange gaussReset{"--gauss-reset", 0, 3.0e38};
 inline constexpr NumberRange heatmapBounce{"--heatmap-bounce", 0, L::kMaxBounces - 1};
 }  // namespace ranges
 
-// "FLAG must be between LO and HI, got GOT" (numbers as %g, so 0.001 reads 0.001).
+// A number as messages write it: whole numbers in full, others to float precision (0.001 reads 0.001).
+std::string formatNumber(double v);
+// "FLAG must be between LO and HI, got GOT".
 std::string outOfRangeMessage(const NumberRange& r, const std::string& got);
 // Throws SettingsError unless lo <= v <= hi, compared as the float or integer the setting holds (so the
 // documented limits themselves, e.g. --ema-alpha 0.001, are accepted).

@@ -53,13 +53,13 @@ Settings settingsFromJson(const json& j) {
   };
   auto uintAt = [&](const char* key, const json& v, const NumberRange& r) {
     double d = numberOf(key, v);
-    checkUint(r, d, v.dump());
+    checkUint(r, d, formatNumber(d));
     return static_cast<uint32_t>(d);
   };
   auto uintField = [&](const char* key, const NumberRange& r) { return uintAt(key, need(key), r); };
   auto floatField = [&](const char* key, const NumberRange& r) {
     double d = numberOf(key, need(key));
-    checkFloat(r, d, need(key).dump());
+    checkFloat(r, d, formatNumber(d));
     return static_cast<float>(d);
   };
   try {

@@ -64,6 +64,8 @@ TEST(SettingsValidation, DocumentedLimitsThemselvesAreAccepted) {
   EXPECT_EQ(cliError({"--clamp", "1000000"}), "");
   EXPECT_NE(cliError({"--ema-alpha", "0.0009"}), "");
   EXPECT_EQ(jsonError("ema_alpha", 0.001), "");
+  EXPECT_EQ(jsonError("frames", 2000000), "") << "a long window session's sidecar must load";
+  EXPECT_EQ(jsonError("frames", 5e9), "--frames must be between 1 and 4294967295, got 5000000000");
 }
 
 // Every field fine on its own, too many paths together: width x height x spp must fit the path buffers.

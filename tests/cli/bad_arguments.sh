@@ -78,7 +78,7 @@ hostile clamp_distance -50 "--clamp must be between 0 and 1000000, got -50"
 hostile grid_auto_cells 0 "must be between 1 and 1024, got 0"
 hostile heatmap '"cache-mean"' "--heatmap cache-mean"
 hostile strategy '"fastest"' "unknown kernel, strategy or sort"
-hostile frames 1e12 "--frames must be between"
+hostile frames 1e12 "--frames must be between 1 and 4294967295"
 # A sweep file is command-line flags: the same checks.
 printf 'bounces = -5\n' >"$dir/sweep.txt"
 expect 2 bench --sweep "$dir/sweep.txt"
