@@ -92,23 +92,32 @@ assert json.load(open('shots/remembered.json'))['settings']['strategy'] == 'none
 # Timing as headless: the window's stages cover its GPU frame time (before the timestamp fix each stage read
 # ~0.05 ms of a 400 ms frame) and its rays/s match a headless render of the same settings (they were off by
 # a factor of 260). What time stays outside the stages is shown as its own bar; it must stay under 5%.
+# On a loaded CPU the gaps between stages (the driver's thread waiting for a core) can pass 5% for a while:
+# up to three tries, each with the window and then headless, and one must meet it. The original fault read 4%.
 printf 'set bounces 4\nwait 3\nscreenshot timing\nquit\n' >timing.txt
-xvfb --size 320x180 --scale 1 --screenshot-dir shots --script timing.txt >timing.log 2>&1 || { echo "FAIL: timing run"; tail timing.log; exit 1; }
-"$raylab" render --settings shots/timing.json --stats timing-headless.json --out timing-headless.png >>timing.log 2>&1 ||
-  { echo "FAIL: headless timing run"; tail timing.log; exit 1; }
-python3 - <<'PY'
-import json
+timing_ok=0
+for attempt in 1 2 3; do
+  xvfb --size 320x180 --scale 1 --screenshot-dir shots --script timing.txt >timing.log 2>&1 || { echo "FAIL: timing run"; tail timing.log; exit 1; }
+  "$raylab" render --settings shots/timing.json --stats timing-headless.json --out timing-headless.png >>timing.log 2>&1 ||
+    { echo "FAIL: headless timing run"; tail timing.log; exit 1; }
+  if python3 - <<'PY'
+import json, sys
 w = json.load(open('shots/timing.json'))['stats']
 h = json.load(open('timing-headless.json'))['frames'][-1]
-for name, f, need in (('window', w, 0.95), ('headless', h, 0.95)):
+ok = True
+for name, f in (('window', w), ('headless', h)):
     cover = f['stage_sum_ms'] / f['gpu_frame_ms']
     print('%s: GPU frame %.1f ms, stages %.1f ms (%.1f%%), unattributed %.1f ms, %.3g rays/s' %
           (name, f['gpu_frame_ms'], f['stage_sum_ms'], 100 * cover, f['unattributed_ms'], f['rays_per_second']))
-    assert cover >= need, '%s: the stages cover only %.1f%% of the frame' % (name, 100 * cover)
     assert abs(f['stage_sum_ms'] + f['unattributed_ms'] - f['gpu_frame_ms']) < 1e-6 * f['gpu_frame_ms'] + 1e-9
+    ok = ok and cover >= 0.95
 ratio = w['rays_per_second'] / h['rays_per_second']
-assert 0.25 < ratio < 4, 'window rays/s %.3g vs headless %.3g' % (w['rays_per_second'], h['rays_per_second'])
+sys.exit(0 if ok and 0.25 < ratio < 4 else 1)
 PY
+  then timing_ok=1; break; fi
+  echo "timing attempt $attempt missed (stages under 95% of the frame, or rays/s apart)"
+done
+[ $timing_ok -eq 1 ] || { echo "FAIL: the window's stages do not account for its frame time"; exit 1; }
 
 # A hostile imgui.ini (settings out of range) is checked like the command line: the lab says why and
 # starts from the defaults instead of allocating for -5 bounces.
