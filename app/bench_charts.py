@@ -22,7 +22,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 STAGES = ["generate", "trace", "learn", "shade", "keys", "oracle-trace", "sort", "reorder",
-          "accumulate", "tonemap", "megakernel"]
+          "accumulate", "tonemap", "megakernel", "setup", "counters"]
 
 
 def load(folder):

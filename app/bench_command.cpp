@@ -42,7 +42,7 @@ double meanOf(const std::vector<BounceStats>& bounces, double BounceStats::*fiel
 }
 
 const char* kStages[] = {"generate", "trace", "learn", "shade", "keys", "oracle-trace", "sort", "reorder",
-                         "accumulate", "tonemap", "megakernel"};
+                         "accumulate", "tonemap", "megakernel", "setup", "counters"};
 
 void writeCsvHeader(std::ofstream& csv) {
   csv << "device,driver,git_revision,scene,view,width,height,bounces,spp_per_frame,kernel,tracer,ser,ser_reordering_hint,"
@@ -81,6 +81,10 @@ void writeCsvRow(std::ofstream& csv, const VulkanContext& ctx, const BenchCell& 
 }  // namespace
 
 int runBenchCommand(const std::vector<std::string>& args) {
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+    std::printf("usage: raylab bench [options]\n%s", benchHelp().c_str());
+    return kExitOk;
+  }
   BenchPlan plan;
   try {
     plan = parseBenchPlan(args);

@@ -192,9 +192,10 @@ std::string benchHelp() {
          "  --warmup N                unmeasured frames first (default 2)\n"
          "  --reference-spp N         samples of the megakernel reference image (default 64)\n"
          "  --no-detail               skip the untimed counting frame (no SIMT/accuracy figures)\n"
-         "  --out-dir DIR             results.csv, results.jsonl and charts (default bench-out)\n"
+         "  --out-dir DIR             results.csv and results.jsonl (default bench-out)\n"
          "  --sweep FILE              the same flags as `name = value` lines\n"
-         "The megakernel and the unsorted wavefront are always measured, per tracer.\n";
+         "The megakernel and the unsorted wavefront are always measured, per tracer. Charts of the results:\n"
+         "  python3 app/bench_charts.py DIR   (needs matplotlib)\n";
 }
 
 }  // namespace raylab

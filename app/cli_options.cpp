@@ -6,15 +6,18 @@
 #include <functional>
 #include <map>
 
+#include "renderer/settings_validation.h"
+
 namespace raylab {
 
+// Range checks and their wording are settings_validation's, shared with sidecars, scripts and imgui.ini.
 uint32_t parseUint(const std::string& flag, const std::string& text, uint32_t lo, uint32_t hi) {
   if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
     throw UsageError(flag + " expects a whole number, got '" + text + "'");
   errno = 0;
   unsigned long long v = std::strtoull(text.c_str(), nullptr, 10);
   if (errno == ERANGE || v < lo || v > hi)
-    throw UsageError(flag + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " + text);
+    throw UsageError(outOfRangeMessage({flag.c_str(), double(lo), double(hi)}, text));
   return static_cast<uint32_t>(v);
 }
 
@@ -24,8 +27,11 @@ float parseFloat(const std::string& flag, const std::string& text, float lo, flo
   double v = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v))
     throw UsageError(flag + " expects a finite number, got '" + text + "'");
-  if (v < lo || v > hi)
-    throw UsageError(flag + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " + text);
+  try {
+    checkFloat({flag.c_str(), lo, hi}, v, text);  // compared as floats: the limits themselves are accepted
+  } catch (const SettingsError& e) {
+    throw UsageError(e.what());
+  }
   return static_cast<float>(v);
 }
 
@@ -75,9 +81,9 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       {"--size", [&](const std::string& v) { parseSize(v, s); }},
       {"--bounces", [&](const std::string& v) { s.bounces = parseUint("--bounces", v, 1, L::kMaxBounces); }},
       {"--spp", [&](const std::string& v) { s.sppPerFrame = parseUint("--spp", v, 1, L::kMaxSpp); }},
-      {"--frames", [&](const std::string& v) { s.frames = parseUint("--frames", v, 1, 1000000); }},
+      {"--frames", [&](const std::string& v) { s.frames = parseUint("--frames", v, 1, L::kMaxFrames); }},
       {"--seed", [&](const std::string& v) { s.seed = parseUint("--seed", v, 0, UINT32_MAX); }},
-      {"--exposure", [&](const std::string& v) { s.exposure = parseFloat("--exposure", v, 0.0f, 1e6f); }},
+      {"--exposure", [&](const std::string& v) { s.exposure = parseFloat("--exposure", v, 0.0f, L::kMaxExposure); }},
       {"--kernel", [&](const std::string& v) { s.kernel = parseEnum("--kernel", v, &parseKernel, "wavefront|megakernel"); }},
       {"--tracer", [&](const std::string& v) { s.tracer = parseEnum("--tracer", v, &parseTracer, "compute|rt"); }},
       {"--ser", [&](const std::string& v) { s.ser = parseEnum("--ser", v, &parseSer, "off|on|hint"); }},
@@ -121,6 +127,8 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       throw UsageError("unknown option '" + a + "'");
     }
   }
+  // What no single flag can check (paths per frame) and every range once more, as for any other source.
+  if (std::optional<std::string> error = settingsError(s)) throw UsageError(*error);
   return o;
 }
 

@@ -9,6 +9,7 @@
 #include "app/scene_setup.h"
 #include "app/sortbench_command.h"
 #include "app/window_command.h"
+#include "renderer/vk/vk_check.h"
 
 namespace {
 
@@ -19,7 +20,7 @@ void printHelp() {
       "  raylab [options]            open the interactive lab (needs a display)\n"
       "  raylab render [options]     render headless to a PNG (raylab render --help)\n"
       "  raylab sortbench [options]  time the GPU sorts alone\n"
-      "  raylab bench [options]      sweep strategies and sorts, write CSV/JSON and charts\n"
+      "  raylab bench [options]      sweep strategies and sorts, write CSV/JSON (charts: app/bench_charts.py)\n"
       "  raylab devices              list Vulkan devices and whether each can run --tracer rt and --ser");
 }
 
@@ -44,6 +45,9 @@ int main(int argc, char** argv) {
     if (mode.empty()) return raylab::runWindowCommand(rest);
     std::fprintf(stderr, "raylab: unknown mode '%s'\n\n", mode.c_str());
     printHelp();
+    return raylab::kExitUsage;
+  } catch (const raylab::UnknownDeviceError& e) {  // any mode's --device
+    std::fprintf(stderr, "raylab: %s\n", e.what());
     return raylab::kExitUsage;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "raylab: %s\n", e.what());

@@ -1,5 +1,6 @@
 #include "app/render_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include "app/command_errors.h"
 #include "app/scene_setup.h"
 #include "app/sidecar.h"
+#include "renderer/heatmap_rules.h"
 #include "renderer/path_tracer.h"
 #include "renderer/png_writer.h"
 #include "renderer/rt_tracer.h"
@@ -19,23 +21,49 @@
 namespace raylab {
 namespace {
 
+const char* const kRenderHelp =
+    "  --time-budget S        accumulate frames for up to S seconds (wall clock), at most --frames of them\n"
+    "                         (--frames defaults to unlimited then)\n";
+
 void printUsage(const std::string& error) {
-  std::fprintf(stderr, "raylab render: %s\n\nusage: raylab render [options]\n%s", error.c_str(),
-               commonOptionsHelp().c_str());
+  std::fprintf(stderr, "raylab render: %s\n\nusage: raylab render [options]\n%s%s", error.c_str(),
+               commonOptionsHelp().c_str(), kRenderHelp);
+}
+
+// Takes `--time-budget S` out of `args` (the other flags are common ones); 0 when absent.
+double takeTimeBudget(std::vector<std::string>& args) {
+  double budget = 0.0;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] != "--time-budget") continue;
+    if (i + 1 >= args.size()) throw UsageError("--time-budget needs a value");
+    budget = parseFloat("--time-budget", args[i + 1], 0.001f, 86400.0f);
+    args.erase(args.begin() + static_cast<std::ptrdiff_t>(i), args.begin() + static_cast<std::ptrdiff_t>(i) + 2);
+    --i;
+  }
+  return budget;
 }
 
 }  // namespace
 
-int runRenderCommand(const std::vector<std::string>& args) {
+int runRenderCommand(const std::vector<std::string>& givenArgs) {
   CommonOptions options;
   LoadedScene loaded;
-  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
-    std::printf("usage: raylab render [options]\n%s", commonOptionsHelp().c_str());
+  if (!givenArgs.empty() && (givenArgs[0] == "--help" || givenArgs[0] == "-h")) {
+    std::printf("usage: raylab render [options]\n%s%s", commonOptionsHelp().c_str(), kRenderHelp);
     return kExitOk;
   }
+  std::vector<std::string> args = givenArgs;
+  double budgetSeconds = 0.0;
   std::optional<Viewpoint> sidecarCamera;  // --settings FILE.json: a screenshot sidecar's settings and camera
   const int parsed = withCommandErrors(printUsage, [&] {
+    budgetSeconds = takeTimeBudget(args);
     options = parseOptionsWithSettingsFile(args, &sidecarCamera);
+    // With a time budget the frame count is only a ceiling: without --frames there is none.
+    bool framesGiven = std::find(args.begin(), args.end(), "--frames") != args.end();
+    bool sidecar = std::find(args.begin(), args.end(), "--settings") != args.end();  // its frames are the ceiling
+    if (budgetSeconds > 0.0 && !framesGiven && !sidecar) options.settings.frames = SettingLimits::kMaxFrames;
+    // A view without data would be an empty image: refuse it, saying what it needs.
+    if (auto why = heatmapUnavailable(options.settings)) throw UsageError("--heatmap " + *why);
     loaded = loadSceneForSettings(options.settings);
     if (sidecarCamera) loaded.view = *sidecarCamera;
     return int(kExitOk);
@@ -58,7 +86,11 @@ int runRenderCommand(const std::vector<std::string>& args) {
   nlohmann::json frames = nlohmann::json::array();
   double gpuMs = 0.0, wallMs = 0.0;
   uint64_t rays = 0;
-  for (uint32_t f = 0; f < s.frames; ++f) {
+  const auto started = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
+  if (budgetSeconds > 0.0)
+    std::fprintf(stderr, "raylab: accumulating for %.3g s (at most %u frames)\n", budgetSeconds, s.frames);
+  for (uint32_t f = 0; f < s.frames && !(budgetSeconds > 0.0 && f > 0 && elapsed() >= budgetSeconds); ++f) {
     const FrameStats& st = tracer.renderFrame();
     gpuMs += st.frameMs;
     wallMs += st.wallMs;

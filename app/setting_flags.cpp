@@ -4,6 +4,7 @@
 #include <map>
 
 #include "app/cli_options.h"
+#include "renderer/settings_validation.h"
 
 namespace raylab {
 namespace {
@@ -58,7 +59,9 @@ bool parseSwitchValue(const std::string& name, const std::string& value) {
 
 }  // namespace
 
-void applySettingFlag(Settings& settings, const std::string& name, const std::string& value) {
+namespace {
+
+void applyUnchecked(Settings& settings, const std::string& name, const std::string& value) {
   auto it = fieldsOfFlag().find(name);
   if (it == fieldsOfFlag().end()) {
     std::string names;
@@ -78,6 +81,17 @@ void applySettingFlag(Settings& settings, const std::string& name, const std::st
   it->second(settings, parseFlags({"--" + name, value}));
 }
 
+}  // namespace
+
+// The flag alone was checked by the CLI's parser; the settings it lands in are checked as a whole (e.g.
+// --size and --spp together), and are left unchanged when they fail.
+void applySettingFlag(Settings& settings, const std::string& name, const std::string& value) {
+  Settings next = settings;
+  applyUnchecked(next, name, value);
+  if (std::optional<std::string> error = settingsError(next)) throw UsageError(*error);
+  settings = next;
+}
+
 Settings overlaySettingFlags(const Settings& base, const std::vector<std::string>& args, bool skipUnknown) {
   Settings out = base;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -92,8 +106,10 @@ Settings overlaySettingFlags(const Settings& base, const std::vector<std::string
     if (takesValue && i + 1 >= args.size()) throw UsageError(args[i] + " needs a value");
     std::string value = takesValue ? args[++i] : "on";
     if (isNonSettingFlag(name)) continue;
-    applySettingFlag(out, name, value);
+    applyUnchecked(out, name, value);
   }
+  // Checked once all flags are in: their order must not matter (--size before or after --spp).
+  if (std::optional<std::string> error = settingsError(out)) throw UsageError(*error);
   return out;
 }
 

@@ -1,9 +1,11 @@
 #include "app/window_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
 #include "app/command_errors.h"
+#include "app/config_dir.h"
 #include "app/render_command.h"
 #include "app/scene_setup.h"
 #include "app/sidecar.h"
@@ -23,8 +25,9 @@ const char* const kWindowHelp =
     "  --scale S              render resolution / window resolution, 0.05..2 (default 1; 0.25 on CPU devices)\n"
     "  --settings FILE.json   start from a screenshot's sidecar (its settings and camera)\n"
     "  --script FILE          run UI actions from FILE, then quit (see app/ui_script.h)\n"
-    "  --screenshot-dir DIR   where F12 / Shift+F12 save (default ./screenshots)\n"
-    "  --ini FILE             layout and last settings (default ./imgui.ini; none for scripts)\n"
+    "  --screenshot-dir DIR   where F12 / Shift+F12 and scripts save (default CONFIG/screenshots)\n"
+    "  --ini FILE             layout and last settings (default CONFIG/imgui.ini; none for scripts)\n"
+    "  CONFIG is $XDG_CONFIG_HOME/raylab or ~/.config/raylab\n"
     "  --reset                start with the default layout and settings\n";
 
 void printUsage(const std::string& error) {
@@ -40,6 +43,9 @@ std::string valueOf(const std::vector<std::string>& rest, size_t& i) {
 // Splits the window's own flags from the render flags (which parseOptionsWithSettingsFile checks).
 WindowOptions parseWindowOptions(const std::vector<std::string>& args) {
   WindowOptions o;
+  const std::string config = configDir();
+  o.screenshotDir = config.empty() ? "screenshots" : config + "/screenshots";
+  o.iniPath = config.empty() ? "" : config + "/imgui.ini";  // no config folder: remember nothing
   std::optional<Viewpoint> camera;
   std::vector<std::string> rest;
   o.common = parseOptionsWithSettingsFile(args, &camera, &rest);
@@ -80,9 +86,18 @@ std::vector<std::string> renderArgsOf(const std::vector<std::string>& args) {
   return out;
 }
 
+// Without a window, `raylab` still shows the scene: unless frames or a budget are given, it accumulates
+// for kHeadlessBudget seconds (one sample per pixel would be noise; 10 s on two CPU cores is a clear image
+// of the default overview).
+constexpr const char* kHeadlessBudget = "10";
+
 int renderHeadless(const std::string& why, const std::vector<std::string>& args) {
   std::fprintf(stderr, "raylab: %s; rendering headless instead (raylab render --help for the options)\n", why.c_str());
-  return runRenderCommand(renderArgsOf(args));
+  std::vector<std::string> renderArgs = renderArgsOf(args);
+  auto given = [&](const char* flag) { return std::find(args.begin(), args.end(), flag) != args.end(); };
+  if (!given("--frames") && !given("--time-budget") && !given("--settings"))
+    renderArgs.insert(renderArgs.end(), {"--time-budget", kHeadlessBudget});
+  return runRenderCommand(renderArgs);
 }
 
 bool haveDisplayVariable() {

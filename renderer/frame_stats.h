@@ -50,6 +50,15 @@ struct FrameStats {
   double heatmapMax = 0.0;
   std::string heatmapUnit;
 
+  // GPU time of the frame no stage scope covers (barriers between scopes, driver work): shown as its own
+  // bar, so the bars always add up to frameMs.
+  double stageSumMs() const {
+    double ms = 0.0;
+    for (const StageTime& s : stages) ms += s.ms;
+    return ms;
+  }
+  double unattributedMs() const { return frameMs > stageSumMs() ? frameMs - stageSumMs() : 0.0; }
+
   double stageTotal(const std::string& stage) const {
     double ms = 0.0;
     for (const StageTime& s : stages)

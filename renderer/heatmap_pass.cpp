@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "renderer/heatmap_rules.h"
 #include "renderer/path_buffers.h"
 #include "renderer/vk/stage_timer.h"
 #include "renderer/vk/vk_context.h"
@@ -19,28 +20,29 @@ HeatmapPass::HeatmapPass(const VulkanContext& ctx, uint32_t pixelCount)
       heat_(ctx, VkDeviceSize(pixelCount) * 4),
       range_(ctx, 4 * 4, MemoryKind::HostVisible) {}
 
-void HeatmapPass::beginFrame(VkCommandBuffer cmd, const Settings& settings) {
-  view_ = settings.heatmap;
-  bounce_ = std::min(settings.heatmapBounce, settings.bounces - 1);
+void HeatmapPass::beginFrame(VkCommandBuffer cmd, const Settings& settings, bool hasCache) {
+  view_ = heatmapShown(settings);
+  bounce_ = heatmapBounceShown(settings);
+  hasCache_ = hasCache;
   if (view_ != HeatmapView::None) recordClear(cmd);
 }
 
 void HeatmapPass::afterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
                              VkDeviceAddress keyParams, StageTimer* timer) const {
   if (view_ != HeatmapView::None && view_ != HeatmapView::SortKey && bounce == bounce_)
-    recordGather(cmd, view_, buffers, stateSet, keyParams, false, timer);
+    recordGather(cmd, view_, buffers, stateSet, keyParams, hasCache_, false, timer);
 }
 
 void HeatmapPass::afterKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
                             VkDeviceAddress keyParams, StageTimer* timer) const {
   if (view_ == HeatmapView::SortKey && bounce + 1 == bounce_)
-    recordGather(cmd, view_, buffers, stateSet, keyParams, false, timer);
+    recordGather(cmd, view_, buffers, stateSet, keyParams, hasCache_, false, timer);
 }
 
 void HeatmapPass::afterMegakernel(VkCommandBuffer cmd, const PathBuffers& buffers, StageTimer* timer) const {
   // Only per-path totals exist after a megakernel: the whole path's traversal steps.
   if (view_ == HeatmapView::TraversalSteps || view_ == HeatmapView::WarpEfficiency)
-    recordGather(cmd, view_, buffers, 0, 0, true, timer);
+    recordGather(cmd, view_, buffers, 0, 0, false, true, timer);
 }
 
 bool HeatmapPass::colorize(VkCommandBuffer cmd, const PathBuffers& buffers, StageTimer* timer) const {
@@ -61,12 +63,12 @@ void HeatmapPass::recordClear(VkCommandBuffer cmd) const {
 }
 
 void HeatmapPass::recordGather(VkCommandBuffer cmd, HeatmapView view, const PathBuffers& buffers,
-                               uint32_t stateSet, VkDeviceAddress keyParams, bool megakernel,
+                               uint32_t stateSet, VkDeviceAddress keyParams, bool hasCache, bool megakernel,
                                StageTimer* timer) const {
   ScopedStage s(timer, cmd, "heatmap");
   gpu::HeatmapPush push{buffers.frameBlock.address(), keyParams, buffers.keys.address(), heat_.address(),
                         range_.address(), static_cast<uint32_t>(view), stateSet, megakernel ? 1u : 0u,
-                        keyParams != 0 ? 1u : 0u};
+                        keyParams != 0 ? 1u : 0u, keyParams != 0 && hasCache ? 1u : 0u};
   gather_.dispatchThreads(cmd, push, buffers.pathCount);
   computeBarrier(cmd);
 }
@@ -75,7 +77,7 @@ void HeatmapPass::recordColorize(VkCommandBuffer cmd, HeatmapView view, const Pa
                                  StageTimer* timer) const {
   ScopedStage s(timer, cmd, "heatmap");
   gpu::HeatmapPush push{buffers.frameBlock.address(), 0, buffers.keys.address(), heat_.address(),
-                        range_.address(), static_cast<uint32_t>(view), 0, 0, 0};
+                        range_.address(), static_cast<uint32_t>(view), 0, 0, 0, 0};
   colorize_.dispatchThreads(cmd, push, buffers.pixelCount);
   computeBarrier(cmd);
 }

@@ -24,7 +24,9 @@ class HeatmapPass {
   // the view and the bounce (Settings::heatmapBounce within the frame's bounces) and clears; the after*
   // calls gather only where that view and bounce are; colorize() returns false when no view is shown (the
   // caller tonemaps instead). keyParams: KeyStage::paramsAddress() while sorting, else 0.
-  void beginFrame(VkCommandBuffer cmd, const Settings& settings);
+  // The view and bounce are heatmap_rules.h's (an unavailable view is never gathered); hasCache: the key
+  // stage holds a length cache (a second guard: the cache views read it only then).
+  void beginFrame(VkCommandBuffer cmd, const Settings& settings, bool hasCache);
   void afterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
                   VkDeviceAddress keyParams, StageTimer* timer) const;
   // After the keys made during `bounce` for the rays of bounce + 1.
@@ -37,9 +39,10 @@ class HeatmapPass {
   // Clears the per-pixel values and the range; call at the start of a frame that shows a heatmap.
   void recordClear(VkCommandBuffer cmd) const;
   // Gathers the view's value from the paths of the current set (after the trace, or the key stage for
-  // SortKey). keyParams: KeyStage::paramsAddress(), or 0 without a key stage.
+  // SortKey). keyParams: KeyStage::paramsAddress(), or 0 without a key stage; hasCache: the key stage
+  // holds a length cache (its addresses in keyParams are zero otherwise and must not be read).
   void recordGather(VkCommandBuffer cmd, HeatmapView view, const PathBuffers& buffers, uint32_t stateSet,
-                    VkDeviceAddress keyParams, bool megakernel, StageTimer* timer) const;
+                    VkDeviceAddress keyParams, bool hasCache, bool megakernel, StageTimer* timer) const;
   // Writes the colours into the display image (instead of the tonemap).
   void recordColorize(VkCommandBuffer cmd, HeatmapView view, const PathBuffers& buffers, StageTimer* timer) const;
   // After the frame completed: the legend's value range and unit.
@@ -50,6 +53,7 @@ class HeatmapPass {
   GpuBuffer heat_, range_;
   HeatmapView view_ = HeatmapView::None;
   uint32_t bounce_ = 0;
+  bool hasCache_ = false;
 };
 
 }  // namespace raylab

@@ -8,6 +8,7 @@
 #include "renderer/reorder/path_sorter.h"
 #include "renderer/rt_tracer.h"
 #include "renderer/heatmap_pass.h"
+#include "renderer/heatmap_rules.h"
 #include "renderer/vk/stage_timer.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
@@ -101,8 +102,11 @@ void PathTracer::setCamera(const Viewpoint& camera) {
 // One frame: generate, the bounces, accumulate, then tonemap (or the heatmap instead).
 void PathTracer::recordFrame(VkCommandBuffer cmd) {
   timer_.reset(cmd);
-  recordFrameBlock(cmd);
-  heatmap_->beginFrame(cmd, settings_);
+  // Every command of the frame is inside a timed stage, so the stages account for the frame's GPU time.
+  recordStage(cmd, &timer_, "setup", [&] {
+    recordFrameBlock(cmd);
+    heatmap_->beginFrame(cmd, settings_, settings_.sorts() && pathSorter_->keys().hasCache());
+  });
   const gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0};
   if (settings_.kernel == Kernel::Megakernel)
     recordMegakernel(cmd, push);
@@ -194,6 +198,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
 // Detailed mode: keeps this trace's per-path traversal steps (the next trace overwrites them) for the
 // virtual warp efficiency. Released again by gatherCounters(): only the frame that asked holds them.
 void PathTracer::recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce) {
+  ScopedStage s(&timer_, cmd, "counters");
   if (stepsReadback_.size() <= bounce) stepsReadback_.resize(bounce + 1);
   stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
   VkBufferCopy steps{0, 0, VkDeviceSize(buffers_->pathCount) * 4};
@@ -206,6 +211,7 @@ uint32_t PathTracer::countedBounces() const { return settings_.kernel == Kernel:
 // This frame's counters, one slot set per bounce, in one copy; then everything the host reads after the
 // frame's fence (counters, readbacks) is made visible to it.
 void PathTracer::recordCountersToHost(VkCommandBuffer cmd) {
+  ScopedStage s(&timer_, cmd, "counters");
   VkBufferCopy counters{0, 0, PathBuffers::counterBytes(countedBounces())};
   vkCmdCopyBuffer(cmd, buffers_->counters.handle(), buffers_->counterHistory.handle(), 1, &counters);
   VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};

@@ -70,11 +70,17 @@ struct GridSetting {
   bool operator==(const GridSetting&) const = default;
 };
 
-// Limits where the methods are defined; the CLI rejects values outside, the UI sliders clamp to them.
+// Limits where the methods are defined; settings_validation.h rejects values outside (whichever way they
+// came in), the UI sliders clamp to them.
 struct SettingLimits {
   static constexpr uint32_t kMaxSize = 8192;
   static constexpr uint32_t kMaxBounces = 32;
   static constexpr uint32_t kMaxSpp = 64;
+  // Any count a uint32 holds: a window left accumulating on a GPU passes a million frames within the hour,
+  // and its screenshot's sidecar (frames = those accumulated) must still re-render.
+  static constexpr uint32_t kMaxFrames = 4294967295u;
+  static constexpr uint64_t kMaxPathsPerFrame = 1ull << 26;  // 8192x8192 at 1 spp
+  static constexpr float kMaxExposure = 1e6f;
   static constexpr uint32_t kMaxGridCellsPerAxis = 1024;  // 10 bits per axis: 30-bit Morton keys
   static constexpr float kMaxClampDistance = 1e6f;
   static constexpr float kMinFixedFactor = 0.0f;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "renderer/settings_validation.h"
+
 namespace raylab {
 
 using nlohmann::json;
@@ -38,39 +40,63 @@ json toJson(const Settings& s) {
   };
 }
 
+// Numbers are range-checked as JSON numbers, before they become uint32_t or float (-5 must not wrap to
+// 4294967291, 1e300 must not become inf), with the command line's ranges and messages.
 Settings settingsFromJson(const json& j) {
   Settings s;
+  namespace R = ranges;
   auto need = [&](const char* key) -> const json& {
-    if (!j.contains(key)) throw std::invalid_argument(std::string("settings: missing '") + key + "'");
+    if (!j.contains(key)) throw SettingsError(std::string("settings: missing '") + key + "'");
     return j.at(key);
+  };
+  auto numberOf = [](const char* key, const json& v) {
+    if (!v.is_number()) throw SettingsError(std::string("settings: '") + key + "' must be a number, got " + v.dump());
+    return v.get<double>();
+  };
+  auto uintAt = [&](const char* key, const json& v, const NumberRange& r) {
+    double d = numberOf(key, v);
+    checkUint(r, d, formatNumber(d));
+    return static_cast<uint32_t>(d);
+  };
+  auto uintField = [&](const char* key, const NumberRange& r) { return uintAt(key, need(key), r); };
+  auto floatField = [&](const char* key, const NumberRange& r) {
+    double d = numberOf(key, need(key));
+    checkFloat(r, d, formatNumber(d));
+    return static_cast<float>(d);
   };
   try {
     s.scene = need("scene").get<std::string>();
     s.view = need("view").get<std::string>();
-    s.width = need("width").get<uint32_t>();
-    s.height = need("height").get<uint32_t>();
-    s.bounces = need("bounces").get<uint32_t>();
-    s.sppPerFrame = need("spp_per_frame").get<uint32_t>();
-    s.frames = need("frames").get<uint32_t>();
-    s.seed = need("seed").get<uint32_t>();
-    s.exposure = need("exposure").get<float>();
+    s.width = uintField("width", R::width);
+    s.height = uintField("height", R::height);
+    s.bounces = uintField("bounces", R::bounces);
+    s.sppPerFrame = uintField("spp_per_frame", R::spp);
+    s.frames = uintField("frames", R::frames);
+    s.seed = uintField("seed", R::seed);
+    s.exposure = floatField("exposure", R::exposure);
     auto kernel = parseKernel(need("kernel").get<std::string>());
     auto strategy = parseKeyStrategy(need("strategy").get<std::string>());
     auto sort = parseSortAlgorithm(need("sort").get<std::string>());
-    if (!kernel || !strategy || !sort) throw std::invalid_argument("settings: unknown kernel, strategy or sort");
+    if (!kernel || !strategy || !sort) throw SettingsError("settings: unknown kernel, strategy or sort");
     s.kernel = *kernel;
     s.strategy = *strategy;
     s.sort = *sort;
     const json& grid = need("grid");
+    if (grid.is_string() && grid.get<std::string>() != "auto")
+      throw SettingsError("settings: 'grid' must be \"auto\" or [x, y, z], got " + grid.dump());
     s.grid.automatic = grid.is_string();
-    if (!s.grid.automatic) s.grid.cells = {grid.at(0).get<uint32_t>(), grid.at(1).get<uint32_t>(), grid.at(2).get<uint32_t>()};
-    s.grid.autoCells = need("grid_auto_cells").get<uint32_t>();
+    if (!s.grid.automatic) {
+      if (!grid.is_array() || grid.size() != 3)
+        throw SettingsError("settings: 'grid' must be \"auto\" or [x, y, z], got " + grid.dump());
+      for (int a = 0; a < 3; ++a) s.grid.cells[a] = uintAt("grid", grid.at(a), R::gridCells);
+    }
+    s.grid.autoCells = uintField("grid_auto_cells", R::gridAutoCells);
     s.clampToCamera = need("clamp_to_camera").get<bool>();
-    s.clampDistance = need("clamp_distance").get<float>();
-    s.fixedFactor = need("fixed_factor").get<float>();
-    s.emaAlpha = need("ema_alpha").get<float>();
-    s.gaussOutlier = need("gauss_outlier").get<float>();
-    s.gaussReset = need("gauss_reset").is_null() ? INFINITY : need("gauss_reset").get<float>();
+    s.clampDistance = floatField("clamp_distance", R::clamp);
+    s.fixedFactor = floatField("fixed_factor", R::fixedFactor);
+    s.emaAlpha = floatField("ema_alpha", R::emaAlpha);
+    s.gaussOutlier = floatField("gauss_outlier", R::gaussOutlier);
+    s.gaussReset = need("gauss_reset").is_null() ? INFINITY : floatField("gauss_reset", R::gaussReset);
     s.countSimt = need("count_simt").get<bool>();
     // Older sidecars have no tracer or SER: they used the compute tracer.
     if (j.contains("tracer")) {
@@ -86,13 +112,14 @@ Settings settingsFromJson(const json& j) {
     // Older sidecars have no heatmap fields: they showed the render.
     if (j.contains("heatmap")) {
       auto view = parseHeatmapView(j.at("heatmap").get<std::string>());
-      if (!view) throw std::invalid_argument("settings: unknown heatmap view");
+      if (!view) throw SettingsError("settings: unknown heatmap view");
       s.heatmap = *view;
     }
-    if (j.contains("heatmap_bounce")) s.heatmapBounce = j.at("heatmap_bounce").get<uint32_t>();
+    if (j.contains("heatmap_bounce")) s.heatmapBounce = uintAt("heatmap_bounce", j.at("heatmap_bounce"), R::heatmapBounce);
   } catch (const json::exception& e) {
-    throw std::invalid_argument(std::string("settings: ") + e.what());
+    throw SettingsError(std::string("settings: ") + e.what());
   }
+  validateSettings(s);  // what no single field shows (paths per frame)
   return s;
 }
 
@@ -118,6 +145,8 @@ json toJson(const FrameStats& s) {
   return {{"frame", s.frameIndex},
           {"samples_per_pixel", s.samplesPerPixel},
           {"gpu_frame_ms", s.frameMs},
+          {"stage_sum_ms", s.stageSumMs()},
+          {"unattributed_ms", s.unattributedMs()},
           {"wall_ms", s.wallMs},
           {"rays_traced", s.raysTraced},
           {"rays_per_second", s.raysPerSecond},

@@ -11,7 +11,8 @@
 namespace raylab {
 
 nlohmann::json toJson(const Settings& s);
-// Throws std::invalid_argument naming the field that is missing or invalid.
+// Throws SettingsError (a std::invalid_argument) naming the field that is missing or out of range, with the
+// ranges and messages every source of Settings is checked with (settings_validation.h).
 Settings settingsFromJson(const nlohmann::json& j);
 nlohmann::json toJson(const FrameStats& s);
 nlohmann::json toJson(const DeviceInfo& d);

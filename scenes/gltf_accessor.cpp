@@ -15,6 +15,7 @@ void Source::fail(const std::string& message) const { throw SceneLoadError(file 
 
 void Source::warn(const std::string& message) const {
   std::cerr << "warning: " << file << ": " << message << "\n";
+  warnings.push_back(message);
 }
 
 namespace {

@@ -24,8 +24,10 @@ struct Source {
 
   // Throws SceneLoadError("<file>: <message>").
   [[noreturn]] void fail(const std::string& message) const;
-  // Prints "warning: <file>: <message>" to stderr: for parts that are skipped, not wrong.
+  // Prints "warning: <file>: <message>" to stderr and keeps the message in `warnings` (the scene carries
+  // them to the window's scene panel): for parts that are skipped, not wrong.
   void warn(const std::string& message) const;
+  mutable std::vector<std::string> warnings;
 };
 
 // "what" names the accessor's use for messages, e.g. "POSITION of mesh 'x' primitive 0".

@@ -14,9 +14,11 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "scenes/gltf_internal.h"
+#include "scenes/primitive_modes.h"
 
 namespace raylab {
 
@@ -48,7 +50,15 @@ class Converter {
     checkNodes();
     meshCache_.resize(m.meshes.size());
     traverse(rootNodes());
-    if (scene_.triangles.empty()) src_.fail("the scene has no triangles to render");
+    if (scene_.triangles.empty()) {
+      std::string skipped;
+      for (const std::string& mode : skippedModes_) skipped += (skipped.empty() ? "" : ", ") + mode;
+      src_.fail("the scene has no triangles to render" +
+                (skipped.empty() ? std::string()
+                                 : " (its primitives are " + skipped +
+                                       "; only TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN have a surface)"));
+    }
+    scene_.loadWarnings = src_.warnings;
     addDefaultViewpoint();
     scene_.name = name;
     scene_.skyColor = glm::vec3(1.0f);  // glTF scenes are lit by a white sky unless they emit
@@ -192,9 +202,12 @@ class Converter {
   void convertPrimitive(const tinygltf::Primitive& prim, const std::string& what,
                         std::vector<Triangle>& out) {
     const tinygltf::Model& m = src_.model;
-    int mode = prim.mode == -1 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
-    if (mode != TINYGLTF_MODE_TRIANGLES) {
-      src_.warn(what + ": mode " + std::to_string(mode) + " is not TRIANGLES (4), skipped");
+    int mode = prim.mode == -1 ? kModeTriangles : prim.mode;
+    const std::string modeName = primitiveModeName(mode);
+    if (modeName.empty()) src_.fail(what + ": mode " + std::to_string(mode) + " is not a glTF primitive mode (0..6)");
+    if (!isTriangleMode(mode)) {  // points and lines have no surface to hit
+      src_.warn(what + ": mode " + modeName + " (" + std::to_string(mode) + ") draws no triangles, skipped");
+      skippedModes_.insert(modeName + " (" + std::to_string(mode) + ")");
       return;
     }
     auto position = prim.attributes.find("POSITION");
@@ -224,7 +237,7 @@ class Converter {
       indices.resize(positions.size());
       for (size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<uint32_t>(i);
     }
-    if (indices.size() % 3 != 0)
+    if (mode == kModeTriangles && indices.size() % 3 != 0)
       src_.warn(what + ": " + std::to_string(indices.size()) + " indices is not a multiple of 3, the last " +
                 std::to_string(indices.size() % 3) + " ignored");
     uint32_t material;
@@ -236,6 +249,7 @@ class Converter {
     } else {
       material = defaultMaterial();
     }
+    indices = triangleListIndices(mode, indices);
     for (size_t i = 0; i + 2 < indices.size(); i += 3) {
       Triangle t;
       for (int k = 0; k < 3; ++k) {
@@ -314,6 +328,7 @@ class Converter {
   Source src_;
   Scene scene_;
   std::vector<std::optional<std::vector<Triangle>>> meshCache_;
+  std::set<std::string> skippedModes_;  // non-triangle modes met, named in the "no triangles" error
   int defaultMaterial_ = -1;
 };
 

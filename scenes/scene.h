@@ -62,6 +62,7 @@ struct Scene {
   std::vector<Texture> textures;
   std::vector<Viewpoint> viewpoints;  // the first is the default
   glm::vec3 skyColor{0.0f};           // constant radiance of rays that leave the scene
+  std::vector<std::string> loadWarnings;  // what the loader skipped (missing textures, ...), for the UI
 
   Bounds bounds() const;
   const Viewpoint* findViewpoint(const std::string& name) const;

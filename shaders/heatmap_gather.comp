@@ -58,7 +58,7 @@ void main() {
     if (pc.view == RL_HEAT_CELL_HIT) {
       float predicted = s.predictedLength.v[i], t = f.hits.t.v[i];
       if (predicted >= 0.0 && t > 0.0) value = all(equal(cellOf(P.grid, o + predicted * d), cellOf(P.grid, o + t * d))) ? 1.0 : 0.0;
-    } else {
+    } else if (pc.hasCache != 0u) {  // without a cache its addresses are null: never follow them
       value = cacheValue(P, o, d, pc.view == RL_HEAT_CACHE_VARIANCE);
     }
   }

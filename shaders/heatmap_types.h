@@ -29,10 +29,12 @@ struct HeatmapPush {
   uint stateSet;
   uint megakernel;  // 1: paths are in id order and hits.steps holds whole-path totals
   uint hasKeyParams;
+  uint hasCache;  // 1: keyParams' length cache exists (its buffer addresses are zero otherwise)
+  uint pad;       // to a multiple of 8 bytes, as C++ lays the struct out
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(HeatmapPush) == 56);
+static_assert(sizeof(HeatmapPush) == 64);
 }  // namespace raylab::gpu
 #endif
 #endif

@@ -26,6 +26,16 @@ void drawScene(const CameraModel& m, UiRequests& r) {
   ImGui::SameLine();
   if ((ImGui::Button("Open glTF") || enter) && std::strlen(path) > 0) r.loadScene = std::string(path);
   errorText(m.sceneError);
+  // Sponza alone skips about a hundred texture files: a folded list, not a wall of text.
+  if (!m.loadWarnings.empty()) {
+    std::string header = std::to_string(m.loadWarnings.size()) + " load warning" +
+                         (m.loadWarnings.size() == 1 ? "" : "s") + "###loadwarnings";
+    if (ImGui::CollapsingHeader(header.c_str())) {
+      ImGui::BeginChild("warnings", ImVec2(0, 120), true, ImGuiWindowFlags_HorizontalScrollbar);
+      for (const std::string& w : m.loadWarnings) ImGui::TextUnformatted(w.c_str());
+      ImGui::EndChild();
+    }
+  }
 }
 
 void drawViewpoints(const CameraModel& m, UiRequests& r) {

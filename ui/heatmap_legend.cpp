@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "renderer/heatmap_rules.h"
+
 namespace raylab {
 namespace {
 
@@ -81,7 +83,14 @@ void drawHeatmapLegend(const Settings& settings, const FrameStats& stats) {
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                  ImGuiWindowFlags_NoNav;
   if (ImGui::Begin("Heatmap legend", nullptr, flags)) {
-    ImGui::Text("%s, bounce %u", toString(settings.heatmap).c_str(), settings.heatmapBounce);
+    if (std::optional<std::string> why = heatmapUnavailable(settings)) {
+      // The renderer draws the render instead (heatmapShown); say why rather than show an empty view.
+      ImGui::Text("%s is not available", toString(settings.heatmap).c_str());
+      ImGui::TextUnformatted(why->c_str());
+      ImGui::End();
+      return;
+    }
+    ImGui::Text("%s, bounce %u", toString(settings.heatmap).c_str(), heatmapBounceShown(settings));
     ImGui::TextDisabled("%s", heatmapDescription(settings.heatmap));
     if (settings.heatmap == HeatmapView::CellHit) {
       swatch(IM_COL32(51, 204, 77, 255), "hit: estimated cell is the actual cell");

@@ -17,6 +17,7 @@ void drawHelpOverlay(bool* open) {
         {"Shift", "move faster"},
         {"mouse wheel", "dolly (orbit: zoom)"},
         {"O", "toggle orbit mode around the target"},
+        {"R", "reset the camera to the current viewpoint"},
         {"F12", "save the render as PNG + JSON sidecar"},
         {"Shift+F12", "save the whole window with the panels"},
         {"Tab", "hide or show the panels"},

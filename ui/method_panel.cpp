@@ -6,6 +6,8 @@
 
 #include <imgui.h>
 
+#include "renderer/heatmap_rules.h"
+
 namespace raylab {
 namespace {
 
@@ -88,12 +90,30 @@ void drawLengthSection(Settings& s) {
   ImGui::EndDisabled();
 }
 
+// Views these settings cannot show are greyed out with the reason as tooltip (heatmap_rules.h).
+void drawHeatmapCombo(Settings& s) {
+  if (!ImGui::BeginCombo("heatmap", toString(s.heatmap).c_str())) return;
+  for (HeatmapView v : allHeatmapViews()) {
+    std::optional<std::string> why = heatmapUnavailable(s, v);
+    ImGui::BeginDisabled(why.has_value());
+    if (ImGui::Selectable(toString(v).c_str(), v == s.heatmap)) s.heatmap = v;
+    ImGui::EndDisabled();
+    if (why && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", why->c_str());
+    if (v == s.heatmap) ImGui::SetItemDefaultFocus();
+  }
+  ImGui::EndCombo();
+}
+
 void drawHeatmapSection(Settings& s) {
-  comboEnum("heatmap", s.heatmap, allHeatmapViews());
+  drawHeatmapCombo(s);
   ImGui::BeginDisabled(s.heatmap == HeatmapView::None);
-  if (s.heatmapBounce >= s.bounces) s.heatmapBounce = s.bounces - 1;
-  sliderU32("heatmap bounce", s.heatmapBounce, 0, s.bounces - 1);
+  // The slider shows the bounce drawn, but writes only when moved: fewer bounces must not overwrite the
+  // bounce asked for, or raising them again would not bring it back.
+  uint32_t bounce = heatmapBounceShown(s);
+  if (sliderU32("heatmap bounce", bounce, 0, s.bounces - 1)) s.heatmapBounce = bounce;
   ImGui::EndDisabled();
+  // A strategy, sort or kernel change (or a script) can leave the chosen view without data.
+  if (std::optional<std::string> why = heatmapUnavailable(s)) ImGui::TextWrapped("showing the render: %s", why->c_str());
 }
 
 }  // namespace

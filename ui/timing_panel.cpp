@@ -78,6 +78,31 @@ void drawStackedBars(const FrameStats& stats) {
     ImGui::SameLine();
     ImGui::Text("%.2f ms", sum);
   }
+  // What no stage covers, on the same scale: the bars above and this one add up to the GPU frame time.
+  const double rest = stats.unattributedMs();
+  ImGui::Text("unattrib.");
+  ImGui::SameLine(labelWidth);
+  ImVec2 p = ImGui::GetCursorScreenPos();
+  float x1 = p.x + static_cast<float>(std::min(1.0, rest / longest)) * barWidth;
+  draw->AddRectFilled(p, ImVec2(std::max(x1, p.x + 1.0f), p.y + height), stageColor("unattributed"));
+  ImGui::Dummy(ImVec2(barWidth, height));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("GPU frame time outside every stage (barriers, driver work)");
+  ImGui::SameLine();
+  ImGui::Text("%.2f ms", rest);
+}
+
+// Mean, min and max of the last frames (one frame's number jumps too much to read on a CPU device).
+struct Window {
+  double mean = 0.0, lo = 0.0, hi = 0.0;
+};
+Window lastFrames(const std::vector<float>& v, size_t n) {
+  Window w;
+  if (v.empty()) return w;
+  size_t from = v.size() > n ? v.size() - n : 0;
+  w.lo = w.hi = v[from];
+  for (size_t i = from; i < v.size(); ++i) w.mean += v[i], w.lo = std::min<double>(w.lo, v[i]), w.hi = std::max<double>(w.hi, v[i]);
+  w.mean /= double(v.size() - from);
+  return w;
 }
 
 void drawBounceTable(const FrameStats& stats) {
@@ -112,9 +137,13 @@ void drawTimingPanel(const TimingHistory& history, const FrameStats& stats, Sett
     ImGui::End();
     return;
   }
-  ImGui::Text("frame %.2f ms GPU, %.2f ms wall (%.1f fps)", stats.frameMs, stats.wallMs,
-              stats.wallMs > 0 ? 1000.0 / stats.wallMs : 0.0);
-  ImGui::Text("%.3g rays/s, %u spp accumulated", stats.raysPerSecond, stats.samplesPerPixel);
+  constexpr size_t kAveraged = 30;
+  const Window gpu = lastFrames(history.frameMs(), kAveraged), wall = lastFrames(history.wallMs(), kAveraged);
+  const size_t n = std::min(history.size(), kAveraged);
+  ImGui::Text("GPU %.2f ms (%.2f..%.2f), wall %.2f ms", gpu.mean, gpu.lo, gpu.hi, wall.mean);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("mean (min..max) of the last %zu frames", n);
+  // Rays and time of the same (last) frame.
+  ImGui::Text("last frame %.2f ms GPU: %.3g rays/s; %u spp", stats.frameMs, stats.raysPerSecond, stats.samplesPerPixel);
   ImGui::Checkbox("detailed stats", &view.detailedStats);
   ImGui::SameLine();
   ImGui::Checkbox("count SIMT lanes", &settings.countSimt);

@@ -32,6 +32,7 @@ struct CameraModel {
   bool orbit = false;
   float speed = 1.0f;      // scene units per second
   std::string sceneError;  // last scene load failure
+  std::vector<std::string> loadWarnings;  // what the loader skipped in the current scene (textures, ...)
   std::string cameraError; // last pasted camera that did not parse
   std::string screenshotDir;
   std::string lastScreenshot;  // what the last screenshot wrote, or why it failed

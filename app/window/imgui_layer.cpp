@@ -1,6 +1,7 @@
 #include "app/window/imgui_layer.h"
 
 #include <algorithm>
+#include <filesystem>
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
@@ -27,6 +28,10 @@ ImGuiSession::ImGuiSession(const std::string& iniPath, bool load, IniState* ini)
   ImGui::StyleColorsDark();
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = iniPath_.empty() ? nullptr : iniPath_.c_str();
+  if (!iniPath_.empty()) {  // ImGui writes the file but makes no folders (the config folder may be new)
+    std::error_code error;
+    std::filesystem::create_directories(std::filesystem::path(iniPath_).parent_path(), error);
+  }
   installIniHandler(ini);
   // Reading now marks the settings loaded, so ImGui does not read them again at the first frame;
   // with --reset an empty text does the same and the file is overwritten on exit.

@@ -22,6 +22,11 @@ void LabWindow::handleHotkeys() {
       case Hotkey::CloseHelp: view_.showHelp = false; break;
       case Hotkey::TogglePanels: view_.showPanels = !view_.showPanels; break;
       case Hotkey::ToggleOrbit: camera_.setOrbit(!camera_.orbit(), camera_.viewpoint().target); break;
+      case Hotkey::ResetView: {
+        const Viewpoint* named = scene_.scene.findViewpoint(settings_.view);
+        resetCamera(named ? *named : scene_.view);  // scene_.view: the start camera (e.g. a sidecar's)
+        break;
+      }
       case Hotkey::ScreenshotRender: pendingRenderShot_ = freshScreenshotName(options_.screenshotDir, "render"); break;
       case Hotkey::ScreenshotWindow: pendingWindowShot_ = freshScreenshotName(options_.screenshotDir, "window"); break;
     }
@@ -41,28 +46,34 @@ void LabWindow::handleRequests(const UiRequests& r) {
   if (r.screenshotWindow) pendingWindowShot_ = freshScreenshotName(options_.screenshotDir, "window");
 }
 
-// Loads a scene and a renderer for it; on failure keeps the current ones and says why in `error`.
-bool LabWindow::loadScene(const std::string& nameOrPath, std::string* error) {
+// Loads a scene and a renderer for it, or throws (SceneLoadError, UsageError, VulkanError) keeping the
+// current ones.
+void LabWindow::loadSceneOrThrow(const std::string& nameOrPath) {
   Settings next = settings_;
   next.scene = nameOrPath;
   next.view.clear();
+  LoadedScene loaded = loadSceneForSettings(next);
+  Settings start = tracer_->settings();
+  start.scene = nameOrPath, start.view = loaded.view.name;
+  auto tracer = std::make_unique<PathTracer>(*ctx_, loaded.scene, start, loaded.view);
+  vkDeviceWaitIdle(ctx_->device());
+  tracer_ = std::move(tracer);
+  scene_ = std::move(loaded);
+  settings_.scene = nameOrPath;
+  settings_.view = scene_.view.name;
+  resetCamera(scene_.view);
+}
+
+// The panel's way: on failure the lab keeps the current scene and says why in `error`.
+bool LabWindow::loadScene(const std::string& nameOrPath, std::string* error) {
   try {
-    LoadedScene loaded = loadSceneForSettings(next);
-    Settings start = tracer_->settings();
-    start.scene = nameOrPath, start.view = loaded.view.name;
-    auto tracer = std::make_unique<PathTracer>(*ctx_, loaded.scene, start, loaded.view);
-    vkDeviceWaitIdle(ctx_->device());
-    tracer_ = std::move(tracer);
-    scene_ = std::move(loaded);
+    loadSceneOrThrow(nameOrPath);
   } catch (const std::exception& e) {  // SceneLoadError, UsageError, VulkanError (e.g. out of memory)
     *error = e.what();  // loaders name the file themselves; say which scene otherwise
     if (error->find(nameOrPath) == std::string::npos) *error = nameOrPath + ": " + *error;
     return false;
   }
-  settings_.scene = nameOrPath;
-  settings_.view = scene_.view.name;
   error->clear();
-  resetCamera(scene_.view);
   return true;
 }
 
@@ -90,6 +101,8 @@ bool LabWindow::runScript() {
   while (const ScriptAction* a = script_->next()) {
     try {
       runAction(*a);
+    } catch (const SceneLoadError& e) {
+      throw SceneLoadError(options_.script + ":" + std::to_string(a->line) + ": " + e.what());
     } catch (const std::exception& e) {
       throw ScriptError(options_.script + ":" + std::to_string(a->line) + ": " + e.what());
     }
@@ -105,7 +118,7 @@ void LabWindow::runAction(const ScriptAction& a) {
   switch (a.kind) {
     case K::Set:
       if (a.key == "scene") {
-        if (!loadScene(a.value, &error)) throw ScriptError(error);
+        loadSceneOrThrow(a.value);  // an unusable file exits 3, an unknown name 2, as on the command line
       } else if (a.key == "view") {
         if (!gotoView(a.value, &error)) throw ScriptError(error);
       } else if (a.key == "size") {

@@ -34,6 +34,9 @@ void LabInput::onKey(GLFWwindow* window, int key, int, int action, int mods) {
     case GLFW_KEY_O:
       if (!typing) in->hotkeys_.push_back(Hotkey::ToggleOrbit);
       break;
+    case GLFW_KEY_R:  // back to the viewpoint after flying out of the scene
+      if (!typing) in->hotkeys_.push_back(Hotkey::ResetView);
+      break;
     default: break;
   }
 }

@@ -11,7 +11,7 @@ struct GLFWwindow;
 
 namespace raylab {
 
-enum class Hotkey { Help, ScreenshotRender, ScreenshotWindow, TogglePanels, ToggleOrbit, CloseHelp };
+enum class Hotkey { Help, ScreenshotRender, ScreenshotWindow, TogglePanels, ToggleOrbit, CloseHelp, ResetView };
 
 class LabInput {
  public:

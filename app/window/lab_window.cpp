@@ -12,6 +12,7 @@
 #include "app/window/lab_input.h"
 #include "app/window/presenter.h"
 #include "app/window/swapchain.h"
+#include "renderer/heatmap_rules.h"
 #include "renderer/path_tracer.h"
 #include "renderer/rt_tracer.h"
 #include "renderer/vk/vk_context.h"
@@ -184,7 +185,7 @@ bool LabWindow::frame() {
   syncTracer();
 
   PresentedFrame shown = presenter_->drawFrame(*tracer_, ImGui::GetDrawData(), !pendingWindowShot_.empty(),
-                                               settings_.heatmap != HeatmapView::None);
+                                               heatmapShown(settings_) != HeatmapView::None);
   recreate_ = shown.recreateSwapchain;
   if (!shown.rendered) return true;
   ui_.onFrame(tracer_->settings(), tracer_->finishFrame(shown.wallMs));
@@ -222,6 +223,8 @@ void LabWindow::updateCamera(float seconds) { camera_.update(input_->cameraInput
 
 void LabWindow::fillCameraModel() {
   cameraModel_.scene = settings_.scene;
+  if (cameraModel_.loadWarnings.size() != scene_.scene.loadWarnings.size())
+    cameraModel_.loadWarnings = scene_.scene.loadWarnings;
   cameraModel_.viewpoints.clear();
   for (const Viewpoint& v : scene_.scene.viewpoints) cameraModel_.viewpoints.push_back(v.name);
   cameraModel_.cameraText = cameraToText(camera_.viewpoint());

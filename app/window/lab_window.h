@@ -53,6 +53,7 @@ class LabWindow {
   bool runScript();  // false once the script has quit
   void runAction(const ScriptAction& action);
   bool loadScene(const std::string& nameOrPath, std::string* error);
+  void loadSceneOrThrow(const std::string& nameOrPath);
   bool gotoView(const std::string& name, std::string* error);
   bool applyCameraText(const std::string& text, std::string* error);
   void saveScreenshots(const PresentedFrame& frame);

@@ -5,6 +5,7 @@
 #include "app/window/imgui_layer.h"
 #include "app/window/render_image.h"
 #include "app/window/swapchain.h"
+#include "app/window/tiny_pass.h"
 #include "renderer/path_tracer.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
@@ -36,6 +37,7 @@ VkSemaphore makeSemaphore(VkDevice device) {
 
 Presenter::Presenter(const VulkanContext& ctx, Swapchain& swapchain, ImGuiLayer& layer)
     : ctx_(ctx), swapchain_(swapchain), layer_(layer) {
+  tinyPass_ = std::make_unique<TinyPass>(ctx);
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   poolInfo.queueFamilyIndex = ctx.queueFamily();
@@ -113,6 +115,7 @@ PresentedFrame Presenter::drawFrame(PathTracer& tracer, ImDrawData* ui, bool cap
 
 void Presenter::record(VkCommandBuffer cmd, PathTracer& tracer, ImDrawData* ui, uint32_t index, bool capture,
                        bool nearest) {
+  tinyPass_->record(cmd);
   tracer.recordFrame(cmd);
   recordBlit(cmd, tracer, index, nearest);
   const VkImage target = swapchain_.image(index);

@@ -19,6 +19,7 @@ class Swapchain;
 class ImGuiLayer;
 class PathTracer;
 class RenderImage;
+class TinyPass;
 
 struct PresentedFrame {
   bool rendered = false;       // false: the swapchain was out of date, nothing was drawn
@@ -55,6 +56,7 @@ class Presenter {
   VkSemaphore acquired_ = VK_NULL_HANDLE;
   std::vector<VkSemaphore> rendered_;  // one per swapchain image: presentation may still hold the last one
   std::unique_ptr<RenderImage> image_;
+  std::unique_ptr<TinyPass> tinyPass_;  // binds a 1x1 framebuffer before the frame (tiny_pass.h says why)
   GpuBuffer capture_;
 };
 

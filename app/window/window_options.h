@@ -15,8 +15,8 @@ struct WindowOptions {
   std::vector<std::string> renderArgs; // the render flags as given, laid over the remembered settings
   std::optional<Sidecar> sidecar;      // --settings FILE.json: settings (and camera) to start from
   std::string script;                  // --script FILE
-  std::string screenshotDir = "screenshots";
-  std::string iniPath = "imgui.ini";   // --ini FILE; scripted runs use none unless given
+  std::string screenshotDir;            // --screenshot-dir DIR; default configDir()/screenshots
+  std::string iniPath;                 // --ini FILE; default configDir()/imgui.ini; scripts none unless given
   bool reset = false;                  // --reset: ignore imgui.ini (it is rewritten on exit)
   int width = 0, height = 0;           // --size: the window's size; 0: remembered or default
   std::optional<float> scale;          // --scale: render size / window size

@@ -64,6 +64,8 @@ class KeyStage {
   void recordLearn(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint32_t stateSet, uint32_t bounce,
                    uint32_t count, StageTimer* timer);
 
+  // Whether the strategy keeps a length cache (average, ema, gaussian); its addresses are zero otherwise.
+  bool hasCache() const { return cache_ != nullptr; }
   uint64_t cacheMemoryBytes() const;
   // Entries with samples / entries; downloads the cache (stats only). 0 without a cache.
   double cacheOccupancy() const;

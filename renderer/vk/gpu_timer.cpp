@@ -7,7 +7,13 @@
 
 namespace raylab {
 
-GpuTimer::GpuTimer(const VulkanContext& ctx, uint32_t maxScopes) : ctx_(ctx), capacity_(2 * maxScopes) {
+// Four queries per scope: begin, end, and after each a second timestamp that is never read. lavapipe
+// writes a timestamp only at the next flush once a framebuffer is bound (any frame of the window's UI pass
+// leaves one bound), and each timestamp flushes the one before: without the second writes, a scope's begin
+// was taken after its work and its end right after that, so in the window every stage read ~0.05 ms while
+// the frame's span was hundreds. Headless had no framebuffer and was right. On GPUs the extra writes
+// cost nothing.
+GpuTimer::GpuTimer(const VulkanContext& ctx, uint32_t maxScopes) : ctx_(ctx), capacity_(4 * maxScopes) {
   if (!ctx.info().timestamps) return;  // stage times then stay empty; frame wall time still works
   VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   info.queryType = VK_QUERY_TYPE_TIMESTAMP;
@@ -28,7 +34,7 @@ void GpuTimer::reset(VkCommandBuffer cmd) {
 }
 
 void GpuTimer::begin(VkCommandBuffer cmd, std::string_view stage) {
-  if (!pool_ || used_ + 2 > capacity_) {
+  if (!pool_ || used_ + 4 > capacity_) {
     open_.push_back(UINT32_MAX);
     return;
   }
@@ -37,7 +43,8 @@ void GpuTimer::begin(VkCommandBuffer cmd, std::string_view stage) {
   // BOTTOM_OF_PIPE: written once all earlier commands completed. A TOP_OF_PIPE start would be taken
   // while the previous stage still runs and charge part of it to this one.
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, used_);
-  used_ += 2;
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, used_ + 1);
+  used_ += 4;
 }
 
 void GpuTimer::end(VkCommandBuffer cmd) {
@@ -45,7 +52,8 @@ void GpuTimer::end(VkCommandBuffer cmd) {
   uint32_t scope = open_.back();
   open_.pop_back();
   if (scope == UINT32_MAX) return;
-  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, scopes_[scope].first + 1);
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, scopes_[scope].first + 2);
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, scopes_[scope].first + 3);
 }
 
 std::vector<StageTime> GpuTimer::collect() {
@@ -57,7 +65,7 @@ std::vector<StageTime> GpuTimer::collect() {
   double nsPerTick = ctx_.info().timestampPeriodNs;
   uint64_t first = UINT64_MAX, last = 0;
   for (const Scope& s : scopes_) {
-    uint64_t a = ticks[s.first], b = ticks[s.first + 1];
+    uint64_t a = ticks[s.first], b = ticks[s.first + 2];
     out.push_back({s.stage, s.bounce, b > a ? (b - a) * nsPerTick * 1e-6 : 0.0});
     first = std::min(first, a);
     last = std::max(last, b);

@@ -12,6 +12,10 @@ namespace raylab {
 struct VulkanError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// --device names no device: a bad command line (exit 2), not a failure of the device.
+struct UnknownDeviceError : VulkanError {
+  using VulkanError::VulkanError;
+};
 
 std::string vkResultName(VkResult r);
 

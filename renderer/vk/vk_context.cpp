@@ -146,7 +146,7 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
   }
   if (!physical_) {
     if (!options.deviceName.empty())
-      throw VulkanError("--device '" + options.deviceName + "' matches no Vulkan 1.2 device; devices: " + names);
+      throw UnknownDeviceError("--device '" + options.deviceName + "' is unknown: it matches no Vulkan 1.2 device; devices: " + names);
     throw VulkanError("no Vulkan 1.2 device found; devices: " + names);
   }
 

@@ -146,6 +146,10 @@ TEST(ValidGltf, HierarchyIsFlattenedWithWorldTransforms) {
   Scene s = loadGltf(kData + "hierarchy.gltf");
   // Three instances of one triangle; the 4th index and the LINES primitive are ignored.
   ASSERT_EQ(s.triangles.size(), 3u);
+  // ... and said so, in the warnings the window's scene panel lists.
+  ASSERT_EQ(s.loadWarnings.size(), 2u);
+  EXPECT_NE(s.loadWarnings[0].find("not a multiple of 3"), std::string::npos) << s.loadWarnings[0];
+  EXPECT_NE(s.loadWarnings[1].find("LINES (1)"), std::string::npos) << s.loadWarnings[1];
   auto near = [](const glm::vec3& a, const glm::vec3& b) { return glm::length(a - b) < 1e-5f; };
   // "turned": translate (10,0,0) * rotate 90 degrees about +y * scale 2.
   const Triangle& turned = s.triangles[0];

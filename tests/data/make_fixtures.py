@@ -109,6 +109,56 @@ def hierarchy_model():
     }
 
 
+# Strips and fans (modes/): planar, counter-clockwise seen from +z, so every triangle of a correct expansion
+# faces +z. The indexed forms store the vertices in another order (reversed, behind an unused vertex) and
+# index them back, so all forms of a mode describe the same triangles.
+STRIP = ((0, 0, 0), (1, 0, 0), (0, 1, 0), (1, 1, 0), (0, 2, 0), (1, 2, 0))
+FAN = ((0, 0, 0), (2, 0, 0), (1.5, 1.5, 0), (0, 2, 0), (-1.5, 1.5, 0), (-2, 0, 0))
+INDEX_FORMS = {"u8": (5121, "<%dB", 1), "u16": (5123, "<%dH", 2), "u32": (5125, "<%dI", 4)}
+
+
+def mode_model(points, mode, form):
+    """One primitive in `mode` over `points`; form: 'none' (no indices) or an INDEX_FORMS key."""
+    if form == "none":
+        stored, indices = list(points), None
+    else:
+        stored = [(9, 9, 9)] + list(reversed(points))  # vertex k of the strip is stored at n - k
+        indices = [len(points) - k for k in range(len(points))]
+    data = b"".join(struct.pack("<3f", *p) for p in stored)
+    views = [{"buffer": 0, "byteOffset": 0, "byteLength": len(data)}]
+    accessors = [{"bufferView": 0, "componentType": 5126, "count": len(stored), "type": "VEC3",
+                  "min": [min(p[a] for p in stored) for a in range(3)],
+                  "max": [max(p[a] for p in stored) for a in range(3)]}]
+    prim = {"attributes": {"POSITION": 0}, "mode": mode}
+    if indices is not None:
+        ctype, fmt, size = INDEX_FORMS[form]
+        raw = struct.pack(fmt % len(indices), *indices)
+        views.append({"buffer": 0, "byteOffset": len(data), "byteLength": len(raw)})
+        accessors.append({"bufferView": 1, "componentType": ctype, "count": len(indices), "type": "SCALAR"})
+        prim["indices"] = 1
+        data += raw + b"\0" * (-len(raw) % 4)
+    return {
+        "asset": {"version": "2.0", "generator": "raylab tests/data/make_fixtures.py"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"name": "shape", "mesh": 0}],
+        "meshes": [{"name": "shape", "primitives": [prim]}],
+        "accessors": accessors,
+        "bufferViews": views,
+        "buffers": [{"byteLength": len(data), "uri": data_uri(data)}],
+    }
+
+
+def write_mode_fixtures():
+    modes = os.path.join(HERE, "modes")
+    os.makedirs(modes, exist_ok=True)
+    for form in ["none"] + list(INDEX_FORMS):
+        write_json(os.path.join(modes, "strip_%s.gltf" % form), mode_model(STRIP, 5, form))
+        write_json(os.path.join(modes, "fan_%s.gltf" % form), mode_model(FAN, 6, form))
+    for name, mode in (("points", 0), ("lines", 1), ("line_loop", 2), ("line_strip", 3)):
+        write_json(os.path.join(modes, name + ".gltf"), mode_model(STRIP, mode, "u16"))
+
+
 def malformed(name, edit):
     model = valid_model()
     edit(model)
@@ -131,6 +181,7 @@ def main():
     with open(os.path.join(HERE, "valid_triangle.glb"), "wb") as f:
         f.write(glb)
     write_json(os.path.join(HERE, "hierarchy.gltf"), hierarchy_model())
+    write_mode_fixtures()
 
     # The defects the brief names.
     def bad_index(m):

@@ -42,3 +42,30 @@ INSTANTIATE_TEST_SUITE_P(All, SceneRenders,
                                            RAYLAB_SOURCE_DIR "/../shared/scenes/Sponza/Sponza.gltf"));
 
 }  // namespace raylab::test
+
+namespace raylab::test {
+
+// The first image anyone sees (`raylab` without a display, the window's first frames): the default scene
+// from its default viewpoint must show the scene within a few samples, bright and with structure, not
+// the near-black noise of an indirectly lit interior.
+class FirstImage : public GpuTest {};
+
+TEST_F(FirstImage, DefaultViewIsBrightAndInformative) {
+  Scene scene = loadSceneByName(Settings{}.scene);
+  Settings s;
+  s.width = 64, s.height = 32;
+  PathTracer tracer(ctx(), scene, s, scene.viewpoints.front());
+  for (int f = 0; f < 4; ++f) tracer.renderFrame();
+  std::vector<uint32_t> rgba = tracer.readImage();
+  double sum = 0.0, sum2 = 0.0;
+  for (uint32_t p : rgba) {
+    double luma = ((p & 255) + ((p >> 8) & 255) + ((p >> 16) & 255)) / (3.0 * 255.0);
+    sum += luma, sum2 += luma * luma;
+  }
+  double mean = sum / rgba.size(), sd = std::sqrt(std::max(0.0, sum2 / rgba.size() - mean * mean));
+  RecordProperty("mean", std::to_string(mean));
+  EXPECT_GT(mean, 0.5) << "the default view at 4 spp is dark (mean display value " << mean << ")";
+  EXPECT_GT(sd, 0.05) << "the default view shows no structure";
+}
+
+}  // namespace raylab::test

@@ -38,4 +38,48 @@ expect 2 render --scene nonsense
 expect 2 render --view nowhere
 expect 2 frobnicate
 expect 3 render --scene /nonexistent/missing.gltf
+expect 2 render --device no-such-device --size 8x4
+expect 2 render --size 8192x8192 --spp 64
+expect 2 render --strategy fixed --heatmap cache-mean
+expect 0 bench --help
+expect 0 render --help
+# The documented limits themselves are accepted.
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+expect 0 render --ema-alpha 0.001 --size 8x4 --bounces 1 --out "$dir/limit.png"
+
+# Screenshot sidecars given to --settings pass the same validation as the command line: each hostile
+# value is refused with exit 2 and the flag's range, before any buffer is made.
+sidecar() {  # KEY JSON-VALUE -> path of a sidecar with that one field changed
+  python3 - "$dir" "$1" "$2" <<'PY'
+import json, sys
+d = {"scene": "temple", "view": "", "width": 32, "height": 16, "bounces": 2, "spp_per_frame": 1, "frames": 1,
+     "seed": 1, "exposure": 1, "kernel": "wavefront", "strategy": "fixed", "sort": "radix", "grid": "auto",
+     "grid_auto_cells": 64, "clamp_to_camera": False, "clamp_distance": 50, "fixed_factor": 0.5,
+     "ema_alpha": 0.2, "gauss_outlier": 3, "gauss_reset": 20, "count_simt": False, "heatmap": "none",
+     "heatmap_bounce": 1}
+d[sys.argv[2]] = json.loads(sys.argv[3])
+path = "%s/%s.json" % (sys.argv[1], sys.argv[2])
+json.dump({"settings": d}, open(path, "w"))
+print(path)
+PY
+}
+hostile() {  # KEY VALUE MESSAGE
+  local out; out=$(timeout 60 "$raylab" render --settings "$(sidecar "$1" "$2")" --out "$dir/x.png" 2>&1); local got=$?
+  if [ $got -ne 2 ] || ! grep -qF -- "$3" <<<"$out"; then
+    echo "FAIL: sidecar $1: $2 exited $got, expected 2 with '$3'"; echo "$out" | head -3; fail=1
+  fi
+}
+hostile bounces -5 "--bounces must be between 1 and 32, got -5"
+hostile width 1000000 "--size width must be between 1 and 8192, got 1000000"
+hostile spp_per_frame 100000 "--spp must be between 1 and 64, got 100000"
+hostile ema_alpha -3 "--ema-alpha must be between 0.001 and 1, got -3"
+hostile clamp_distance -50 "--clamp must be between 0 and 1000000, got -50"
+hostile grid_auto_cells 0 "must be between 1 and 1024, got 0"
+hostile heatmap '"cache-mean"' "--heatmap cache-mean"
+hostile strategy '"fastest"' "unknown kernel, strategy or sort"
+hostile frames 1e12 "--frames must be between 1 and 4294967295"
+# A sweep file is command-line flags: the same checks.
+printf 'bounces = -5\n' >"$dir/sweep.txt"
+expect 2 bench --sweep "$dir/sweep.txt"
 exit $fail

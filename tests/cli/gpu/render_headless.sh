@@ -17,3 +17,14 @@ assert stats['settings']['width'] == 37 and len(stats['frames']) == 2
 assert stats['rays_traced'] > 37 * 23, stats['rays_traced']
 print('ok', w, h, stats['rays_per_second'])
 PY
+
+# A time budget accumulates frames until it is spent (here 1.5 s: more than one 16x8 frame, far fewer than
+# the ceiling --frames gives), and says so.
+out=$(RAYLAB_VALIDATE=1 "$raylab" render --size 16x8 --time-budget 1.5 --frames 100000 --out "$dir/b.png" --stats "$dir/b.json" 2>&1)
+python3 - "$dir/b.json" <<'PY'
+import json, sys
+frames = len(json.load(open(sys.argv[1]))['frames'])
+assert 1 < frames < 100000, frames
+print('ok: time budget', frames, 'frames')
+PY
+grep -q "accumulating for 1.5 s" <<<"$out" || { echo "FAIL: no budget message"; echo "$out"; exit 1; }

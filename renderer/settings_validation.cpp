@@ -1,0 +1,80 @@
+#include "renderer/settings_validation.h"
+
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+
+namespace raylab {
+std::string formatNumber(double v) {
+  char text[40];
+  // Whole numbers in full (4294967295, not 4.294967e+09); others to float precision.
+  if (v == std::floor(v) && std::abs(v) < 1e15) std::snprintf(text, sizeof(text), "%.0f", v);
+  else std::snprintf(text, sizeof(text), "%.7g", v);
+  return text;
+}
+
+namespace {
+
+std::string number(double v) { return formatNumber(v); }
+
+// A double as the float a setting holds; beyond float's range it is infinite (never converted: UB).
+float asFloat(double v) {
+  if (std::abs(v) > double(FLT_MAX)) return v > 0 ? INFINITY : -INFINITY;
+  return static_cast<float>(v);
+}
+
+}  // namespace
+
+std::string outOfRangeMessage(const NumberRange& r, const std::string& got) {
+  return std::string(r.flag) + " must be between " + number(r.lo) + " and " + number(r.hi) +
+         ", got " + got;
+}
+
+void checkFloat(const NumberRange& r, double v, const std::string& text) {
+  float f = asFloat(v);
+  if (!(f >= asFloat(r.lo) && f <= asFloat(r.hi))) throw SettingsError(outOfRangeMessage(r, text));
+}
+
+void checkUint(const NumberRange& r, double v, const std::string& text) {
+  if (!(v >= r.lo && v <= r.hi) || v != std::floor(v)) {
+    if (v == std::floor(v) || !std::isfinite(v)) throw SettingsError(outOfRangeMessage(r, text));
+    throw SettingsError(std::string(r.flag) + " expects a whole number, got " + text);
+  }
+}
+
+std::optional<std::string> settingsError(const Settings& s) {
+  namespace R = ranges;
+  try {
+    auto u = [](const NumberRange& r, uint32_t v) { checkUint(r, v, std::to_string(v)); };
+    auto f = [](const NumberRange& r, float v) { checkFloat(r, v, number(v)); };
+    u(R::width, s.width);
+    u(R::height, s.height);
+    u(R::bounces, s.bounces);
+    u(R::spp, s.sppPerFrame);
+    u(R::frames, s.frames);
+    f(R::exposure, s.exposure);
+    for (int a = 0; a < 3; ++a) u(R::gridCells, s.grid.cells[a]);
+    u(R::gridAutoCells, s.grid.autoCells);
+    f(R::clamp, s.clampDistance);
+    f(R::fixedFactor, s.fixedFactor);
+    f(R::emaAlpha, s.emaAlpha);
+    f(R::gaussOutlier, s.gaussOutlier);
+    if (!std::isinf(s.gaussReset) || s.gaussReset < 0) f(R::gaussReset, s.gaussReset);
+    u(R::heatmapBounce, s.heatmapBounce);
+  } catch (const SettingsError& e) {
+    return e.what();
+  }
+  // Path state is allocated per path: the product must stay within what a device can hold (and a uint32).
+  uint64_t paths = uint64_t(s.width) * s.height * s.sppPerFrame;
+  if (paths > SettingLimits::kMaxPathsPerFrame)
+    return "--size x --spp gives " + std::to_string(paths) + " paths per frame (" + std::to_string(s.width) + "x" +
+           std::to_string(s.height) + " at " + std::to_string(s.sppPerFrame) + " spp); at most " +
+           std::to_string(SettingLimits::kMaxPathsPerFrame) + " (8192x8192 at 1 spp)";
+  return std::nullopt;
+}
+
+void validateSettings(const Settings& s) {
+  if (std::optional<std::string> e = settingsError(s)) throw SettingsError(*e);
+}
+
+}  // namespace raylab

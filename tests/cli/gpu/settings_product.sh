@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Every strategy x heatmap x sort x kernel through `raylab render` (tiny image, one frame, two bounces,
+# validation on): each either renders a PNG (exit 0) or is refused with exit 2 and a message saying why
+# the heatmap is unavailable. Never a crash (139), a runtime failure or an empty image. The names come
+# from the program's own help and messages. Renders run four at a time: most of a run is start-up waiting.
+set -u
+raylab="$1"
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+export RAYLAB_VALIDATE=1
+strategies=$("$raylab" render --help | sed -n 's/.*--strategy \([a-z|-]*\).*/\1/p' | tr '|' ' ')
+heatmaps=$("$raylab" render --heatmap '?' 2>&1 | sed -n 's/.*must be one of \([a-z|-]*\).*/\1/p' | tr '|' ' ')
+[ -n "$strategies" ] && [ -n "$heatmaps" ] || { echo "FAIL: cannot list strategies/heatmaps"; exit 1; }
+
+one() {  # kernel sort strategy heatmap -> a line "RESULT kernel sort strategy heatmap"
+  local name="$1-$2-$3-$4" out rc
+  out=$(timeout 120 "$raylab" render --size 32x16 --bounces 2 --frames 1 --kernel "$1" --sort "$2" \
+        --strategy "$3" --heatmap "$4" --out "$dir/$name.png" 2>&1)
+  rc=$?
+  if [ $rc -eq 0 ] && [ -s "$dir/$name.png" ]; then echo "rendered $*"
+  elif [ $rc -eq 2 ] && grep -q "^raylab render: --heatmap $4" <<<"$out"; then echo "refused $*"
+  else echo "FAIL $* exit $rc: $(head -2 <<<"$out" | tr '\n' ' ')"; fi
+}
+export -f one
+export raylab dir
+for k in wavefront megakernel; do for s in none bitonic radix; do for st in $strategies; do for h in $heatmaps; do
+  echo "$k $s $st $h"; done; done; done; done | xargs -P 4 -L 1 bash -c 'one "$@"' _ >"$dir/results.txt"
+
+total=$(wc -l <"$dir/results.txt")
+rendered=$(grep -c "^rendered" "$dir/results.txt")
+refused=$(grep -c "^refused" "$dir/results.txt")
+fail=0
+if grep "^FAIL" "$dir/results.txt"; then fail=1; fi
+# The trace's own views exist for every combination; every other view renders somewhere.
+if grep -E "^refused .* (none|traversal-steps|warp-efficiency)$" "$dir/results.txt"; then
+  echo "FAIL: a view every combination has was refused"; fail=1
+fi
+for h in $heatmaps; do
+  grep -q "^rendered .* $h$" "$dir/results.txt" || { echo "FAIL: heatmap $h rendered nowhere"; fail=1; }
+done
+want=$(( 2 * 3 * $(wc -w <<<"$strategies") * $(wc -w <<<"$heatmaps") ))
+[ "$total" -eq "$want" ] || { echo "FAIL: $total results for $want combinations"; fail=1; }
+echo "$total combinations: $rendered rendered, $refused refused with a reason"
+exit $fail
