@@ -9,6 +9,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/vk/pipeline_handle.h"
+
 namespace raylab {
 
 class VulkanContext;
@@ -20,14 +22,9 @@ class ComputePipeline {
   // declares, or the constructor throws; every dispatch checks sizeof(Push) against it again.
   ComputePipeline(const VulkanContext& ctx, const std::string& shaderName, uint32_t pushBytes,
                   uint32_t groupSize = 64, const std::vector<uint32_t>& extraConstants = {});
-  ~ComputePipeline();
-  ComputePipeline(ComputePipeline&& other) noexcept;
-  ComputePipeline& operator=(ComputePipeline&& other) noexcept;
-  ComputePipeline(const ComputePipeline&) = delete;
-  ComputePipeline& operator=(const ComputePipeline&) = delete;
 
   uint32_t groupSize() const { return groupSize_; }
-  const std::string& name() const { return name_; }
+  const std::string& name() const { return handle_.name; }
 
   // Binds, pushes constants and dispatches enough groups to cover `threads` threads (none if zero).
   void dispatchThreads(VkCommandBuffer cmd, const void* push, uint64_t threads) const;
@@ -37,31 +34,23 @@ class ComputePipeline {
   // Binds, pushes constants and dispatches the group counts stored at `offset` in `args` (x, y, z uints).
   template <class Push>
   void dispatchIndirect(VkCommandBuffer cmd, const Push& push, VkBuffer args, VkDeviceSize offset) const {
-    checkPushSize(sizeof(Push));
-    bindAndPush(cmd, &push);
+    handle_.checkPushSize(sizeof(Push));
+    handle_.bindAndPush(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, &push);
     vkCmdDispatchIndirect(cmd, args, offset);
   }
   template <class Push>
   void dispatchThreads(VkCommandBuffer cmd, const Push& push, uint64_t threads) const {
-    checkPushSize(sizeof(Push));
+    handle_.checkPushSize(sizeof(Push));
     dispatchThreads(cmd, static_cast<const void*>(&push), threads);
   }
   template <class Push>
   void dispatchGroups(VkCommandBuffer cmd, const Push& push, uint32_t groups) const {
-    checkPushSize(sizeof(Push));
+    handle_.checkPushSize(sizeof(Push));
     dispatchGroups(cmd, static_cast<const void*>(&push), groups);
   }
 
  private:
-  void checkPushSize(size_t bytes) const;
-  void bindAndPush(VkCommandBuffer cmd, const void* push) const;
-  void release();
-
-  const VulkanContext* ctx_ = nullptr;
-  std::string name_;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
-  uint32_t pushBytes_ = 0;
+  PipelineHandle handle_;
   uint32_t groupSize_ = 0;
 };
 

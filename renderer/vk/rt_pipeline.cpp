@@ -2,8 +2,6 @@
 
 #include <cstring>
 
-#include "renderer/vk/shader_table.h"
-#include "renderer/vk/spirv_reflect.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
 
@@ -12,33 +10,17 @@ namespace {
 
 VkDeviceSize alignUp(VkDeviceSize v, VkDeviceSize a) { return a ? (v + a - 1) / a * a : v; }
 
-VkShaderModule makeModule(const VulkanContext& ctx, const std::string& name) {
-  std::span<const uint32_t> code = shaderSpirv(name);
-  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  info.codeSize = code.size() * sizeof(uint32_t);
-  info.pCode = code.data();
-  VkShaderModule module;
-  VK_CHECK(vkCreateShaderModule(ctx.device(), &info, nullptr, &module));
-  return module;
+// The context, once it is known to have ray-tracing pipelines (a clear message, not a failed create).
+const VulkanContext& requireRayTracing(const VulkanContext& ctx, const std::string& raygenName) {
+  if (!ctx.info().rayTracing) throw VulkanError(raygenName + ": the device has no ray-tracing pipelines");
+  return ctx;
 }
 
 }  // namespace
 
 RtPipeline::RtPipeline(const VulkanContext& ctx, const std::string& raygenName, uint32_t pushBytes,
                        const std::vector<std::pair<uint32_t, uint32_t>>& constants)
-    : ctx_(&ctx), name_(raygenName), pushBytes_(pushBytes) {
-  const DeviceInfo& info = ctx.info();
-  if (!info.rayTracing) throw VulkanError(raygenName + ": the device has no ray-tracing pipelines");
-  if (uint32_t declared = spirvPushConstantBytes(shaderSpirv(raygenName)); declared != pushBytes)
-    throw VulkanError(raygenName + ": the shader's push constants are " + std::to_string(declared) +
-                      " bytes, the host's struct " + std::to_string(pushBytes));
-
-  VkPushConstantRange range{VK_SHADER_STAGE_RAYGEN_BIT_KHR, 0, pushBytes};
-  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layoutInfo.pushConstantRangeCount = pushBytes ? 1 : 0;
-  layoutInfo.pPushConstantRanges = &range;
-  VK_CHECK(vkCreatePipelineLayout(ctx.device(), &layoutInfo, nullptr, &layout_));
-
+    : handle_(requireRayTracing(ctx, raygenName), raygenName, pushBytes, VK_SHADER_STAGE_RAYGEN_BIT_KHR) {
   const char* names[] = {raygenName.c_str(), "rt_miss", "rt_shadow_miss", "rt_closest_hit"};
   const VkShaderStageFlagBits kinds[] = {VK_SHADER_STAGE_RAYGEN_BIT_KHR, VK_SHADER_STAGE_MISS_BIT_KHR,
                                          VK_SHADER_STAGE_MISS_BIT_KHR, VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR};
@@ -55,7 +37,7 @@ RtPipeline::RtPipeline(const VulkanContext& ctx, const std::string& raygenName, 
   for (uint32_t i = 0; i < 4; ++i) {
     stages[i] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     stages[i].stage = kinds[i];
-    stages[i].module = makeModule(ctx, names[i]);
+    stages[i].module = makeShaderModule(ctx, names[i]);
     stages[i].pName = "main";
     if (i == 0 && !entries.empty()) stages[i].pSpecializationInfo = &spec;
     groups[i] = {VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
@@ -72,20 +54,23 @@ RtPipeline::RtPipeline(const VulkanContext& ctx, const std::string& raygenName, 
   pipelineInfo.groupCount = 4;
   pipelineInfo.pGroups = groups;
   pipelineInfo.maxPipelineRayRecursionDepth = 1;  // only ray-generation shaders trace
-  pipelineInfo.layout = layout_;
+  pipelineInfo.layout = handle_.layout;
   VkResult r = ctx.rt().createRayTracingPipelines(ctx.device(), VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &pipelineInfo,
-                                                  nullptr, &pipeline_);
+                                                  nullptr, &handle_.pipeline);
   for (const auto& s : stages) vkDestroyShaderModule(ctx.device(), s.module, nullptr);
   if (r != VK_SUCCESS) throw VulkanError("creating ray-tracing pipeline " + raygenName + " failed: " + vkResultName(r));
+  buildShaderTable(ctx);
+}
 
-  // Shader binding table: raygen | miss, shadow miss | hit, each region at a base-aligned offset.
+void RtPipeline::buildShaderTable(const VulkanContext& ctx) {
+  const DeviceInfo& info = ctx.info();
   const uint32_t handleSize = info.shaderGroupHandleSize;
   const VkDeviceSize stride = alignUp(handleSize, info.shaderGroupHandleAlignment);
   const VkDeviceSize base = std::max<VkDeviceSize>(info.shaderGroupBaseAlignment, 1);
   const VkDeviceSize raygenOffset = 0, missOffset = alignUp(stride, base), hitOffset = alignUp(missOffset + 2 * stride, base);
   const VkDeviceSize tableBytes = hitOffset + stride;
   std::vector<uint8_t> handles(4 * handleSize);
-  VK_CHECK(ctx.rt().getRayTracingShaderGroupHandles(ctx.device(), pipeline_, 0, 4, handles.size(), handles.data()));
+  VK_CHECK(ctx.rt().getRayTracingShaderGroupHandles(ctx.device(), handle_.pipeline, 0, 4, handles.size(), handles.data()));
   std::vector<uint8_t> table(tableBytes + base, 0);
   // The buffer's address need not be base-aligned: the table starts at the first aligned byte in it.
   table_ = GpuBuffer(ctx, table.size(), MemoryKind::DeviceLocal, VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR);
@@ -101,47 +86,12 @@ RtPipeline::RtPipeline(const VulkanContext& ctx, const std::string& raygenName, 
   hit_ = {at + hitOffset, stride, stride};
 }
 
-RtPipeline::~RtPipeline() { release(); }
-
-RtPipeline::RtPipeline(RtPipeline&& o) noexcept { *this = std::move(o); }
-
-RtPipeline& RtPipeline::operator=(RtPipeline&& o) noexcept {
-  if (this != &o) {
-    release();
-    ctx_ = std::exchange(o.ctx_, nullptr);
-    name_ = std::move(o.name_);
-    layout_ = std::exchange(o.layout_, VK_NULL_HANDLE);
-    pipeline_ = std::exchange(o.pipeline_, VK_NULL_HANDLE);
-    pushBytes_ = o.pushBytes_;
-    table_ = std::move(o.table_);
-    raygen_ = o.raygen_;
-    miss_ = o.miss_;
-    hit_ = o.hit_;
-  }
-  return *this;
-}
-
-void RtPipeline::release() {
-  if (!ctx_) return;
-  if (pipeline_) vkDestroyPipeline(ctx_->device(), pipeline_, nullptr);
-  if (layout_) vkDestroyPipelineLayout(ctx_->device(), layout_, nullptr);
-  pipeline_ = VK_NULL_HANDLE;
-  layout_ = VK_NULL_HANDLE;
-}
-
-void RtPipeline::checkPushSize(size_t bytes) const {
-  if (bytes != pushBytes_)
-    throw VulkanError(name_ + ": push constants of " + std::to_string(bytes) + " bytes, pipeline declares " +
-                      std::to_string(pushBytes_));
-}
-
 void RtPipeline::traceRays(VkCommandBuffer cmd, const void* push, uint32_t width) const {
   if (width == 0) return;
-  if (width > ctx_->info().maxRayDispatchInvocationCount)
-    throw VulkanError(name_ + ": " + std::to_string(width) + " rays exceed the device's launch limit");
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline_);
-  if (pushBytes_) vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_RAYGEN_BIT_KHR, 0, pushBytes_, push);
-  ctx_->rt().cmdTraceRays(cmd, &raygen_, &miss_, &hit_, &callable_, width, 1, 1);
+  if (width > handle_.ctx->info().maxRayDispatchInvocationCount)
+    throw VulkanError(handle_.name + ": " + std::to_string(width) + " rays exceed the device's launch limit");
+  handle_.bindAndPush(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, push);
+  handle_.ctx->rt().cmdTraceRays(cmd, &raygen_, &miss_, &hit_, &callable_, width, 1, 1);
 }
 
 }  // namespace raylab

@@ -12,6 +12,7 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/vk/gpu_buffer.h"
+#include "renderer/vk/pipeline_handle.h"
 
 namespace raylab {
 
@@ -24,29 +25,20 @@ class RtPipeline {
   // `constants` are (constant_id, value) specialization constants of the ray-generation shader.
   RtPipeline(const VulkanContext& ctx, const std::string& raygenName, uint32_t pushBytes,
              const std::vector<std::pair<uint32_t, uint32_t>>& constants = {});
-  ~RtPipeline();
-  RtPipeline(RtPipeline&& other) noexcept;
-  RtPipeline& operator=(RtPipeline&& other) noexcept;
-  RtPipeline(const RtPipeline&) = delete;
-  RtPipeline& operator=(const RtPipeline&) = delete;
 
   // Binds, pushes constants and launches `width` x 1 x 1 ray-generation invocations (none if zero).
   template <class Push>
   void traceRays(VkCommandBuffer cmd, const Push& push, uint32_t width) const {
-    checkPushSize(sizeof(Push));
+    handle_.checkPushSize(sizeof(Push));
     traceRays(cmd, static_cast<const void*>(&push), width);
   }
 
  private:
   void traceRays(VkCommandBuffer cmd, const void* push, uint32_t width) const;
-  void checkPushSize(size_t bytes) const;
-  void release();
+  // Shader binding table: raygen | miss, shadow miss | hit, each region at a base-aligned offset.
+  void buildShaderTable(const VulkanContext& ctx);
 
-  const VulkanContext* ctx_ = nullptr;
-  std::string name_;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
-  uint32_t pushBytes_ = 0;
+  PipelineHandle handle_;
   GpuBuffer table_;
   VkStridedDeviceAddressRegionKHR raygen_{}, miss_{}, hit_{}, callable_{};
 };
