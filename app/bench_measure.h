@@ -22,6 +22,7 @@ struct CellResult {
   Spread frameMs;                         // GPU time of the whole frame
   Spread wallMs;
   std::map<std::string, Spread> stageMs;  // per stage name, summed over bounces
+  std::map<std::string, Spread> stageBounceMs;  // per "stage@bounce" (bounce-loop stages only)
   Spread traceAfterFirstMs;               // trace stage, bounces >= 1
   std::vector<double> errorCurveMs;       // k times the median frame time, k = 1 .. timed frames
   std::vector<double> errorCurveRelMse;   // the case's relative MSE after k frames (same for every cell)
