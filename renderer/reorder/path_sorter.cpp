@@ -1,5 +1,6 @@
 #include "renderer/reorder/path_sorter.h"
 
+
 #include "renderer/reorder/key_accuracy.h"
 #include "renderer/path_buffers.h"
 #include "renderer/vk/stage_timer.h"
@@ -16,13 +17,12 @@ void copyInto(VkCommandBuffer cmd, const GpuBuffer& from, const GpuBuffer& to, V
 }  // namespace
 
 struct PathSorter::Capture {
-  GpuBuffer origin, direction, predicted, alive, hitT, keys;
+  GpuBuffer origin, direction, throughput, hitT, keys;
   bool haveRays = false, haveKeys = false;
   Capture(const VulkanContext& ctx, uint32_t n)
       : origin(ctx, VkDeviceSize(n) * 16, MemoryKind::HostVisible),
         direction(ctx, VkDeviceSize(n) * 16, MemoryKind::HostVisible),
-        predicted(ctx, VkDeviceSize(n) * 4, MemoryKind::HostVisible),
-        alive(ctx, VkDeviceSize(n) * 4, MemoryKind::HostVisible),
+        throughput(ctx, VkDeviceSize(n) * 16, MemoryKind::HostVisible),
         hitT(ctx, VkDeviceSize(n) * 4, MemoryKind::HostVisible),
         keys(ctx, VkDeviceSize(n) * 4, MemoryKind::HostVisible) {}
 };
@@ -68,8 +68,7 @@ void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffer
   const GpuBuffer* state = buffers.state[stateSet];
   copyInto(cmd, state[RL_STATE_ORIGIN], c.origin, VkDeviceSize(n) * 16);
   copyInto(cmd, state[RL_STATE_DIRECTION], c.direction, VkDeviceSize(n) * 16);
-  copyInto(cmd, state[RL_STATE_PREDICTED_LENGTH], c.predicted, VkDeviceSize(n) * 4);
-  copyInto(cmd, state[RL_STATE_ALIVE], c.alive, VkDeviceSize(n) * 4);
+  copyInto(cmd, state[RL_STATE_THROUGHPUT], c.throughput, VkDeviceSize(n) * 16);
   copyInto(cmd, buffers.hitT, c.hitT, VkDeviceSize(n) * 4);
   c.haveRays = true;
   computeBarrier(cmd);
@@ -118,12 +117,23 @@ void PathSorter::finishFrame(FrameStats& stats, bool detailed) {
     if (!captures_[b] || !captures_[b]->haveRays) continue;
     Capture& c = *captures_[b];
     size_t n = c.hitT.size() / 4;
+    // Unpacked from the path-state layout (shared_types.h, RL_STATE_*): predicted length in throughput.w,
+    // the path id (RL_DEAD_PATH once finished) in direction.w.
+    const auto* direction = static_cast<const glm::vec4*>(c.direction.mapped());
+    const auto* directionWords = static_cast<const uint32_t*>(c.direction.mapped());
+    const auto* throughput = static_cast<const glm::vec4*>(c.throughput.mapped());
+    std::vector<float> predicted(n);
+    std::vector<uint32_t> alive(n);
+    for (size_t i = 0; i < n; ++i) {
+      predicted[i] = throughput[i].w;
+      alive[i] = directionWords[4 * i + 3] != RL_DEAD_PATH ? 1u : 0u;
+    }
     KeyAccuracyInput in{
         {static_cast<const glm::vec4*>(c.origin.mapped()), n},
-        {static_cast<const glm::vec4*>(c.direction.mapped()), n},
-        {static_cast<const float*>(c.predicted.mapped()), n},
+        {direction, n},
+        predicted,
         {static_cast<const float*>(c.hitT.mapped()), n},
-        {static_cast<const uint32_t*>(c.alive.mapped()), n},
+        alive,
         c.haveKeys ? std::span<const uint32_t>(static_cast<const uint32_t*>(c.keys.mapped()), n)
                    : std::span<const uint32_t>()};
     KeyAccuracy a = measureKeyAccuracy(keys_.grid(), in, static_cast<uint32_t>(b), stats.keyBits,
