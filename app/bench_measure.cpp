@@ -66,6 +66,7 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
     for (const auto& [name, ms] : perBounce) bounceStages[name].push_back(ms);
     traceLater.push_back(later);
   }
+  r.sortedAfter = tracer.sortPlan().sortAfter;
   r.frameMs = spreadOf(frame);
   r.wallMs = spreadOf(wall);
   r.traceAfterFirstMs = spreadOf(traceLater);
@@ -101,6 +102,7 @@ nlohmann::json toJson(const CellResult& r) {
           {"trace_after_first_ms", spread(r.traceAfterFirstMs)},
           {"stage_ms", stages},
           {"stage_bounce_ms", bounceStages},
+          {"sorted_after", r.sortedAfter},
           {"rays_per_second", r.raysPerSecond},
           {"error_curve_ms", r.errorCurveMs},
           {"error_curve_rel_mse", r.errorCurveRelMse},

@@ -29,6 +29,7 @@ struct CellResult {
   double finalRelMse = -1.0;              // this cell's own image after its timed frames
   double raysPerSecond = 0.0;
   FrameStats detailed;                    // the counting/detailed frame
+  std::vector<bool> sortedAfter;          // the sort policy's plan in the last timed frame (empty: no sort)
 };
 
 // The timed frames run back to back with no readback between them: host gaps let a GPU drop its clocks,

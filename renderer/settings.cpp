@@ -25,6 +25,8 @@ const std::pair<HeatmapView, const char*> kHeatmapNames[] = {
     {HeatmapView::CellHit, "cell-hit"},   {HeatmapView::TraversalSteps, "traversal-steps"},
     {HeatmapView::WarpEfficiency, "warp-efficiency"}, {HeatmapView::CacheMean, "cache-mean"},
     {HeatmapView::CacheVariance, "cache-variance"}};
+const std::pair<SortPolicy, const char*> kPolicyNames[] = {
+    {SortPolicy::Always, "always"}, {SortPolicy::Never, "never"}, {SortPolicy::Auto, "auto"}};
 const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},
                                                        {Kernel::Megakernel, "megakernel"}};
 
@@ -69,6 +71,8 @@ std::string toString(Kernel k) { return nameOf(kKernelNames, k); }
 std::optional<KeyStrategy> parseKeyStrategy(const std::string& n) { return parse(kStrategyNames, n); }
 std::optional<SortAlgorithm> parseSortAlgorithm(const std::string& n) { return parse(kSortNames, n); }
 std::optional<Kernel> parseKernel(const std::string& n) { return parse(kKernelNames, n); }
+std::string toString(SortPolicy p) { return nameOf(kPolicyNames, p); }
+std::optional<SortPolicy> parseSortPolicy(const std::string& n) { return parse(kPolicyNames, n); }
 
 std::string keyStrategyNames() {
   std::string s;

@@ -39,6 +39,9 @@ enum class HeatmapView {
   CacheVariance,   // length-cache variance there
 };
 enum class Kernel { Wavefront, Megakernel };
+// Which bounces sort when a strategy is set (renderer/reorder/sort_policy.h): every one but the last, none,
+// or those where earlier frames measured that sorting saves more than it costs.
+enum class SortPolicy { Always, Never, Auto };
 
 const std::vector<KeyStrategy>& allKeyStrategies();
 std::string toString(KeyStrategy s);
@@ -48,6 +51,8 @@ std::string toString(Kernel k);
 std::optional<KeyStrategy> parseKeyStrategy(const std::string& name);
 std::optional<SortAlgorithm> parseSortAlgorithm(const std::string& name);
 std::optional<Kernel> parseKernel(const std::string& name);
+std::string toString(SortPolicy p);
+std::optional<SortPolicy> parseSortPolicy(const std::string& name);
 std::string keyStrategyNames();  // "none|dead-last|fixed|..."
 std::string toString(HeatmapView v);
 std::optional<HeatmapView> parseHeatmapView(const std::string& name);
@@ -91,6 +96,7 @@ struct Settings {
   // Reordering
   KeyStrategy strategy = KeyStrategy::None;
   SortAlgorithm sort = SortAlgorithm::Radix;
+  SortPolicy sortPolicy = SortPolicy::Always;
   GridSetting grid;
   bool clampToCamera = false;
   float clampDistance = 50.0f;

@@ -21,6 +21,7 @@ json toJson(const Settings& s) {
       {"kernel", toString(s.kernel)},
       {"strategy", toString(s.strategy)},
       {"sort", toString(s.sort)},
+      {"sort_policy", toString(s.sortPolicy)},
       {"grid", s.grid.automatic ? json("auto") : json::array({s.grid.cells.x, s.grid.cells.y, s.grid.cells.z})},
       {"grid_auto_cells", s.grid.autoCells},
       {"clamp_to_camera", s.clampToCamera},
@@ -59,6 +60,12 @@ Settings settingsFromJson(const json& j) {
     s.kernel = *kernel;
     s.strategy = *strategy;
     s.sort = *sort;
+    // Older sidecars have no sort policy: they sorted every bounce.
+    if (j.contains("sort_policy")) {
+      auto policy = parseSortPolicy(j.at("sort_policy").get<std::string>());
+      if (!policy) throw std::invalid_argument("settings: unknown sort policy");
+      s.sortPolicy = *policy;
+    }
     const json& grid = need("grid");
     s.grid.automatic = grid.is_string();
     if (!s.grid.automatic) s.grid.cells = {grid.at(0).get<uint32_t>(), grid.at(1).get<uint32_t>(), grid.at(2).get<uint32_t>()};
@@ -98,7 +105,9 @@ json toJson(const FrameStats& s) {
                        {"prediction_error_mean", opt(x.predictionErrorMean)},
                        {"prediction_error_median", opt(x.predictionErrorMedian)},
                        {"cell_hit_rate", opt(x.cellHitRate)},
-                       {"distinct_keys", x.distinctKeys}});
+                       {"distinct_keys", x.distinctKeys},
+                       {"sorted_after", x.sortedAfter},
+                       {"sort_reason", x.sortReason}});
   }
   return {{"frame", s.frameIndex},
           {"samples_per_pixel", s.samplesPerPixel},

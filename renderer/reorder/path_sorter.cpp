@@ -57,9 +57,9 @@ void PathSorter::makeSorter(const Settings& settings) {
 }
 
 void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
-                                    uint32_t bounce, bool detailed, StageTimer* timer) {
+                                    uint32_t bounce, bool learn, bool detailed, StageTimer* timer) {
   const uint32_t n = buffers.pathCount;
-  if (bounce > 0) keys_.recordLearn(cmd, buffers.frameBlock.address(), stateSet, bounce, n, timer);
+  if (bounce > 0 && learn) keys_.recordLearn(cmd, buffers.frameBlock.address(), stateSet, bounce, n, timer);
   if (!detailed || bounce == 0) return;
   // The rays of this bounce with the predictions made for them, before shading overwrites them.
   if (captures_.size() <= bounce) captures_.resize(bounce + 1);
