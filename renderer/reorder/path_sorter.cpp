@@ -1,5 +1,7 @@
 #include "renderer/reorder/path_sorter.h"
 
+#include <algorithm>
+
 
 #include "renderer/reorder/key_accuracy.h"
 #include "renderer/path_buffers.h"
@@ -94,7 +96,10 @@ uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers&
   const uint32_t n = buffers.pathCount;
   {
     ScopedStage s(timer, cmd, "sort");  // the sorter fences its own passes
-    sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, keys_.keyBits());
+    // Live keys are < 2^(keyBits-1) and the dead key is all ones (KeyStage::keyBits), so keyBits - 1 bits
+    // plus the sorter's own clamp bit (min(key, 2^bits), gpu_sort.h) order them: passing keyBits sorted one
+    // bit more than needed, a whole fourth radix pass for 24-bit two-point keys.
+    sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, std::max(1u, keys_.keyBits() - 1));
   }
   // "reorder": the live prefix's length, then every state array gathered into the other set.
   const gpu::LiveCountPush live{buffers.keys.address(), buffers.live.address(), n, 0};
