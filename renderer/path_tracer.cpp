@@ -206,8 +206,9 @@ const FrameStats& PathTracer::finishFrame(double wallMs) {
       stats_.bounces[b].sortedAfter = framePlan_.sortAfter[b];
       stats_.bounces[b].sortReason = framePlan_.reasons[b];
     }
-    // Counting and readback frames run slower: they would teach the policy wrong costs.
-    if (!detailedStats_ && !settings_.countSimt) sortPolicy_.record(framePlan_, stats_.stages);
+    // Counting frames run a slower trace: they would teach the policy wrong costs. Detailed frames' readbacks
+    // lie outside the timed stages, so they teach it (a render with --stats is detailed in every frame).
+    if (!settings_.countSimt) sortPolicy_.record(framePlan_, stats_.stages);
   }
   heatmap_->finishFrame(stats_);
   stats_.pathStateBytes = buffers_->pathStateBytes();

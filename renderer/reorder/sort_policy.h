@@ -5,7 +5,8 @@
 // and the stage times fed in, nothing else (no clocks, no randomness), so a seed and a cost history give
 // the same decisions every time (tests/cpu/test_sort_policy.cpp).
 //
-// auto, per frame k since reset (k counts only frames fed back with record()):
+// auto, per frame k since reset (k counts only frames fed back with record(); PathTracer feeds every frame
+// but those with subgroup counting on):
 //   k % kExplorePeriod == 0: explore sorted   (every bounce sorts, measures cost and sorted next bounce)
 //   k % kExplorePeriod == 1: explore unsorted (no bounce sorts, measures the unsorted next bounce)
 //   otherwise: sort after bounce b iff gain(b) = (trace + shade of b+1, unsorted) - (same, sorted) exceeds
