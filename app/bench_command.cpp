@@ -50,7 +50,8 @@ void writeCsvHeader(std::ofstream& csv) {
          "frame_ms_median,frame_ms_min,frame_ms_max,trace_after_first_ms";
   for (const char* s : kStages) csv << "," << s << "_ms";
   csv << ",rays_per_second,simt_efficiency,virtual_warp_efficiency,virtual_warp_efficiency_after_first,"
-         "prediction_error_mean,prediction_error_median,cell_hit_rate,key_bits,length_cache_bytes,final_rel_mse\n";
+         "prediction_error_mean,prediction_error_median,cell_hit_rate,key_bits,length_cache_bytes,final_rel_mse,"
+         "sort_policy,sorted_after\n";
 }
 
 std::string csvQuote(const std::string& s) { return "\"" + s + "\""; }
@@ -74,7 +75,10 @@ void writeCsvRow(std::ofstream& csv, const VulkanContext& ctx, const BenchCell& 
       << meanOf(b, &BounceStats::predictionErrorMean, true) << ","
       << meanOf(b, &BounceStats::predictionErrorMedian, true) << "," << meanOf(b, &BounceStats::cellHitRate, true)
       << "," << r.detailed.keyBits << "," << r.detailed.lengthCacheBytes << ","
-      << r.finalRelMse << "\n";
+      << r.finalRelMse << "," << toString(s.sortPolicy) << ",";
+  // Which bounces the policy sorted after in the last timed frame, e.g. "YNY-" (- : the last bounce).
+  for (size_t k = 0; k < r.sortedAfter.size(); ++k) csv << (k + 1 == r.sortedAfter.size() ? '-' : r.sortedAfter[k] ? 'Y' : 'N');
+  csv << "\n";
   csv.flush();
 }
 

@@ -46,7 +46,7 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
   tracer.restartAccumulation();
 
   std::vector<double> frame, wall, traceLater;
-  std::map<std::string, std::vector<double>> stages;
+  std::map<std::string, std::vector<double>> stages, bounceStages;
   double total = 0.0;
   uint64_t rays = 0;
   for (uint32_t f = 0; f < timed; ++f) {
@@ -55,19 +55,23 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
     wall.push_back(st.wallMs);
     rays += st.raysTraced;
     total += st.frameMs > 0.0 ? st.frameMs : st.wallMs;
-    std::map<std::string, double> perStage;
+    std::map<std::string, double> perStage, perBounce;
     double later = 0.0;
     for (const StageTime& s : st.stages) {
       perStage[s.stage] += s.ms;
+      if (s.bounce >= 0) perBounce[s.stage + "@" + std::to_string(s.bounce)] += s.ms;
       if (s.stage == "trace" && s.bounce >= 1) later += s.ms;
     }
     for (const auto& [name, ms] : perStage) stages[name].push_back(ms);
+    for (const auto& [name, ms] : perBounce) bounceStages[name].push_back(ms);
     traceLater.push_back(later);
   }
+  r.sortedAfter = tracer.sortPlan().sortAfter;
   r.frameMs = spreadOf(frame);
   r.wallMs = spreadOf(wall);
   r.traceAfterFirstMs = spreadOf(traceLater);
   for (auto& [name, v] : stages) r.stageMs[name] = spreadOf(v);
+  for (auto& [name, v] : bounceStages) r.stageBounceMs[name] = spreadOf(v);
   r.raysPerSecond = total > 0.0 ? rays / (total * 1e-3) : 0.0;
   r.finalRelMse = reference.empty() ? -1.0 : relativeMse(tracer.readRadiance(), reference);
   for (size_t k = 0; k < errorCurve.size(); ++k) {
@@ -91,10 +95,14 @@ nlohmann::json toJson(const CellResult& r) {
   auto spread = [](const Spread& s) { return nlohmann::json{{"median", s.median}, {"min", s.min}, {"max", s.max}}; };
   nlohmann::json stages;
   for (const auto& [name, s] : r.stageMs) stages[name] = spread(s);
+  nlohmann::json bounceStages = nlohmann::json::object();
+  for (const auto& [name, s] : r.stageBounceMs) bounceStages[name] = s.median;
   return {{"frame_ms", spread(r.frameMs)},
           {"wall_ms", spread(r.wallMs)},
           {"trace_after_first_ms", spread(r.traceAfterFirstMs)},
           {"stage_ms", stages},
+          {"stage_bounce_ms", bounceStages},
+          {"sorted_after", r.sortedAfter},
           {"rays_per_second", r.raysPerSecond},
           {"error_curve_ms", r.errorCurveMs},
           {"error_curve_rel_mse", r.errorCurveRelMse},

@@ -22,12 +22,14 @@ struct CellResult {
   Spread frameMs;                         // GPU time of the whole frame
   Spread wallMs;
   std::map<std::string, Spread> stageMs;  // per stage name, summed over bounces
+  std::map<std::string, Spread> stageBounceMs;  // per "stage@bounce" (bounce-loop stages only)
   Spread traceAfterFirstMs;               // trace stage, bounces >= 1
   std::vector<double> errorCurveMs;       // k times the median frame time, k = 1 .. timed frames
   std::vector<double> errorCurveRelMse;   // the case's relative MSE after k frames (same for every cell)
   double finalRelMse = -1.0;              // this cell's own image after its timed frames
   double raysPerSecond = 0.0;
   FrameStats detailed;                    // the counting/detailed frame
+  std::vector<bool> sortedAfter;          // the sort policy's plan in the last timed frame (empty: no sort)
 };
 
 // The timed frames run back to back with no readback between them: host gaps let a GPU drop its clocks,

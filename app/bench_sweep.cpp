@@ -41,6 +41,7 @@ std::vector<std::string> readSweepFile(const std::string& path) {
 struct Axes {
   std::vector<std::string> strategies{"all"}, sorts{"radix"}, grids{"auto"}, clamps{"off"}, resets{}, factors{};
   std::vector<std::string> tracers{}, sers{}, serHints{"two-point"};
+  std::vector<std::string> policies{"always"};
 };
 
 // One sweep-axis value applied to a copy of the settings, with the CLI's validation ("clamp off" too).
@@ -87,6 +88,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
     if (flag == "--cases") caseList = splitList(v);
     else if (flag == "--strategies") axes.strategies = splitList(v);
     else if (flag == "--sorts") axes.sorts = splitList(v);
+    else if (flag == "--sort-policies") axes.policies = splitList(v);
     else if (flag == "--grids") axes.grids = splitList(v);
     else if (flag == "--clamps") axes.clamps = splitList(v);
     else if (flag == "--gauss-resets") axes.resets = splitList(v);
@@ -157,7 +159,10 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
           expand(axes.clamps, "--clamp");
           if (so.strategy == KeyStrategy::Gaussian) expand(axes.resets, "--gauss-reset");
           if (so.strategy == KeyStrategy::Fixed || so.strategy == KeyStrategy::TwoPoint) expand(axes.factors, "--fixed-factor");
-          for (const Settings& v : variants) {
+          std::vector<Settings> withPolicies;
+          for (const Settings& v : variants)
+            for (const std::string& policy : axes.policies) withPolicies.push_back(withFlag(v, "--sort-policy", policy));
+          for (const Settings& v : withPolicies) {
             std::string label = prefix + strategy + "/" + sort;
             if (usesGrid(v.strategy)) {
               label += v.grid.automatic ? " grid=auto" : " grid=" + std::to_string(v.grid.cells.x) + "x" +
@@ -167,6 +172,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
             if (!axes.resets.empty() && v.strategy == KeyStrategy::Gaussian) label += " reset=" + shortNumber(v.gaussReset);
             if (!axes.factors.empty() && (v.strategy == KeyStrategy::Fixed || v.strategy == KeyStrategy::TwoPoint))
               label += " factor=" + shortNumber(v.fixedFactor);
+            if (v.sortPolicy != SortPolicy::Always) label += " policy=" + toString(v.sortPolicy);
             plan.cells.push_back({ci, v, label});
           }
         }
@@ -181,6 +187,7 @@ std::string benchHelp() {
          "  --cases SCENE@VIEW,...    default temple@alley,temple@hall,temple@openings\n"
          "  --strategies all|a,b,...  key strategies besides the baselines (default all)\n"
          "  --sorts radix,bitonic     sorts to sweep (default radix)\n"
+         "  --sort-policies always,auto  sort policies to sweep (default always)\n"
          "  --grids auto,32x8x32      grid settings to sweep\n"
          "  --clamps off,50           camera clamp distances to sweep\n"
          "  --gauss-resets 20,inf     Gaussian reset thresholds to sweep\n"

@@ -89,6 +89,7 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       {"--ser", [&](const std::string& v) { s.ser = parseEnum("--ser", v, &parseSer, "off|on|hint"); }},
       {"--strategy", [&](const std::string& v) { s.strategy = parseEnum("--strategy", v, &parseKeyStrategy, keyStrategyNames()); }},
       {"--sort", [&](const std::string& v) { s.sort = parseEnum("--sort", v, &parseSortAlgorithm, "none|bitonic|radix"); }},
+      {"--sort-policy", [&](const std::string& v) { s.sortPolicy = parseEnum("--sort-policy", v, &parseSortPolicy, "always|never|auto"); }},
       {"--grid", [&](const std::string& v) { parseGrid(v, s); }},
       {"--clamp", [&](const std::string& v) {
          s.clampToCamera = true;
@@ -146,6 +147,8 @@ std::string commonOptionsHelp() {
          "                         top bits of --strategy's key as coherence hint (needs a strategy)\n"
          "  --strategy " + keyStrategyNames() + "\n"
          "  --sort none|bitonic|radix   sort used when a strategy is set (default radix)\n"
+         "  --sort-policy always|never|auto  which bounces sort: all, none, or where earlier frames measured\n"
+         "                         a saving (default always)\n"
          "  --grid auto|N|NXxNYxNZ  key grid (default auto, 64 cells on the largest axis)\n"
          "  --clamp D              clamp the key grid to camera +- D\n"
          "  --fixed-factor F       fixed length = F * largest extent (default 0.5; Meister et al. 0.25)\n"

@@ -28,6 +28,7 @@ const std::map<std::string, Copy>& fieldsOfFlag() {
       {"ser", [](Settings& t, const Settings& f) { t.ser = f.ser; }},
       {"strategy", [](Settings& t, const Settings& f) { t.strategy = f.strategy; }},
       {"sort", [](Settings& t, const Settings& f) { t.sort = f.sort; }},
+      {"sort-policy", [](Settings& t, const Settings& f) { t.sortPolicy = f.sortPolicy; }},
       {"grid", [](Settings& t, const Settings& f) { t.grid = f.grid; }},
       {"clamp", [](Settings& t, const Settings& f) { t.clampToCamera = f.clampToCamera, t.clampDistance = f.clampDistance; }},
       {"fixed-factor", [](Settings& t, const Settings& f) { t.fixedFactor = f.fixedFactor; }},

@@ -24,6 +24,9 @@ struct BounceStats {
   double predictionErrorMedian = -1.0;
   double cellHitRate = -1.0;            // estimated cell == actual cell
   uint32_t distinctKeys = 0;
+  // Sort policy (wavefront with a strategy): whether the paths were sorted after this bounce, and why.
+  bool sortedAfter = false;
+  std::string sortReason;
 };
 
 struct FrameStats {

@@ -27,6 +27,8 @@ std::optional<std::string> heatmapUnavailable(const Settings& s, HeatmapView vie
     return name + " needs the wavefront kernel: the megakernel computes no sort keys or length estimates";
   if (s.strategy == KeyStrategy::None) return name + " needs a key strategy: strategy none computes no keys";
   if (s.sort == SortAlgorithm::None) return name + " needs a sort (bitonic or radix): sort none runs no key stage";
+  if (s.sortPolicy == SortPolicy::Never && view != HeatmapView::CacheMean && view != HeatmapView::CacheVariance)
+    return name + " needs sorted bounces: sort policy never runs no key stage";
   if (view == HeatmapView::CellHit && !predictsLength(s.strategy))
     return name + ": strategy " + toString(s.strategy) + " estimates no ray length, so there is no estimated cell";
   if ((view == HeatmapView::CacheMean || view == HeatmapView::CacheVariance) && !usesLengthCache(s.strategy))

@@ -10,12 +10,8 @@ static_assert(RL_MAX_BOUNCES == SettingLimits::kMaxBounces);
 PathBuffers::PathBuffers(const VulkanContext& ctx, uint32_t width, uint32_t height, uint32_t spp)
     : pathCount(width * height * spp), pixelCount(width * height) {
   const VkDeviceSize n = pathCount;
-  VkDeviceSize elementBytes[RL_STATE_ARRAY_COUNT];
-  elementBytes[RL_STATE_ORIGIN] = elementBytes[RL_STATE_DIRECTION] = 16;
-  elementBytes[RL_STATE_THROUGHPUT] = elementBytes[RL_STATE_RADIANCE] = 16;
-  elementBytes[RL_STATE_PATH_ID] = elementBytes[RL_STATE_ALIVE] = elementBytes[RL_STATE_PREDICTED_LENGTH] = 4;
   for (auto& set : state)
-    for (int a = 0; a < RL_STATE_ARRAY_COUNT; ++a) set[a] = GpuBuffer(ctx, n * elementBytes[a]);
+    for (int a = 0; a < RL_STATE_ARRAY_COUNT; ++a) set[a] = GpuBuffer(ctx, n * 16);  // one vec4 a path
   hitT = GpuBuffer(ctx, n * 4);
   hitTriangle = GpuBuffer(ctx, n * 4);
   hitBarycentric = GpuBuffer(ctx, n * 8);
@@ -37,10 +33,6 @@ gpu::GpuFrame PathBuffers::addresses() const {
     f.state[s].origin = state[s][RL_STATE_ORIGIN].address();
     f.state[s].direction = state[s][RL_STATE_DIRECTION].address();
     f.state[s].throughput = state[s][RL_STATE_THROUGHPUT].address();
-    f.state[s].radiance = state[s][RL_STATE_RADIANCE].address();
-    f.state[s].pathId = state[s][RL_STATE_PATH_ID].address();
-    f.state[s].alive = state[s][RL_STATE_ALIVE].address();
-    f.state[s].predictedLength = state[s][RL_STATE_PREDICTED_LENGTH].address();
   }
   f.hits.t = hitT.address();
   f.hits.triangle = hitTriangle.address();

@@ -90,6 +90,10 @@ void PathTracer::apply(const SettingsChange& change) {
 void PathTracer::applySettings(const Settings& next) {
   checkSupported(next);
   SettingsChange change = SettingsChange::between(settings_, next);
+  // What the sort policy measured holds for this view and method only.
+  if (change.reallocate || change.resetAccumulation || change.resetCache || change.keyParameters ||
+      next.sort != settings_.sort || next.sortPolicy != settings_.sortPolicy || next.kernel != settings_.kernel)
+    sortPolicy_.reset();
   settings_ = next;
   apply(change);
 }
@@ -102,6 +106,7 @@ void PathTracer::setCamera(const Viewpoint& camera) {
 // One frame: generate, the bounces, accumulate, then tonemap (or the heatmap instead).
 void PathTracer::recordFrame(VkCommandBuffer cmd) {
   timer_.reset(cmd);
+  framePlan_ = settings_.sorts() ? sortPolicy_.plan(settings_.sortPolicy, settings_.bounces) : SortPlan{};
   // Every command of the frame is inside a timed stage, so the stages account for the frame's GPU time.
   recordStage(cmd, &timer_, "setup", [&] {
     recordFrameBlock(cmd);
@@ -157,9 +162,10 @@ void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush&
   heatmap_->afterMegakernel(cmd, *buffers_, &timer_);
 }
 
-// The bounce loop: trace, learn, shade, then keys, sort and reorder before the next bounce. Trace and
-// shade are dispatched indirectly over the live paths: all of them until a sort has moved the finished
-// paths behind the live ones (GpuFrame::live).
+// The bounce loop: trace, learn, shade, then keys, sort and reorder before the next bounce where the sort
+// policy's plan says so (learn only for rays that were sorted). Trace and shade are dispatched indirectly
+// over the live paths: all of them until a sort has moved the finished paths behind the live ones
+// (GpuFrame::live); a bounce that does not sort keeps the last sort's order and live count.
 void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
   const uint32_t n = buffers_->pathCount;
   const bool sorting = settings_.sorts();
@@ -178,7 +184,9 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
         trace.dispatchIndirect(cmd, push, live, liveDispatch);
     });
     if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, b);
-    if (sorting) pathSorter_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
+    const bool sortedBefore = sorting && b > 0 && framePlan_.sortAfter[b - 1];
+    if (sorting)
+      pathSorter_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, sortedBefore, detailedStats_, &timer_);
     heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, keyParams, &timer_);
     recordStage(cmd, &timer_, "shade", [&] {
       if (usesRt())
@@ -186,7 +194,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
       else
         shade_.dispatchIndirect(cmd, push, live, liveDispatch);
     });
-    if (sorting && b + 1 < settings_.bounces) {
+    if (sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b]) {
       pathSorter_->recordKeys(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
       heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, keyParams, &timer_);
       push.stateSet = pathSorter_->recordSortAndGather(cmd, *buffers_, push.stateSet, &timer_);
@@ -235,7 +243,16 @@ const FrameStats& PathTracer::finishFrame(double wallMs) {
   stats_.stages = timer_.collect();
   stats_.frameMs = timer_.spanMs();
   gatherCounters();
-  if (settings_.sorts()) pathSorter_->finishFrame(stats_, detailedStats_);
+  if (settings_.sorts()) {
+    pathSorter_->finishFrame(stats_, detailedStats_);
+    for (size_t b = 0; b < framePlan_.sortAfter.size() && b < stats_.bounces.size(); ++b) {
+      stats_.bounces[b].sortedAfter = framePlan_.sortAfter[b];
+      stats_.bounces[b].sortReason = framePlan_.reasons[b];
+    }
+    // Counting frames run a slower trace: they would teach the policy wrong costs. Detailed frames' readbacks
+    // lie outside the timed stages, so they teach it (a render with --stats is detailed in every frame).
+    if (!settings_.countSimt) sortPolicy_.record(framePlan_, stats_.stages);
+  }
   heatmap_->finishFrame(stats_);
   stats_.pathStateBytes = buffers_->pathStateBytes();
   stats_.sceneBytes = scene_->memoryBytes();

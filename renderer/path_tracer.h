@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "renderer/reorder/sort_policy.h"
 #include "renderer/vk/compute_pipeline.h"
 #include "renderer/frame_stats.h"
 #include "renderer/gpu_scene.h"
@@ -43,6 +44,9 @@ class PathTracer {
   void setDetailedStats(bool on) { detailedStats_ = on; }
 
   const FrameStats& stats() const { return stats_; }
+  // The sort policy's model (stage times it learned) and the plan of the last recorded frame.
+  const SortPolicyModel& sortPolicy() const { return sortPolicy_; }
+  const SortPlan& sortPlan() const { return framePlan_; }
   uint32_t accumulatedFrames() const { return frameIndex_; }
   uint32_t width() const { return settings_.width; }
   uint32_t height() const { return settings_.height; }
@@ -76,6 +80,8 @@ class PathTracer {
   ComputePipeline generate_, trace_, traceCounting_, shade_, accumulate_, tonemap_, megakernel_,
       megakernelCounting_;
   GpuTimer timer_;
+  SortPolicyModel sortPolicy_;
+  SortPlan framePlan_;  // which bounces the frame being recorded sorts after
   FrameStats stats_;
   uint32_t frameIndex_ = 0;
   bool detailedStats_ = false;

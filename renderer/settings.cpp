@@ -25,6 +25,8 @@ const std::pair<HeatmapView, const char*> kHeatmapNames[] = {
     {HeatmapView::CellHit, "cell-hit"},   {HeatmapView::TraversalSteps, "traversal-steps"},
     {HeatmapView::WarpEfficiency, "warp-efficiency"}, {HeatmapView::CacheMean, "cache-mean"},
     {HeatmapView::CacheVariance, "cache-variance"}};
+const std::pair<SortPolicy, const char*> kPolicyNames[] = {
+    {SortPolicy::Always, "always"}, {SortPolicy::Never, "never"}, {SortPolicy::Auto, "auto"}};
 const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},
                                                        {Kernel::Megakernel, "megakernel"}};
 const std::pair<Tracer, const char*> kTracerNames[] = {{Tracer::Compute, "compute"}, {Tracer::Rt, "rt"}};
@@ -75,6 +77,8 @@ std::string toString(Tracer t) { return nameOf(kTracerNames, t); }
 std::string toString(Ser s) { return nameOf(kSerNames, s); }
 std::optional<Tracer> parseTracer(const std::string& n) { return parse(kTracerNames, n); }
 std::optional<Ser> parseSer(const std::string& n) { return parse(kSerNames, n); }
+std::string toString(SortPolicy p) { return nameOf(kPolicyNames, p); }
+std::optional<SortPolicy> parseSortPolicy(const std::string& n) { return parse(kPolicyNames, n); }
 
 std::string keyStrategyNames() {
   std::string s;

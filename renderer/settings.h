@@ -44,6 +44,9 @@ enum class Tracer { Compute, Rt };
 // Shader Execution Reordering in the rt megakernel: off, by hit (hit object), or by hit with a coherence hint
 // made of the top bits of the key of Settings::strategy.
 enum class Ser { Off, On, Hint };
+// Which bounces sort when a strategy is set (renderer/reorder/sort_policy.h): every one but the last, none,
+// or those where earlier frames measured that sorting saves more than it costs.
+enum class SortPolicy { Always, Never, Auto };
 
 const std::vector<KeyStrategy>& allKeyStrategies();
 std::string toString(KeyStrategy s);
@@ -57,6 +60,8 @@ std::string toString(Tracer t);
 std::string toString(Ser s);
 std::optional<Tracer> parseTracer(const std::string& name);
 std::optional<Ser> parseSer(const std::string& name);
+std::string toString(SortPolicy p);
+std::optional<SortPolicy> parseSortPolicy(const std::string& name);
 std::string keyStrategyNames();  // "none|dead-last|fixed|..."
 std::string toString(HeatmapView v);
 std::optional<HeatmapView> parseHeatmapView(const std::string& name);
@@ -108,6 +113,7 @@ struct Settings {
   // Reordering
   KeyStrategy strategy = KeyStrategy::None;
   SortAlgorithm sort = SortAlgorithm::Radix;
+  SortPolicy sortPolicy = SortPolicy::Always;
   GridSetting grid;
   bool clampToCamera = false;
   float clampDistance = 50.0f;

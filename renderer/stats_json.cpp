@@ -25,6 +25,7 @@ json toJson(const Settings& s) {
       {"ser", toString(s.ser)},
       {"strategy", toString(s.strategy)},
       {"sort", toString(s.sort)},
+      {"sort_policy", toString(s.sortPolicy)},
       {"grid", s.grid.automatic ? json("auto") : json::array({s.grid.cells.x, s.grid.cells.y, s.grid.cells.z})},
       {"grid_auto_cells", s.grid.autoCells},
       {"clamp_to_camera", s.clampToCamera},
@@ -81,6 +82,12 @@ Settings settingsFromJson(const json& j) {
     s.kernel = *kernel;
     s.strategy = *strategy;
     s.sort = *sort;
+    // Older sidecars have no sort policy: they sorted every bounce.
+    if (j.contains("sort_policy")) {
+      auto policy = parseSortPolicy(j.at("sort_policy").get<std::string>());
+      if (!policy) throw std::invalid_argument("settings: unknown sort policy");
+      s.sortPolicy = *policy;
+    }
     const json& grid = need("grid");
     if (grid.is_string() && grid.get<std::string>() != "auto")
       throw SettingsError("settings: 'grid' must be \"auto\" or [x, y, z], got " + grid.dump());
@@ -140,7 +147,9 @@ json toJson(const FrameStats& s) {
                        {"prediction_error_mean", opt(x.predictionErrorMean)},
                        {"prediction_error_median", opt(x.predictionErrorMedian)},
                        {"cell_hit_rate", opt(x.cellHitRate)},
-                       {"distinct_keys", x.distinctKeys}});
+                       {"distinct_keys", x.distinctKeys},
+                       {"sorted_after", x.sortedAfter},
+                       {"sort_reason", x.sortReason}});
   }
   return {{"frame", s.frameIndex},
           {"samples_per_pixel", s.samplesPerPixel},

@@ -16,7 +16,5 @@ void main() {
   GpuPathState s = f.state[pc.stateSet];
   uint rng = rngSeed(i, f.frameIndex, 0u, f.seed, RL_RNG_CAMERA);
   PathVars p = cameraPath(f.camera, i / f.sppPerFrame, f.width, f.height, rng);
-  storePath(s, i, p);
-  s.pathId.v[i] = i;
-  s.predictedLength.v[i] = -1.0;
+  storePath(s, i, p, i);
 }

@@ -7,6 +7,7 @@
 #include "heatmap_types.h"
 #include "rng.glsl"
 #include "keys.glsl"
+#include "path_state.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(push_constant, scalar) uniform Push { HeatmapPush pc; };
@@ -36,8 +37,8 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= f.pathCount) return;
   GpuPathState s = f.state[pc.stateSet];
-  uint id = pc.megakernel != 0u ? i : s.pathId.v[i];
-  bool alive = pc.megakernel != 0u || (i < f.live.v[0] && s.alive.v[i] != 0u);
+  uint id = pc.megakernel != 0u ? i : pathId(s, i);
+  bool alive = pc.megakernel != 0u || (i < f.live.v[0] && id != RL_DEAD_PATH);
   if (!alive || id % f.sppPerFrame != 0u) return;
   uint pixel = id / f.sppPerFrame;
   float value = -1.0;
@@ -50,13 +51,13 @@ void main() {
     atomicMax(pc.range.v[1], bits);
     return;
   }
-  vec3 o = s.origin.v[i].xyz, d = s.direction.v[i].xyz;
+  vec3 o = pathOrigin(s, i), d = pathDirection(s, i);
   if (pc.view == RL_HEAT_STEPS) value = float(f.hits.steps.v[i]);
   else if (pc.view == RL_HEAT_WARP) value = warpEfficiency(f, i);
   else if (pc.hasKeyParams != 0u) {
     GpuKeyParams P = pc.keyParams.p;
     if (pc.view == RL_HEAT_CELL_HIT) {
-      float predicted = s.predictedLength.v[i], t = f.hits.t.v[i];
+      float predicted = pathPredictedLength(s, i), t = f.hits.t.v[i];
       if (predicted >= 0.0 && t > 0.0) value = all(equal(cellOf(P.grid, o + predicted * d), cellOf(P.grid, o + t * d))) ? 1.0 : 0.0;
     } else if (pc.hasCache != 0u) {  // without a cache its addresses are null: never follow them
       value = cacheValue(P, o, d, pc.view == RL_HEAT_CACHE_VARIANCE);

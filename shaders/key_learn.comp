@@ -20,6 +20,7 @@
 #include "key_types.h"
 #include "rng.glsl"
 #include "keys.glsl"
+#include "path_state.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(constant_id = 1) const uint kStrategy = RL_KEY_AVERAGE;
@@ -48,9 +49,10 @@ void main() {
     FrameBuf frame = FrameBuf(pc.frame);
     GpuPathState state = frame.f.state[pc.stateSet];
     float t = frame.f.hits.t.v[i];
-    vec3 dir = state.direction.v[i].xyz;
-    if (state.alive.v[i] != 0u && t > 0.0 && t < 1e30 && validDirection(dir)) {
-      e = cacheEntry(cache, params.grid, cellOf(params.grid, state.origin.v[i].xyz), dir);
+    vec3 origin, dir;
+    bool alive = pathRay(state, i, origin, dir);
+    if (alive && t > 0.0 && t < 1e30 && validDirection(dir)) {
+      e = cacheEntry(cache, params.grid, cellOf(params.grid, origin), dir);
       if (e >= 0) {
         GpuCacheEntry entry = cache.entries.v[e];
         float x = clampLength(t, cache.lengthMax);

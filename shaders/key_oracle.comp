@@ -9,6 +9,7 @@
 #include "bvh_traverse.glsl"
 #include "rng.glsl"
 #include "keys.glsl"
+#include "path_state.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(push_constant, scalar) uniform Push { KeyPush pc; };
@@ -20,8 +21,8 @@ void main() {
   GpuPathState state = frame.f.state[pc.stateSet];
   GpuKeyParams params = KeyParamsBuf(pc.params).p;
   float t = -1.0;
-  vec3 dir = state.direction.v[i].xyz;
-  if (state.alive.v[i] != 0u && validDirection(dir))
-    t = traceClosest(frame.f.scene, state.origin.v[i].xyz, dir, 1e30).t;
+  vec3 origin, dir;
+  bool alive = pathRay(state, i, origin, dir);
+  if (alive && validDirection(dir)) t = traceClosest(frame.f.scene, origin, dir, 1e30).t;
   params.oracleT.v[i] = t;
 }

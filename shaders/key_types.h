@@ -27,6 +27,12 @@ using uvec3 = glm::uvec3;
 // Combined keys (origin-direction, two-point) keep at most this many bits: the top one of 32 stays free so
 // the dead key is larger than any live key even when the sort only looks at keyBits bits.
 #define RL_KEY_MAX_SPATIAL_BITS 31u
+// Two-point keys keep only the top 23 bits of their interleaved code: with the sorter's clamp bit for the
+// dead key they fit three 8-bit radix passes instead of four (PathSorter passes keyBits - 1). H200,
+// 2048x1024, 1 spp, two-point, always sorting: sort 0.21 -> 0.17 ms a bounce; frame 4 bounces hall 4.89 ->
+// 4.79, alley 4.29 -> 4.26, openings 2.14 -> 2.01, Sponza 8.07 -> 7.98 ms; 8 bounces hall 9.93 -> 9.69,
+// Sponza 14.25 -> 13.98 ms. Truncating alone (and still sorting 25 bits, 4 passes) changed nothing.
+#define RL_KEY_TWO_POINT_BITS 23u
 // Direction octants per occupied cache cell.
 #define RL_OCTANTS 8u
 // The Gaussian cache rejects outliers only once a cell holds this many samples: below it, mean and sigma

@@ -8,6 +8,7 @@
 #include "key_types.h"
 #include "rng.glsl"
 #include "keys.glsl"
+#include "path_state.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(constant_id = 1) const uint kStrategy = RL_KEY_FIXED;
@@ -19,11 +20,9 @@ void main() {
   FrameBuf frame = FrameBuf(pc.frame);
   GpuPathState state = frame.f.state[pc.stateSet];
   GpuKeyParams params = KeyParamsBuf(pc.params).p;
-  uint alive = state.alive.v[i];
   KeyPath path;
-  path.origin = state.origin.v[i].xyz;
-  path.direction = state.direction.v[i].xyz;
-  path.pathId = state.pathId.v[i];
+  uint alive = pathRay(state, i, path.origin, path.direction) ? 1u : 0u;
+  path.pathId = pathId(state, i);
   path.oracleT = kStrategy == RL_KEY_ORACLE && alive != 0u ? params.oracleT.v[i] : -1.0;
   KeyEnv env;
   env.frameIndex = frame.f.frameIndex;
@@ -33,5 +32,5 @@ void main() {
   uint key = computeKey(kStrategy, params, env, path, alive, len);
   UintBuf(pc.keys).v[i] = key;
   UintBuf(pc.values).v[i] = i;
-  state.predictedLength.v[i] = len;
+  setPathPredictedLength(state, i, len);
 }

@@ -260,7 +260,7 @@ uint keyTwoPoint(GpuKeyParams P, KeyEnv env, KeyPath path, out float len) {
   uvec3 e = len > 0.0 ? cellOf(P.grid, endPoint(path, len)) : o;
   uint c[6] = uint[6](o.x, o.y, o.z, e.x, e.y, e.z);
   uint w[6] = uint[6](P.grid.bits.x, P.grid.bits.y, P.grid.bits.z, P.grid.bits.x, P.grid.bits.y, P.grid.bits.z);
-  return interleaveBits(c, w, 6u, RL_KEY_MAX_SPATIAL_BITS);
+  return interleaveBits(c, w, 6u, RL_KEY_TWO_POINT_BITS);
 }
 
 // A miss has no hit point: its end point is the fixed length along the ray.

@@ -21,14 +21,17 @@ void main() {
   uint rng = rngSeed(id, f.frameIndex, 0u, f.seed, RL_RNG_CAMERA);
   PathVars p = cameraPath(f.camera, id / f.sppPerFrame, f.width, f.height, rng);
   uint steps = 0u, rays = 0u;
+  vec3 radiance = vec3(0.0);
   for (uint b = 0u; b < f.bounceCount && p.alive; ++b) {
     HitRecord hit = traceClosest(f.scene, p.origin, p.direction, 1e30);
     steps += hit.steps;
     ++rays;
     rng = rngSeed(id, f.frameIndex, b, f.seed, RL_RNG_SHADE);
+    p.radiance = vec3(0.0);
     shadePath(f.scene, p, hit, b, f.bounceCount, rng);
+    radiance = addBounceRadiance(radiance, b, p.radiance);
   }
   f.hits.steps.v[id] = steps;
-  f.results.v[id] = finishedRadiance(p);
+  f.results.v[id] = vec4(radiance, 1.0);
   countRays(rays);
 }

@@ -20,7 +20,7 @@ struct PathVars {
   float pdf;  // solid-angle pdf of the BSDF sample that made this ray; 0 for camera rays (no MIS)
   vec3 direction;
   vec3 throughput;
-  vec3 radiance;
+  vec3 radiance;  // gathered at this vertex (shadePath adds to it; callers start each bounce at zero)
   bool alive;
 };
 
@@ -165,9 +165,9 @@ void shadePath(GpuScene scene, inout PathVars p, HitRecord hit, uint bounce, uin
 
 // Radiance that reaches the accumulator: non-finite values (a numerical accident) become black rather
 // than poisoning the pixel forever.
-vec4 finishedRadiance(PathVars p) {
-  bool finite = !any(isnan(p.radiance)) && !any(isinf(p.radiance));
-  return vec4(finite ? p.radiance : vec3(0.0), 1.0);
+vec4 finishedRadiance(vec3 radiance) {
+  bool finite = !any(isnan(radiance)) && !any(isinf(radiance));
+  return vec4(finite ? radiance : vec3(0.0), 1.0);
 }
 
 #endif

@@ -54,15 +54,15 @@ using uint = uint32_t;
 #define RL_RNG_KEY 1u     // the Gaussian key strategy's length sample (keys.glsl and its C++ twin)
 #define RL_RNG_CAMERA 2u  // the camera ray's pixel jitter (generate, megakernel)
 
-// The arrays of GpuPathState, in declaration order (PathBuffers allocates one buffer per array).
-#define RL_STATE_ORIGIN 0
-#define RL_STATE_DIRECTION 1
-#define RL_STATE_THROUGHPUT 2
-#define RL_STATE_RADIANCE 3
-#define RL_STATE_PATH_ID 4
-#define RL_STATE_ALIVE 5
-#define RL_STATE_PREDICTED_LENGTH 6
-#define RL_STATE_ARRAY_COUNT 7
+// The arrays of GpuPathState, in declaration order (PathBuffers allocates one buffer per array). One path
+// is three aligned 16-byte elements; shaders read and write them only through path_state.glsl.
+#define RL_STATE_ORIGIN 0      // xyz ray origin, w = solid-angle pdf of the BSDF sample (0: camera ray)
+#define RL_STATE_DIRECTION 1   // xyz ray direction (unit), w = path id bits (RL_DEAD_PATH: finished)
+#define RL_STATE_THROUGHPUT 2  // xyz path throughput, w = the key stage's predicted ray length (-1: none)
+#define RL_STATE_ARRAY_COUNT 3
+#define RL_STATE_BYTES_PER_PATH 48
+// The path id of a finished path (GpuPathState::direction.w): no live path has it (ids < 2^32 - 1).
+#define RL_DEAD_PATH 0xFFFFFFFFu
 
 // Flattened BVH node: interior when triCount == 0 (children at leftOrFirst and leftOrFirst + 1),
 // leaf otherwise (triangles leftOrFirst .. leftOrFirst + triCount - 1 in BVH order).
@@ -135,6 +135,7 @@ layout(buffer_reference, scalar) buffer UintBuf { uint v[]; };
 layout(buffer_reference, scalar) buffer FloatBuf { float v[]; };
 layout(buffer_reference, scalar) buffer Vec2Buf { vec2 v[]; };
 layout(buffer_reference, scalar) buffer Vec4Buf { vec4 v[]; };
+layout(buffer_reference, scalar) buffer UVec4Buf { uvec4 v[]; };
 #endif
 
 // Everything a traversal or shading function needs to know about the scene.
@@ -153,16 +154,15 @@ struct GpuScene {
   RL_ADDRESS tlas;            // top-level acceleration structure of the rt tracer (0 with the compute tracer)
 };
 
-// One set of path state, structure of arrays (RL_STATE_* name each array). Two sets exist; after a sort,
-// gather_path_state.comp gathers one into the other.
+// One set of path state, structure of arrays of 16-byte elements (RL_STATE_* name each array and what its
+// lanes hold). Two sets exist; after a sort, gather_path_state.comp gathers one into the other. Radiance is
+// not carried: shade adds each bounce's contribution to results[pathId]; whether a path is alive is its id
+// (RL_DEAD_PATH when finished), and slots at or past the live count (GpuFrame::live) are finished too.
+// Read and write it only through path_state.glsl's accessors.
 struct GpuPathState {
-  RL_REF(Vec4Buf) origin;      // xyz ray origin, w = solid-angle pdf of the BSDF sample (0: camera ray)
-  RL_REF(Vec4Buf) direction;   // xyz ray direction (unit), w unused
-  RL_REF(Vec4Buf) throughput;  // xyz path throughput, w unused
-  RL_REF(Vec4Buf) radiance;    // xyz radiance gathered so far, w unused
-  RL_REF(UintBuf) pathId;      // pixel * sppPerFrame + sample: where the result goes, and the RNG stream
-  RL_REF(UintBuf) alive;       // 1 while the path continues
-  RL_REF(FloatBuf) predictedLength;  // the key stage's estimate of this ray's length (-1: none)
+  RL_REF(Vec4Buf) origin;      // RL_STATE_ORIGIN
+  RL_REF(Vec4Buf) direction;   // RL_STATE_DIRECTION
+  RL_REF(Vec4Buf) throughput;  // RL_STATE_THROUGHPUT
 };
 
 // Trace output for one bounce, in the order of the current path state.
@@ -178,7 +178,7 @@ struct GpuFrame {
   GpuScene scene;
   GpuPathState state[2];
   GpuHits hits;
-  RL_REF(Vec4Buf) results;      // per path id: radiance of the finished path
+  RL_REF(Vec4Buf) results;      // per path id: radiance summed over its bounces (xyz), 1 (w)
   RL_REF(Vec4Buf) accumulation; // per pixel: sum of radiance (xyz) and sample count (w)
   RL_REF(UintBuf) image;        // per pixel: tonemapped RGBA8
   RL_REF(UintBuf) counters;     // RL_COUNTER_* slots, RL_COUNTER_STRIDE words per bounce
@@ -227,8 +227,8 @@ struct GatherPush {
 // The layouts the shaders assume (scalar block layout); ComputePipeline also checks every push-constant
 // struct against the size the SPIR-V declares.
 static_assert(sizeof(GpuPathState) == RL_STATE_ARRAY_COUNT * sizeof(uint64_t));
-static_assert(offsetof(GpuPathState, alive) == RL_STATE_ALIVE * sizeof(uint64_t));
-static_assert(offsetof(GpuPathState, predictedLength) == RL_STATE_PREDICTED_LENGTH * sizeof(uint64_t));
+static_assert(offsetof(GpuPathState, throughput) == RL_STATE_THROUGHPUT * sizeof(uint64_t));
+static_assert(RL_STATE_BYTES_PER_PATH == RL_STATE_ARRAY_COUNT * 16);
 static_assert(sizeof(PathStagePush) == 16);
 static_assert(offsetof(GpuScene, tlas) % 8 == 0 && sizeof(GpuScene) == offsetof(GpuScene, tlas) + 8);
 static_assert(sizeof(LiveCountPush) == 24);

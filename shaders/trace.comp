@@ -15,7 +15,9 @@ void main() {
   gCounterBase = pc.bounce * RL_COUNTER_STRIDE;
   uint i = gl_GlobalInvocationID.x;
   uint count = f.live.v[RL_LIVE_COUNT];
-  bool live = i < count && f.state[pc.stateSet].alive.v[i] != 0u;
+  GpuPathState s = f.state[pc.stateSet];
+  vec3 origin, direction;
+  bool live = i < count && pathRay(s, i, origin, direction);
   countRays(live ? 1u : 0u);
   if (i >= count) return;
   HitRecord hit;
@@ -23,12 +25,6 @@ void main() {
   hit.triangle = 0u;
   hit.bary = vec2(0.0);
   hit.steps = 0u;
-  if (live) {
-    GpuPathState s = f.state[pc.stateSet];
-    hit = traceClosest(f.scene, s.origin.v[i].xyz, s.direction.v[i].xyz, 1e30);
-  }
-  f.hits.t.v[i] = hit.t;
-  f.hits.triangle.v[i] = hit.triangle;
-  f.hits.barycentric.v[i] = hit.bary;
-  f.hits.steps.v[i] = hit.steps;
+  if (live) hit = traceClosest(f.scene, origin, direction, 1e30);
+  storeHit(f.hits, i, hit);
 }

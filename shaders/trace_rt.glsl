@@ -9,18 +9,15 @@ void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   uint i = gl_LaunchIDEXT.x;
   if (i >= f.live.v[RL_LIVE_COUNT]) return;
-  bool live = f.state[pc.stateSet].alive.v[i] != 0u;
+  GpuPathState s = f.state[pc.stateSet];
+  vec3 origin, direction;
+  bool live = pathRay(s, i, origin, direction);
   rtCountRays(f.counters, pc.bounce * RL_COUNTER_STRIDE, live ? 1u : 0u);
   HitRecord hit;
   hit.t = -1.0;
   hit.triangle = 0u;
   hit.bary = vec2(0.0);
-  if (live) {
-    GpuPathState s = f.state[pc.stateSet];
-    hit = rtTraceClosest(f.scene, s.origin.v[i].xyz, s.direction.v[i].xyz, 1e30);
-  }
-  f.hits.t.v[i] = hit.t;
-  f.hits.triangle.v[i] = hit.triangle;
-  f.hits.barycentric.v[i] = hit.bary;
-  f.hits.steps.v[i] = 0u;
+  hit.steps = 0u;
+  if (live) hit = rtTraceClosest(f.scene, origin, direction, 1e30);
+  storeHit(f.hits, i, hit);
 }

@@ -109,9 +109,7 @@ class FakeFrame {
     triangles_ = makeBufferFrom(ctx, tris);
     origin_ = GpuBuffer(ctx, capacity * sizeof(glm::vec4));
     direction_ = GpuBuffer(ctx, capacity * sizeof(glm::vec4));
-    pathId_ = GpuBuffer(ctx, capacity * sizeof(uint32_t));
-    alive_ = GpuBuffer(ctx, capacity * sizeof(uint32_t));
-    predicted_ = GpuBuffer(ctx, capacity * sizeof(float));
+    throughput_ = GpuBuffer(ctx, capacity * sizeof(glm::vec4));
     hitT_ = GpuBuffer(ctx, capacity * sizeof(float));
     keys = GpuBuffer(ctx, capacity * sizeof(uint32_t));
     values = GpuBuffer(ctx, capacity * sizeof(uint32_t));
@@ -120,10 +118,17 @@ class FakeFrame {
 
   void upload(const HostPaths& p, uint32_t frameIndex = 3, uint32_t seed = 7, uint32_t stateSet = 0) {
     ASSERT_LE(p.size(), capacity_);
+    // The path-state layout (shared_types.h, RL_STATE_*): the path id in direction.w (RL_DEAD_PATH when
+    // finished), the predicted length in throughput.w.
+    std::vector<glm::vec4> direction(p.size()), throughput(p.size(), glm::vec4(1.0f, 1.0f, 1.0f, -1.0f));
+    for (size_t i = 0; i < p.size(); ++i) {
+      uint32_t id = p.alive[i] ? p.pathId[i] : RL_DEAD_PATH;
+      ASSERT_TRUE(!p.alive[i] || id != RL_DEAD_PATH) << "a live path cannot have the dead id";
+      direction[i] = glm::vec4(glm::vec3(p.direction[i]), std::bit_cast<float>(id));
+    }
     origin_.uploadVector(p.origin);
-    direction_.uploadVector(p.direction);
-    pathId_.uploadVector(p.pathId);
-    alive_.uploadVector(p.alive);
+    direction_.uploadVector(direction);
+    throughput_.uploadVector(throughput);
     hitT_.uploadVector(p.hitT);
     gpu::GpuFrame f{};
     f.scene.nodes = nodes_.address();
@@ -131,9 +136,7 @@ class FakeFrame {
     gpu::GpuPathState& s = f.state[stateSet];
     s.origin = origin_.address();
     s.direction = direction_.address();
-    s.pathId = pathId_.address();
-    s.alive = alive_.address();
-    s.predictedLength = predicted_.address();
+    s.throughput = throughput_.address();
     f.hits.t = hitT_.address();
     f.pathCount = static_cast<uint32_t>(p.size());
     f.frameIndex = frameIndex;
@@ -146,7 +149,12 @@ class FakeFrame {
   VkDeviceAddress address() const { return frameBlock_.address(); }
   uint32_t frameIndex() const { return frameIndex_; }
   uint32_t seed() const { return seed_; }
-  std::vector<float> predicted(size_t n) const { return predicted_.downloadVector<float>(n); }
+  std::vector<float> predicted(size_t n) const {
+    std::vector<glm::vec4> t = throughput_.downloadVector<glm::vec4>(n);
+    std::vector<float> out(n);
+    for (size_t i = 0; i < n; ++i) out[i] = t[i].w;
+    return out;
+  }
 
   GpuBuffer keys, values;
 
@@ -154,7 +162,7 @@ class FakeFrame {
   const VulkanContext* ctx_;
   uint32_t capacity_;
   uint32_t frameIndex_ = 0, seed_ = 0;
-  GpuBuffer nodes_, triangles_, origin_, direction_, pathId_, alive_, predicted_, hitT_, frameBlock_;
+  GpuBuffer nodes_, triangles_, origin_, direction_, throughput_, hitT_, frameBlock_;
 };
 
 struct KeyOutput {

@@ -38,6 +38,7 @@ bool sliderU32(const char* label, uint32_t& v, uint32_t lo, uint32_t hi, ImGuiSl
 void drawSortSection(Settings& s, const ViewOptions& view) {
   comboEnum("strategy", s.strategy, allKeyStrategies());
   comboEnum("sort", s.sort, {SortAlgorithm::None, SortAlgorithm::Bitonic, SortAlgorithm::Radix});
+  comboEnum("sort policy", s.sortPolicy, {SortPolicy::Always, SortPolicy::Never, SortPolicy::Auto});
   comboEnum("kernel", s.kernel, {Kernel::Wavefront, Kernel::Megakernel});
   if (s.kernel == Kernel::Megakernel) ImGui::TextDisabled("the megakernel never sorts");
   // The rt tracer and SER need extensions the device may lack: greyed out with the reason.

@@ -106,8 +106,8 @@ Window lastFrames(const std::vector<float>& v, size_t n) {
 }
 
 void drawBounceTable(const FrameStats& stats) {
-  if (!ImGui::BeginTable("bounces", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) return;
-  for (const char* h : {"bounce", "rays", "SIMT", "virtual warp", "steps"}) ImGui::TableSetupColumn(h);
+  if (!ImGui::BeginTable("bounces", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) return;
+  for (const char* h : {"bounce", "rays", "SIMT", "virtual warp", "steps", "sorted after (why)"}) ImGui::TableSetupColumn(h);
   ImGui::TableHeadersRow();
   for (size_t b = 0; b < stats.bounces.size(); ++b) {
     const BounceStats& s = stats.bounces[b];
@@ -117,6 +117,8 @@ void drawBounceTable(const FrameStats& stats) {
     ImGui::TableNextColumn(), ImGui::TextUnformatted(percent(s.simtEfficiency).c_str());
     ImGui::TableNextColumn(), ImGui::TextUnformatted(percent(s.virtualWarpEfficiency).c_str());
     ImGui::TableNextColumn(), ImGui::Text("%.1f", s.meanTraversalSteps);
+    ImGui::TableNextColumn();
+    if (!s.sortReason.empty()) ImGui::Text("%s (%s)", s.sortedAfter ? "yes" : "no", s.sortReason.c_str());
   }
   ImGui::EndTable();
 }

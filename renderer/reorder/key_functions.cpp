@@ -64,7 +64,7 @@ uint32_t spatialKeyBits(KeyStrategy s, const gpu::GpuKeyGrid& g) {
     case KeyStrategy::None:
     case KeyStrategy::DeadLast: return 0;
     case KeyStrategy::OriginDirection: return std::min(RL_KEY_MAX_SPATIAL_BITS, g.gridBits + 2 * g.maxAxisBits);
-    case KeyStrategy::TwoPoint: return std::min(RL_KEY_MAX_SPATIAL_BITS, 2 * g.gridBits);
+    case KeyStrategy::TwoPoint: return std::min(RL_KEY_TWO_POINT_BITS, 2 * g.gridBits);
     default: return g.gridBits;
   }
 }
@@ -300,7 +300,7 @@ uint32_t keyTwoPoint(const KeyParams& p, const KeyEnv&, const KeyPath& path, flo
   glm::uvec3 e = len > 0.0f ? cellOf(p.grid, endPoint(path, len)) : o;
   const uint32_t c[6] = {o.x, o.y, o.z, e.x, e.y, e.z};
   const uint32_t w[6] = {p.grid.bits.x, p.grid.bits.y, p.grid.bits.z, p.grid.bits.x, p.grid.bits.y, p.grid.bits.z};
-  return interleaveBits(c, w, 6u, RL_KEY_MAX_SPATIAL_BITS);
+  return interleaveBits(c, w, 6u, RL_KEY_TWO_POINT_BITS);
 }
 
 uint32_t keyOracle(const KeyParams& p, const KeyEnv&, const KeyPath& path, float& len) {

@@ -1,5 +1,8 @@
 #include "renderer/reorder/path_sorter.h"
 
+#include <algorithm>
+
+
 #include "renderer/reorder/key_accuracy.h"
 #include "renderer/path_buffers.h"
 #include "renderer/vk/stage_timer.h"
@@ -16,13 +19,12 @@ void copyInto(VkCommandBuffer cmd, const GpuBuffer& from, const GpuBuffer& to, V
 }  // namespace
 
 struct PathSorter::Capture {
-  GpuBuffer origin, direction, predicted, alive, hitT, keys;
+  GpuBuffer origin, direction, throughput, hitT, keys;
   bool haveRays = false, haveKeys = false;
   Capture(const VulkanContext& ctx, uint32_t n)
       : origin(ctx, VkDeviceSize(n) * 16, MemoryKind::HostVisible),
         direction(ctx, VkDeviceSize(n) * 16, MemoryKind::HostVisible),
-        predicted(ctx, VkDeviceSize(n) * 4, MemoryKind::HostVisible),
-        alive(ctx, VkDeviceSize(n) * 4, MemoryKind::HostVisible),
+        throughput(ctx, VkDeviceSize(n) * 16, MemoryKind::HostVisible),
         hitT(ctx, VkDeviceSize(n) * 4, MemoryKind::HostVisible),
         keys(ctx, VkDeviceSize(n) * 4, MemoryKind::HostVisible) {}
 };
@@ -57,9 +59,9 @@ void PathSorter::makeSorter(const Settings& settings) {
 }
 
 void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
-                                    uint32_t bounce, bool detailed, StageTimer* timer) {
+                                    uint32_t bounce, bool learn, bool detailed, StageTimer* timer) {
   const uint32_t n = buffers.pathCount;
-  if (bounce > 0) keys_.recordLearn(cmd, buffers.frameBlock.address(), stateSet, bounce, n, timer);
+  if (bounce > 0 && learn) keys_.recordLearn(cmd, buffers.frameBlock.address(), stateSet, bounce, n, timer);
   if (!detailed || bounce == 0) return;
   // The rays of this bounce with the predictions made for them, before shading overwrites them.
   if (captures_.size() <= bounce) captures_.resize(bounce + 1);
@@ -68,8 +70,7 @@ void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffer
   const GpuBuffer* state = buffers.state[stateSet];
   copyInto(cmd, state[RL_STATE_ORIGIN], c.origin, VkDeviceSize(n) * 16);
   copyInto(cmd, state[RL_STATE_DIRECTION], c.direction, VkDeviceSize(n) * 16);
-  copyInto(cmd, state[RL_STATE_PREDICTED_LENGTH], c.predicted, VkDeviceSize(n) * 4);
-  copyInto(cmd, state[RL_STATE_ALIVE], c.alive, VkDeviceSize(n) * 4);
+  copyInto(cmd, state[RL_STATE_THROUGHPUT], c.throughput, VkDeviceSize(n) * 16);
   copyInto(cmd, buffers.hitT, c.hitT, VkDeviceSize(n) * 4);
   c.haveRays = true;
   computeBarrier(cmd);
@@ -95,7 +96,10 @@ uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers&
   const uint32_t n = buffers.pathCount;
   {
     ScopedStage s(timer, cmd, "sort");  // the sorter fences its own passes
-    sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, keys_.keyBits());
+    // Live keys are < 2^(keyBits-1) and the dead key is all ones (KeyStage::keyBits), so keyBits - 1 bits
+    // plus the sorter's own clamp bit (min(key, 2^bits), gpu_sort.h) order them: passing keyBits sorted one
+    // bit more than needed, a whole fourth radix pass for 24-bit two-point keys.
+    sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, std::max(1u, keys_.keyBits() - 1));
   }
   // "reorder": the live prefix's length, then every state array gathered into the other set.
   const gpu::LiveCountPush live{buffers.keys.address(), buffers.live.address(), n, 0};
@@ -118,12 +122,23 @@ void PathSorter::finishFrame(FrameStats& stats, bool detailed) {
     if (!captures_[b] || !captures_[b]->haveRays) continue;
     Capture& c = *captures_[b];
     size_t n = c.hitT.size() / 4;
+    // Unpacked from the path-state layout (shared_types.h, RL_STATE_*): predicted length in throughput.w,
+    // the path id (RL_DEAD_PATH once finished) in direction.w.
+    const auto* direction = static_cast<const glm::vec4*>(c.direction.mapped());
+    const auto* directionWords = static_cast<const uint32_t*>(c.direction.mapped());
+    const auto* throughput = static_cast<const glm::vec4*>(c.throughput.mapped());
+    std::vector<float> predicted(n);
+    std::vector<uint32_t> alive(n);
+    for (size_t i = 0; i < n; ++i) {
+      predicted[i] = throughput[i].w;
+      alive[i] = directionWords[4 * i + 3] != RL_DEAD_PATH ? 1u : 0u;
+    }
     KeyAccuracyInput in{
         {static_cast<const glm::vec4*>(c.origin.mapped()), n},
-        {static_cast<const glm::vec4*>(c.direction.mapped()), n},
-        {static_cast<const float*>(c.predicted.mapped()), n},
+        {direction, n},
+        predicted,
         {static_cast<const float*>(c.hitT.mapped()), n},
-        {static_cast<const uint32_t*>(c.alive.mapped()), n},
+        alive,
         c.haveKeys ? std::span<const uint32_t>(static_cast<const uint32_t*>(c.keys.mapped()), n)
                    : std::span<const uint32_t>()};
     KeyAccuracy a = measureKeyAccuracy(keys_.grid(), in, static_cast<uint32_t>(b), stats.keyBits,

@@ -35,9 +35,10 @@ class PathSorter {
   // the sorter the settings ask for; the sorter's scratch is only held while sorting.
   void apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths, const SettingsChange& change);
 
-  // After the trace of `bounce`: the learn stage, and in detailed mode the accuracy readbacks.
+  // After the trace of `bounce`: the learn stage (when `learn`: these rays were keyed and sorted), and in
+  // detailed mode the accuracy readbacks.
   void recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
-                        bool detailed, StageTimer* timer);
+                        bool learn, bool detailed, StageTimer* timer);
   // After shading `bounce`: the keys of the next rays (in buffers.keys, current set order).
   void recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
                   bool detailed, StageTimer* timer);

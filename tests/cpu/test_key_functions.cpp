@@ -76,7 +76,7 @@ TEST(KeyFunctions, KeyWidthsPerStrategy) {
   EXPECT_EQ(keyWidth(KeyStrategy::Fixed, g), 31u);
   EXPECT_EQ(keyWidth(KeyStrategy::Direction, g), 31u);
   EXPECT_EQ(keyWidth(KeyStrategy::OriginDirection, g), 32u);  // 50 bits of code, top 31 kept
-  EXPECT_EQ(keyWidth(KeyStrategy::TwoPoint, g), 32u);
+  EXPECT_EQ(keyWidth(KeyStrategy::TwoPoint, g), 24u);  // top 23 bits: three radix passes with the dead bit
 }
 
 TEST(KeyFunctions, OctahedralCellsCoverTheSquareAndStayInRange) {

@@ -30,7 +30,7 @@ static_assert(sizeof(GpuCamera) == 64);
 static_assert(offsetof(GpuCamera, up) == 48);
 static_assert(sizeof(GpuScene) == 7 * 8 + 8 + 16 + 8);  // + the TLAS address (uvec2 in GLSL)
 static_assert(offsetof(GpuScene, tlas) == 80);
-static_assert(sizeof(GpuPathState) == 7 * 8);
+static_assert(sizeof(GpuPathState) == 3 * 8);  // three 16-byte elements a path (RL_STATE_*)
 static_assert(sizeof(GpuHits) == 4 * 8);
 static_assert(offsetof(GpuFrame, scene) == 64);
 static_assert(offsetof(GpuFrame, state) == 64 + sizeof(GpuScene));

@@ -90,7 +90,7 @@ TEST_F(KeyGpu, NoneRecordsNothingAndKeyBitsMatchStrategy) {
   EXPECT_TRUE(std::all_of(out.keys.begin(), out.keys.end(), [](uint32_t k) { return k == 0xABCDu; }));
   const std::pair<KeyStrategy, uint32_t> widths[] = {
       {KeyStrategy::DeadLast, 1},  {KeyStrategy::Fixed, 13},           {KeyStrategy::Gaussian, 13},
-      {KeyStrategy::Direction, 13}, {KeyStrategy::OriginDirection, 27}, {KeyStrategy::TwoPoint, 25}};
+      {KeyStrategy::Direction, 13}, {KeyStrategy::OriginDirection, 27}, {KeyStrategy::TwoPoint, 24}};  // two-point: 24 bits of code, top 23 kept
   for (auto [strategy, bits] : widths) {
     s.strategy = strategy;
     stage.configure(s, {5, 2, 3});
