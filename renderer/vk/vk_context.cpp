@@ -343,27 +343,6 @@ uint32_t VulkanContext::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags 
   throw VulkanError("no memory type with the wanted properties");
 }
 
-std::vector<std::string> VulkanContext::listDevices() {
-  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-  app.apiVersion = VK_API_VERSION_1_2;
-  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-  info.pApplicationInfo = &app;
-  VkInstance instance;
-  VK_CHECK(vkCreateInstance(&info, nullptr, &instance));
-  std::vector<std::string> names;
-  for (VkPhysicalDevice d : enumerateDevices(instance)) {
-    VkPhysicalDeviceProperties p;
-    vkGetPhysicalDeviceProperties(d, &p);
-    names.emplace_back(p.deviceName);
-  }
-  vkDestroyInstance(instance, nullptr);
-  return names;
-}
-
-}  // namespace raylab
-
-namespace raylab {
-
 std::vector<std::string> VulkanContext::describeDevices() {
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.apiVersion = VK_API_VERSION_1_2;

@@ -85,9 +85,7 @@ class VulkanContext {
   uint32_t validationWarnings() const { return validationWarnings_.load(); }
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const;
 
-  // Names of all devices the loader sees (for --device errors and `raylab devices`).
-  static std::vector<std::string> listDevices();
-  // One line per device: its name, and whether it has the rt tracer's and SER's extensions (which it lacks).
+  // For `raylab devices`: one line per device the loader sees: its name, and whether it has the rt tracer's and SER's extensions (which it lacks).
   static std::vector<std::string> describeDevices();
 
  private:
