@@ -90,10 +90,7 @@ void PathTracer::apply(const SettingsChange& change) {
 void PathTracer::applySettings(const Settings& next) {
   checkSupported(next);
   SettingsChange change = SettingsChange::between(settings_, next);
-  // What the sort policy measured holds for this view and method only.
-  if (change.reallocate || change.resetAccumulation || change.resetCache || change.keyParameters ||
-      next.sort != settings_.sort || next.sortPolicy != settings_.sortPolicy || next.kernel != settings_.kernel)
-    sortPolicy_.reset();
+  if (change.resetSortCosts) sortPolicy_.reset();
   settings_ = next;
   apply(change);
 }

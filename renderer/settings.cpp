@@ -108,6 +108,8 @@ SettingsChange SettingsChange::between(const Settings& p, const Settings& n) {
   // unit, which follows the path count.
   c.keyParameters = c.resetCache || c.reallocate || n.emaAlpha != p.emaAlpha || n.gaussOutlier != p.gaussOutlier ||
                     n.gaussReset != p.gaussReset;
+  c.resetSortCosts = c.reallocate || c.resetAccumulation || c.resetCache || c.keyParameters || n.sort != p.sort ||
+                     n.sortPolicy != p.sortPolicy || n.kernel != p.kernel;
   return c;
 }
 

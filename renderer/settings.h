@@ -144,6 +144,8 @@ struct SettingsChange {
   bool resetAccumulation = false;  // Settings::requiresAccumulationReset: the image starts again
   bool resetCache = false;         // Settings::requiresCacheReset: what the length caches learned is void
   bool keyParameters = false;      // the key grid, cache thresholds or path bound changed: rebuild, upload
+  bool resetSortCosts = false;     // what the auto sort policy measured no longer holds (another view,
+                                   // image, key, sort, policy or kernel): measure again
 
   static SettingsChange between(const Settings& previous, const Settings& next);
   // A camera move: the image starts again; the key grid moves only when it is clamped to the camera.

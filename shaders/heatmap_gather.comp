@@ -38,7 +38,7 @@ void main() {
   if (i >= f.pathCount) return;
   GpuPathState s = f.state[pc.stateSet];
   uint id = pc.megakernel != 0u ? i : pathId(s, i);
-  bool alive = pc.megakernel != 0u || (i < f.live.v[0] && id != RL_DEAD_PATH);
+  bool alive = pc.megakernel != 0u || (i < f.live.v[RL_LIVE_COUNT] && id != RL_DEAD_PATH);
   if (!alive || id % f.sppPerFrame != 0u) return;
   uint pixel = id / f.sppPerFrame;
   float value = -1.0;

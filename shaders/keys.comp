@@ -21,8 +21,7 @@ void main() {
   GpuPathState state = frame.f.state[pc.stateSet];
   GpuKeyParams params = KeyParamsBuf(pc.params).p;
   KeyPath path;
-  uint alive = pathRay(state, i, path.origin, path.direction) ? 1u : 0u;
-  path.pathId = pathId(state, i);
+  uint alive = pathRay(state, i, path.origin, path.direction, path.pathId) ? 1u : 0u;
   path.oracleT = kStrategy == RL_KEY_ORACLE && alive != 0u ? params.oracleT.v[i] : -1.0;
   KeyEnv env;
   env.frameIndex = frame.f.frameIndex;

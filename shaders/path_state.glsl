@@ -33,6 +33,14 @@ bool pathRay(GpuPathState s, uint i, out vec3 origin, out vec3 direction) {
   origin = s.origin.v[i].xyz;
   return d.w != RL_DEAD_PATH;
 }
+// The same, with the path id (RL_DEAD_PATH once finished) from that one load of the direction element.
+bool pathRay(GpuPathState s, uint i, out vec3 origin, out vec3 direction, out uint id) {
+  uvec4 d = directionBits(s).v[i];
+  direction = uintBitsToFloat(d.xyz);
+  origin = s.origin.v[i].xyz;
+  id = d.w;
+  return d.w != RL_DEAD_PATH;
+}
 float pathPredictedLength(GpuPathState s, uint i) { return s.throughput.v[i].w; }
 void setPathPredictedLength(GpuPathState s, uint i, float len) { s.throughput.v[i].w = len; }
 // A finished path's ray is never read again: the whole element is overwritten (no read).

@@ -1,5 +1,6 @@
 // SettingsChange: the one diff between two Settings that decides what the renderer reallocates, restarts,
 // resets and uploads. Each field is changed alone and must ask for exactly what it needs.
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -79,6 +80,20 @@ TEST(SettingsChange, EachFieldAsksForWhatItNeeds) {
     // The diff is symmetric: changing back asks for the same.
     expectChange(SettingsChange::between(next, base), c.want, c.field + " (back)");
   }
+}
+
+// The auto sort policy's cost history holds for one view, image, key, sort, policy and kernel only; settings
+// that change none of those (exposure, heatmap, frame count) keep it.
+TEST(SettingsChange, SortCostsResetWhenWhatTheyMeasuredChanges) {
+  const Settings base;
+  const std::vector<std::string> keep = {"frames", "exposure", "countSimt", "heatmap", "heatmapBounce"};
+  for (const Case& c : cases()) {
+    Settings next = base;
+    c.change(next);
+    const bool kept = std::find(keep.begin(), keep.end(), c.field) != keep.end();
+    EXPECT_EQ(SettingsChange::between(base, next).resetSortCosts, !kept) << c.field;
+  }
+  EXPECT_FALSE(SettingsChange::cameraMove(base).resetSortCosts);
 }
 
 TEST(SettingsChange, NoChangeAsksForNothing) {
