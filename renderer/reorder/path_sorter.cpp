@@ -34,8 +34,7 @@ PathSorter::PathSorter(const VulkanContext& ctx, const Scene& scene, const Setti
     : ctx_(ctx),
       keys_(ctx, scene, cameraPos, settings, maxPaths),
       maxPaths_(maxPaths),
-      gather_(ctx, "gather_path_state", sizeof(gpu::GatherPush), RL_PATH_GROUP_SIZE),
-      liveCount_(ctx, "live_count", sizeof(gpu::LiveCountPush), RL_PATH_GROUP_SIZE) {
+      gather_(ctx, "gather_path_state", sizeof(gpu::GatherPush), RL_PATH_GROUP_SIZE) {
   makeSorter(settings);
 }
 
@@ -99,16 +98,15 @@ uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers&
     // Live keys are < 2^(keyBits-1) and the dead key is all ones (KeyStage::keyBits), so keyBits - 1 bits
     // plus the sorter's own clamp bit (min(key, 2^bits), gpu_sort.h) order them: passing keyBits sorted one
     // bit more than needed, a whole fourth radix pass for 24-bit two-point keys.
-    sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, std::max(1u, keys_.keyBits() - 1));
+    // Only the live prefix of the last sort (GpuFrame::live; every path before the first): the key stage
+    // gave every slot past it the dead key, so the pairs there are already in place.
+    sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, std::max(1u, keys_.keyBits() - 1),
+                    buffers.live.address() + RL_LIVE_COUNT * sizeof(uint32_t));
   }
-  // "reorder": the live prefix's length, then every state array gathered into the other set.
-  const gpu::LiveCountPush live{buffers.keys.address(), buffers.live.address(), n, 0};
-  const gpu::GatherPush gather{buffers.frameBlock.address(), buffers.values.address(), stateSet, n};
-  recordStage(cmd, timer, "reorder", [&] {
-    liveCount_.dispatchThreads(cmd, live, n);
-    computeBarrier(cmd);
-    gather_.dispatchThreads(cmd, gather, n);
-  });
+  // "reorder": every state array gathered into the other set, and the live prefix's new length.
+  const gpu::GatherPush gather{buffers.frameBlock.address(), buffers.keys.address(), buffers.values.address(),
+                               stateSet, n};
+  recordStage(cmd, timer, "reorder", [&] { gather_.dispatchThreads(cmd, gather, n); });
   return 1u - stateSet;
 }
 

@@ -58,7 +58,7 @@ class PathSorter {
   KeyStage keys_;
   std::unique_ptr<GpuSorter> sorter_;
   uint32_t maxPaths_;
-  ComputePipeline gather_, liveCount_;
+  ComputePipeline gather_;
   std::vector<std::unique_ptr<Capture>> captures_;
 };
 
