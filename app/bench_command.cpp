@@ -51,7 +51,7 @@ void writeCsvHeader(std::ofstream& csv) {
   for (const char* s : kStages) csv << "," << s << "_ms";
   csv << ",rays_per_second,simt_efficiency,virtual_warp_efficiency,virtual_warp_efficiency_after_first,"
          "prediction_error_mean,prediction_error_median,cell_hit_rate,key_bits,length_cache_bytes,final_rel_mse,"
-         "sort_policy,sorted_after\n";
+         "sort_policy,sorted_after,sort_bits\n";
 }
 
 std::string csvQuote(const std::string& s) { return "\"" + s + "\""; }
@@ -78,7 +78,7 @@ void writeCsvRow(std::ofstream& csv, const VulkanContext& ctx, const BenchCell& 
       << r.finalRelMse << "," << toString(s.sortPolicy) << ",";
   // Which bounces the policy sorted after in the last timed frame, e.g. "YNY-" (- : the last bounce).
   for (size_t k = 0; k < r.sortedAfter.size(); ++k) csv << (k + 1 == r.sortedAfter.size() ? '-' : r.sortedAfter[k] ? 'Y' : 'N');
-  csv << "\n";
+  csv << "," << s.sortBits << "\n";
   csv.flush();
 }
 

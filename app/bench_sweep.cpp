@@ -42,6 +42,7 @@ struct Axes {
   std::vector<std::string> strategies{"all"}, sorts{"radix"}, grids{"auto"}, clamps{"off"}, resets{}, factors{};
   std::vector<std::string> tracers{}, sers{}, serHints{"two-point"};
   std::vector<std::string> policies{"always"};
+  std::vector<std::string> sortBits{};  // --sort-bits-list: empty keeps the render flag's (all bits)
 };
 
 // One sweep-axis value applied to a copy of the settings, with the CLI's validation ("clamp off" too).
@@ -89,6 +90,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
     else if (flag == "--strategies") axes.strategies = splitList(v);
     else if (flag == "--sorts") axes.sorts = splitList(v);
     else if (flag == "--sort-policies") axes.policies = splitList(v);
+    else if (flag == "--sort-bits-list") axes.sortBits = splitList(v);
     else if (flag == "--grids") axes.grids = splitList(v);
     else if (flag == "--clamps") axes.clamps = splitList(v);
     else if (flag == "--gauss-resets") axes.resets = splitList(v);
@@ -148,8 +150,8 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
         for (const std::string& sort : axes.sorts) {
           Settings so = withFlag(st, "--sort", sort);
           std::vector<Settings> variants{so};
-          auto expand = [&](const std::vector<std::string>& values, const char* flag) {
-            if (values.empty() || !usesGrid(so.strategy)) return;
+          auto expand = [&](const std::vector<std::string>& values, const char* flag, bool gridOnly = true) {
+            if (values.empty() || (gridOnly && !usesGrid(so.strategy))) return;
             std::vector<Settings> next;
             for (const Settings& v : variants)
               for (const std::string& value : values) next.push_back(withFlag(v, flag, value));
@@ -159,6 +161,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
           expand(axes.clamps, "--clamp");
           if (so.strategy == KeyStrategy::Gaussian) expand(axes.resets, "--gauss-reset");
           if (so.strategy == KeyStrategy::Fixed || so.strategy == KeyStrategy::TwoPoint) expand(axes.factors, "--fixed-factor");
+          expand(axes.sortBits, "--sort-bits", /*gridOnly=*/false);
           std::vector<Settings> withPolicies;
           for (const Settings& v : variants)
             for (const std::string& policy : axes.policies) withPolicies.push_back(withFlag(v, "--sort-policy", policy));
@@ -173,6 +176,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
             if (!axes.factors.empty() && (v.strategy == KeyStrategy::Fixed || v.strategy == KeyStrategy::TwoPoint))
               label += " factor=" + shortNumber(v.fixedFactor);
             if (v.sortPolicy != SortPolicy::Always) label += " policy=" + toString(v.sortPolicy);
+            if (v.sortBits != 0) label += " bits=" + std::to_string(v.sortBits);
             plan.cells.push_back({ci, v, label});
           }
         }
@@ -188,6 +192,7 @@ std::string benchHelp() {
          "  --strategies all|a,b,...  key strategies besides the baselines (default all)\n"
          "  --sorts radix,bitonic     sorts to sweep (default radix)\n"
          "  --sort-policies always,auto  sort policies to sweep (default always)\n"
+         "  --sort-bits-list 0,8,16   sorted key bits to sweep (0: all; see --sort-bits)\n"
          "  --grids auto,32x8x32      grid settings to sweep\n"
          "  --clamps off,50           camera clamp distances to sweep\n"
          "  --gauss-resets 20,inf     Gaussian reset thresholds to sweep\n"

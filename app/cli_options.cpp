@@ -90,6 +90,7 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       {"--strategy", [&](const std::string& v) { s.strategy = parseEnum("--strategy", v, &parseKeyStrategy, keyStrategyNames()); }},
       {"--sort", [&](const std::string& v) { s.sort = parseEnum("--sort", v, &parseSortAlgorithm, "none|bitonic|radix"); }},
       {"--sort-policy", [&](const std::string& v) { s.sortPolicy = parseEnum("--sort-policy", v, &parseSortPolicy, "always|never|auto"); }},
+      {"--sort-bits", [&](const std::string& v) { s.sortBits = parseUint("--sort-bits", v, 0, 32); }},
       {"--grid", [&](const std::string& v) { parseGrid(v, s); }},
       {"--clamp", [&](const std::string& v) {
          s.clampToCamera = true;
@@ -149,6 +150,8 @@ std::string commonOptionsHelp() {
          "  --sort none|bitonic|radix   sort used when a strategy is set (default radix)\n"
          "  --sort-policy always|never|auto  which bounces sort: all, none, or where earlier frames measured\n"
          "                         a saving (default always)\n"
+         "  --sort-bits N          order only the key's top N bits, 0..32 (default 0: all); 8 bits\n"
+         "                         fewer is one radix pass less\n"
          "  --grid auto|N|NXxNYxNZ  key grid (default auto, 64 cells on the largest axis)\n"
          "  --clamp D              clamp the key grid to camera +- D\n"
          "  --fixed-factor F       fixed length = F * largest extent (default 0.5; Meister et al. 0.25)\n"

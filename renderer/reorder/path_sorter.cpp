@@ -52,6 +52,7 @@ void PathSorter::apply(const Settings& settings, glm::vec3 cameraPos, uint32_t m
 }
 
 void PathSorter::makeSorter(const Settings& settings) {
+  sortBits_ = settings.sortBits;
   if (!settings.sorts()) return;  // the sorter's scratch is only paid for while sorting
   if (!sorter_ || sorter_->algorithm() != settings.sort || sorter_->maxCount() < maxPaths_)
     sorter_ = std::make_unique<GpuSorter>(ctx_, settings.sort, maxPaths_);
@@ -100,8 +101,12 @@ uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers&
     // bit more than needed, a whole fourth radix pass for 24-bit two-point keys.
     // Only the live prefix of the last sort (GpuFrame::live; every path before the first): the key stage
     // gave every slot past it the dead key, so the pairs there are already in place.
-    sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, std::max(1u, keys_.keyBits() - 1),
-                    buffers.live.address() + RL_LIVE_COUNT * sizeof(uint32_t));
+    // Settings::sortBits keeps only the top bits of what the sort compares (keyBits - 1 live bits and the
+    // dead bit): the bits below are ignored, a radix pass less for each 8.
+    const uint32_t bits = std::max(1u, keys_.keyBits() - 1), compared = bits + 1;
+    const uint32_t ignored = sortBits_ > 0 && sortBits_ < compared ? compared - sortBits_ : 0;
+    sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, bits,
+                    buffers.live.address() + RL_LIVE_COUNT * sizeof(uint32_t), ignored);
   }
   // "reorder": every state array gathered into the other set, and the live prefix's new length.
   const gpu::GatherPush gather{buffers.frameBlock.address(), buffers.keys.address(), buffers.values.address(),

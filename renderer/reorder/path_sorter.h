@@ -58,6 +58,7 @@ class PathSorter {
   KeyStage keys_;
   std::unique_ptr<GpuSorter> sorter_;
   uint32_t maxPaths_;
+  uint32_t sortBits_ = 0;  // Settings::sortBits
   ComputePipeline gather_;
   std::vector<std::unique_ptr<Capture>> captures_;
 };

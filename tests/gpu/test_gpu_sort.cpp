@@ -277,6 +277,29 @@ TEST_F(GpuSortTest, RadixSortsOnlyUpToDeviceCountLimit) {
   }
 }
 
+// Ignoring the low bits: the radix sort orders pairs by the compared key's bits above `ignored` only
+// (stable: pairs equal there keep their input order), with dead keys still last, in 1 to 3 passes.
+TEST_F(GpuSortTest, RadixIgnoresTheLowBitsItIsTold) {
+  const uint32_t n = 20011, bits = 23;  // the two-point strategy's width: 24 compared bits
+  for (uint32_t ignored : {1u, 8u, 9u, 16u, 23u}) {
+    const std::vector<uint32_t> keys = makeKeys(Dist::Dead12, n, ignored);
+    std::vector<uint32_t> masked(n), values(n);
+    for (uint32_t i = 0; i < n; ++i) masked[i] = keys[i] == kDead ? kDead : keys[i] & ((1u << bits) - 1u);
+    std::iota(values.begin(), values.end(), 0u);
+    GpuBuffer keyBuf = makeBufferFrom(ctx(), masked);
+    GpuBuffer valueBuf = makeBufferFrom(ctx(), values);
+    ctx().submitAndWait([&](VkCommandBuffer cmd) {
+      sorter(Variant::Radix).record(cmd, keyBuf.address(), valueBuf.address(), n, bits, 0, ignored);
+    });
+    std::vector<uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+      return (gpu::sortEffectiveKey(masked[a], bits) >> ignored) < (gpu::sortEffectiveKey(masked[b], bits) >> ignored);
+    });
+    EXPECT_EQ(valueBuf.downloadVector<uint32_t>(n), order) << "ignored " << ignored;
+  }
+}
+
 // The lab never runs OneSweep on a CPU device unless forced.
 TEST_F(GpuSortTest, OneSweepOnlyWhereSupported) {
   GpuSorter::Tuning tuning;

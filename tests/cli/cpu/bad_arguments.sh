@@ -26,6 +26,8 @@ expect 2 render --kernel gpu
 expect 2 render --strategy fastest
 expect 2 render --sort quick
 expect 2 render --grid 0
+expect 2 render --sort-bits 33
+expect 2 render --sort-bits -1
 expect 2 render --grid 4x4
 expect 2 render --grid 5000
 expect 2 render --clamp nan
