@@ -11,9 +11,10 @@ Writes, per (scene, view) case, into BENCH_OUT_DIR:
                          tracer against the rt tracer and SER; the SER reordering hint in the title
 Sweeps over scene size (--scale-tris) or path length (--bounces 2,4,...) make a case per size and bounce
 count (<case> = scene-view-b<bounces>), draw only its stage breakdown, and add per view (and tracer):
-  crossover_triangles_<view>.png  frame time of every method over the unsorted wavefront's, and the
-                         frame times themselves, against the triangle count (log), one column per bounce
-                         count; a dashed line where the BVH (nodes + triangles) passes the H200's 50 MB L2
+  crossover_triangles_<view>.png  frame time of every method over the unsorted wavefront's, the frame
+                         times themselves and the virtual warp efficiency of bounces >= 1 (device
+                         independent), against the triangle count (log), one column per bounce count; a
+                         dashed line where the BVH (nodes + triangles) passes the H200's 50 MB L2
   crossover_bounces_<view>.png    the same ratios against the bounce count, one column per scene size
 Uses Debian's python3-matplotlib (run with /usr/bin/python3).
 """
@@ -184,6 +185,13 @@ def frame_ratios(rows):
     return series
 
 
+def coherence_of(rows, label, bounces):
+    """[(triangles, virtual warp efficiency of bounces >= 1)] of one method, where measured."""
+    pts = [(num(r, "triangles"), num(r, "virtual_warp_efficiency_after_first")) for r in rows
+           if r["label"] == label and int(r["bounces"]) == bounces]
+    return sorted(p for p in pts if p[1] >= 0)
+
+
 def l2_crossing(rows):
     """Triangle count at which the BVH passes L2_BYTES, interpolated in log space; None outside the data."""
     points = sorted({(num(r, "triangles"), num(r, "bvh_bytes")) for r in rows})
@@ -196,29 +204,37 @@ def l2_crossing(rows):
 
 def crossover_triangles(rows, methods, title, path):
     counts = sorted({b for pts in methods.values() for _, b, _, _ in pts})
-    fig, axes = plt.subplots(2, len(counts), figsize=(4.2 * len(counts) + 1, 7.5), squeeze=False, sharex=True)
+    fig, axes = plt.subplots(3, len(counts), figsize=(4.2 * len(counts) + 1, 10.5), squeeze=False, sharex=True)
     crossing = l2_crossing(rows)
+    unsorted_label = next(r["label"] for r in rows if is_baseline(r))
     for col, bounces in enumerate(counts):
-        ratio_ax, ms_ax = axes[0][col], axes[1][col]
-        for label, pts in sorted(methods.items()):
+        ratio_ax, ms_ax, vwe_ax = axes[0][col], axes[1][col], axes[2][col]
+        for i, (label, pts) in enumerate(sorted(methods.items())):
+            colour = f"C{i}"
             pts = sorted(p for p in pts if p[1] == bounces)
-            ratio_ax.plot([p[0] for p in pts], [p[2] for p in pts], marker="o", label=label)
-            ms_ax.plot([p[0] for p in pts], [p[3] for p in pts], marker="o", label=label)
+            ratio_ax.plot([p[0] for p in pts], [p[2] for p in pts], marker="o", color=colour, label=label)
+            ms_ax.plot([p[0] for p in pts], [p[3] for p in pts], marker="o", color=colour, label=label)
+            vwe = coherence_of(rows, label, bounces)
+            vwe_ax.plot([p[0] for p in vwe], [p[1] for p in vwe], marker="o", color=colour, label=label)
         base = sorted((num(r, "triangles"), num(r, "frame_ms_median")) for r in rows
                       if is_baseline(r) and int(r["bounces"]) == bounces)
         ms_ax.plot([b[0] for b in base], [b[1] for b in base], marker="s", color="black", label="unsorted")
+        vwe = coherence_of(rows, unsorted_label, bounces)
+        vwe_ax.plot([p[0] for p in vwe], [p[1] for p in vwe], marker="s", color="black", label="unsorted")
+        vwe_ax.set_ylim(0, 1)
+        vwe_ax.set_xlabel("triangles")
         ratio_ax.axhline(1.0, color="black", lw=0.8)
-        for ax in (ratio_ax, ms_ax):
+        for ax in (ratio_ax, ms_ax, vwe_ax):
             ax.set_xscale("log")
             if crossing:
                 ax.axvline(crossing, color="grey", ls="--", lw=0.8)
         if crossing:
             ratio_ax.text(crossing, ratio_ax.get_ylim()[1], " BVH > 50 MB", fontsize=7, va="top", color="grey")
-        ratio_ax.set_title(f"{bounces} bounces", fontsize=9)
+        ratio_ax.set_title(f"{bounces} bounce{'s' if bounces != 1 else ''}", fontsize=9)
         ms_ax.set_yscale("log")
-        ms_ax.set_xlabel("triangles")
     axes[0][0].set_ylabel("frame time / unsorted wavefront")
     axes[1][0].set_ylabel("frame time (ms, median)")
+    axes[2][0].set_ylabel("virtual warp efficiency, bounces >= 1")
     axes[0][-1].legend(fontsize=7)
     fig.suptitle(f"Where does sorting pay? {title}", fontsize=10)
     fig.tight_layout()

@@ -5,9 +5,9 @@
 #include "scenes/temple_detail.h"
 
 #include <cstdio>
-#include <stdexcept>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace raylab {
 namespace {
