@@ -135,7 +135,8 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
 }
 
 std::string commonOptionsHelp() {
-  return "  --scene temple|cornell|furnace|FILE.gltf|FILE.glb   scene (default temple)\n"
+  return "  --scene temple|cornell|furnace|temple-detail:N|FILE.gltf|FILE.glb   scene (default temple;\n"
+         "                         temple-detail:N is the temple with N triangles, 1e4 to 3e7)\n"
          "  --view NAME            viewpoint (default: the scene's first)\n"
          "  --size WxH             resolution, any size up to 8192x8192 (default 512x256)\n"
          "  --bounces N            path length in bounces, 1..32 (default 4)\n"
