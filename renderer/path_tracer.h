@@ -53,6 +53,10 @@ class PathTracer {
   const GpuSceneData& scene() const { return *scene_; }
   const GpuBuffer& imageBuffer() const { return buffers_->image; }
 
+  // The heatmap pass: the hovered pixel to read back (setProbe), and for tests its per-pixel values.
+  HeatmapPass& heatmap() { return *heatmap_; }
+  const HeatmapPass& heatmap() const { return *heatmap_; }
+
   std::vector<uint32_t> readImage() const;          // RGBA8 after tonemapping, row-major, top row first
   std::vector<glm::vec3> readRadiance() const;      // accumulated mean radiance per pixel (linear)
 
