@@ -217,9 +217,14 @@ void HeatmapPass::finishFrame(FrameStats& stats) {
     q.cell = direction ? glm::uvec3(cell & 0xFFFFu, cell >> 16, 0)
                        : glm::uvec3(cell & mask, (cell >> RL_HEAT_CELL_BITS) & mask, cell >> (2 * RL_HEAT_CELL_BITS));
     q.cellKind = direction ? "direction cell" : sortKey ? "key cell" : "origin cell";
+    q.octant = p[1 + RL_HEAT_PROBE_OCTANT];
   }
 }
 
 std::vector<uint32_t> HeatmapPass::readValues() const { return heat_.downloadVector<uint32_t>(pixelCount_); }
+
+std::vector<uint32_t> HeatmapPass::readProbes() const {
+  return probeData_.downloadVector<uint32_t>(size_t(pixelCount_) * RL_HEAT_PROBE_STRIDE);
+}
 
 }  // namespace raylab

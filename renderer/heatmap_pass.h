@@ -54,6 +54,8 @@ class HeatmapPass {
   // Tests and tools: the per-pixel heat words (values or RL_HEAT_* sentinels) of the last frame, and how
   // heatmap_colorize.comp coloured them (the range it used is the last finished frame's).
   std::vector<uint32_t> readValues() const;
+  // ... and their probe words (RL_HEAT_PROBE_STRIDE a pixel: path id, key, cell, octant).
+  std::vector<uint32_t> readProbes() const;
   const HeatmapColouring& colouring() const { return colouring_; }
 
  private:

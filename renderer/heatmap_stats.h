@@ -23,6 +23,7 @@ struct HeatmapProbe {
   bool hasCell = false;
   glm::uvec3 cell{0};    // the key's cell (sort keys; direction keys: octahedral u, v), else the ray origin's
   std::string cellKind;  // "key cell", "direction cell" or "origin cell"
+  uint32_t octant = 0;   // the ray direction's octant (bit k: component k negative)
 };
 
 struct HeatmapStats {

@@ -95,6 +95,8 @@ void PathTracer::applySettings(const Settings& next) {
   apply(change);
 }
 
+const KeyStage& PathTracer::keyStage() const { return pathSorter_->keys(); }
+
 void PathTracer::setCamera(const Viewpoint& camera) {
   camera_ = camera;
   apply(SettingsChange::cameraMove(settings_));

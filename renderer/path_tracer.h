@@ -18,6 +18,7 @@ namespace raylab {
 
 class VulkanContext;
 class PathSorter;
+class KeyStage;
 class HeatmapPass;
 class RtTracer;
 
@@ -56,6 +57,8 @@ class PathTracer {
   // The heatmap pass: the hovered pixel to read back (setProbe), and for tests its per-pixel values.
   HeatmapPass& heatmap() { return *heatmap_; }
   const HeatmapPass& heatmap() const { return *heatmap_; }
+  // The key stage (grid, length cache) of the path sorter, for tests that check the heatmaps against it.
+  const KeyStage& keyStage() const;
 
   std::vector<uint32_t> readImage() const;          // RGBA8 after tonemapping, row-major, top row first
   std::vector<glm::vec3> readRadiance() const;      // accumulated mean radiance per pixel (linear)

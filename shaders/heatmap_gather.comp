@@ -41,11 +41,12 @@ void widenRange(uint bits) {
   atomicAdd(pc.range.v[RL_HEAT_RANGE_VALUES], 1u);
 }
 
-void writeProbe(uint pixel, uint id, uint key, uint cell) {
+void writeProbe(uint pixel, uint id, uint key, uint cell, uint oct) {
   uint p = pixel * RL_HEAT_PROBE_STRIDE;
   pc.probe.v[p + RL_HEAT_PROBE_PATH] = id;
   pc.probe.v[p + RL_HEAT_PROBE_KEY] = key;
   pc.probe.v[p + RL_HEAT_PROBE_CELL] = cell;
+  pc.probe.v[p + RL_HEAT_PROBE_OCTANT] = oct;
 }
 
 // The cell the probe shows for a sort key: direction keys pack (u, v) 16 bits each, grid cells 10 bits an axis.
@@ -74,7 +75,8 @@ void main() {
   if (pc.view == RL_HEAT_SORT_KEY) {
     uint key = pc.keys.v[i];
     if (key == RL_DEAD_KEY) return;
-    writeProbe(pixel, id, key, pc.hasKeyParams != 0u ? keyProbeCell(pc.keyParams.p, key) : RL_HEAT_NO_CELL);
+    writeProbe(pixel, id, key, pc.hasKeyParams != 0u ? keyProbeCell(pc.keyParams.p, key) : RL_HEAT_NO_CELL,
+               octant(pathDirection(s, i)));
     if (pc.keyColour == RL_HEAT_KEY_RANK) return;  // the rank gather after the sort writes the value
     pc.heat.v[pixel] = key;
     widenRange(key);
@@ -96,7 +98,7 @@ void main() {
       value = cacheValue(P, o, d, pc.view == RL_HEAT_CACHE_VARIANCE);
     }
   }
-  writeProbe(pixel, id, RL_DEAD_KEY, cell);
+  writeProbe(pixel, id, RL_DEAD_KEY, cell, octant(d));
   if (!(value >= 0.0)) {  // the path is here but has no value (empty cache entry, escaped ray, NaN)
     pc.heat.v[pixel] = RL_HEAT_NO_VALUE;
     atomicAdd(pc.range.v[RL_HEAT_RANGE_NO_VALUE], 1u);

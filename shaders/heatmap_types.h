@@ -35,11 +35,12 @@ namespace raylab::gpu {
 #define RL_HEAT_RANGE_NO_VALUE 3u  // pixels given RL_HEAT_NO_VALUE
 #define RL_HEAT_RANGE_SLOTS 4u
 
-// Per pixel, beside the value: what the hover readout shows (path id, sort key, grid cell).
+// Per pixel, beside the value: what the hover readout shows (path id, sort key, grid cell, octant).
 #define RL_HEAT_PROBE_PATH 0u  // path id (RL_DEAD_PATH: no path)
 #define RL_HEAT_PROBE_KEY 1u   // the path's sort key at the shown bounce (RL_DEAD_KEY: none)
 #define RL_HEAT_PROBE_CELL 2u  // sort key view: the key's cell; others: the ray origin's cell (RL_HEAT_NO_CELL: none)
-#define RL_HEAT_PROBE_STRIDE 3u
+#define RL_HEAT_PROBE_OCTANT 3u  // the ray direction's octant (with the origin cell: the cache entry looked up)
+#define RL_HEAT_PROBE_STRIDE 4u
 #define RL_HEAT_NO_CELL 0xFFFFFFFFu
 // A cell packed in one word, 10 bits an axis (SettingLimits::kMaxGridCellsPerAxis = 1024).
 #define RL_HEAT_CELL_BITS 10u

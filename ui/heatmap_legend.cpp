@@ -78,7 +78,7 @@ void drawProbe(const HeatmapProbe& q, const HeatmapStats& h) {
   }
   if (q.hasPath) ImGui::Text("  path id %u", q.pathId);
   if (q.hasKey && h.keyColour == "rank") ImGui::Text("  key %u (0x%08x)", q.key, q.key);
-  if (q.hasCell) ImGui::Text("  %s (%u, %u, %u)", q.cellKind.c_str(), q.cell.x, q.cell.y, q.cell.z);
+  if (q.hasCell) ImGui::Text("  %s (%u, %u, %u), direction octant %u", q.cellKind.c_str(), q.cell.x, q.cell.y, q.cell.z, q.octant);
 }
 
 void drawCounts(const HeatmapStats& h) {
