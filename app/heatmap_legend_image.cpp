@@ -95,7 +95,7 @@ LegendImage withHeatmapLegend(const std::vector<uint32_t>& image, uint32_t width
     c.text(int(l.barLeft), textY, "hit", l.scale);
     c.text(int(l.barRight) - Canvas::textWidth("miss", l.scale), textY, "miss", l.scale);
   } else if (h.keyColour == "cell") {
-    middle += ": key cell x red, y green, z blue";
+    middle += ": key cell x red, y green, z blue (cells in view)";
   } else if (h.keyColour == "hash") {
     middle += ": hashed keys";
   } else {

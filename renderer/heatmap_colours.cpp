@@ -85,6 +85,11 @@ glm::vec3 cellColour(glm::uvec3 cell, glm::uvec3 cells) {
   return 0.15f + 0.8f * f;
 }
 
+glm::vec3 stretchedCellColour(glm::uvec3 cell, glm::uvec3 lo, glm::uvec3 hi) {
+  const glm::uvec3 l = glm::min(lo, cell), h = glm::max(hi, cell);
+  return cellColour(cell - l, h - l + 1u);
+}
+
 glm::vec3 hashColour(uint32_t key) {
   const uint32_t h = pcgHash(key);
   return 0.25f + 0.75f * glm::vec3(float(h & 255u), float((h >> 8) & 255u), float((h >> 16) & 255u)) / 255.0f;
@@ -106,7 +111,7 @@ uint32_t heatmapPixelColour(const HeatmapColouring& c, uint32_t heat) {
   if (c.view == HeatmapView::SortKey && c.keyColour == HeatmapKeyColour::Cell) {
     glm::uvec3 cells(1);
     const glm::uvec3 cell = c.hasGrid ? keyCell(c.strategy, c.grid, heat, cells) : glm::uvec3(0);
-    return packColour(cellColour(cell, cells));
+    return packColour(stretchedCellColour(cell, c.cellLo, c.cellHi));
   }
   if (c.view == HeatmapView::CellHit) return packColour(cellHitColour(std::bit_cast<float>(heat) > 0.5f));
   return packColour(heatmapRamp(heatmapT(std::bit_cast<float>(heat), c.lo, c.hi, c.logScale)));

@@ -21,6 +21,7 @@ void deinterleaveBits(uint32_t key, const uint32_t w[6], uint32_t n, uint32_t ma
 // The cell a live key of `strategy` encodes, and the cells per axis of its space (heatmap_colours.glsl).
 glm::uvec3 keyCell(KeyStrategy strategy, const gpu::GpuKeyGrid& grid, uint32_t key, glm::uvec3& cells);
 glm::vec3 cellColour(glm::uvec3 cell, glm::uvec3 cells);
+glm::vec3 stretchedCellColour(glm::uvec3 cell, glm::uvec3 lo, glm::uvec3 hi);
 glm::vec3 hashColour(uint32_t key);
 glm::vec3 noPathColour();
 glm::vec3 noValueColour();
@@ -37,6 +38,7 @@ struct HeatmapColouring {
   bool hasGrid = false;
   bool logScale = false;
   float lo = 0.0f, hi = 1.0f;  // the colour range used
+  glm::uvec3 cellLo{0}, cellHi{0};  // sort keys by cell: the cells the frame's keys span
 };
 uint32_t heatmapPixelColour(const HeatmapColouring& c, uint32_t heat);
 

@@ -39,9 +39,9 @@ const char* unitOf(HeatmapView view, HeatmapKeyColour keyColour) {
 
 const char* noValueMeaningOf(HeatmapView view) {
   switch (view) {
-    case HeatmapView::CellHit: return "no estimate or escaped (no actual cell)";
+    case HeatmapView::CellHit: return "escaped or no estimate";
     case HeatmapView::CacheMean:
-    case HeatmapView::CacheVariance: return "no cache entry (empty: not learned yet, or reset)";
+    case HeatmapView::CacheVariance: return "no cache entry (unlearned or reset)";
     default: return "";
   }
 }
@@ -84,7 +84,8 @@ void HeatmapPass::beginFrame(VkCommandBuffer cmd, const Settings& settings, VkDe
   }
   if (view_ == HeatmapView::None) return;
   heat_.recordFill(cmd, RL_HEAT_EMPTY);
-  const uint32_t clear[RL_HEAT_RANGE_SLOTS] = {0x7F7FFFFFu, 0u, 0u, 0u};  // min starts at the largest float
+  // Minima start at the largest float (cells: the largest uint), maxima and counts at 0.
+  const uint32_t clear[RL_HEAT_RANGE_SLOTS] = {0x7F7FFFFFu, 0u, 0u, 0u, ~0u, ~0u, ~0u, 0u, 0u, 0u};
   vkCmdUpdateBuffer(cmd, range_.handle(), 0, sizeof(clear), clear);
   computeBarrier(cmd);
 }
@@ -188,6 +189,8 @@ void HeatmapPass::finishFrame(FrameStats& stats) {
     h.frameMin = keyBits ? double(r[RL_HEAT_RANGE_MIN]) : double(std::bit_cast<float>(r[RL_HEAT_RANGE_MIN]));
     h.frameMax = keyBits ? double(r[RL_HEAT_RANGE_MAX]) : double(std::bit_cast<float>(r[RL_HEAT_RANGE_MAX]));
   }
+  for (int a = 0; a < 3; ++a)
+    colouring_.cellLo[a] = r[RL_HEAT_RANGE_CELL_MIN + a], colouring_.cellHi[a] = r[RL_HEAT_RANGE_CELL_MAX + a];
   h.rangeLocked = rangeFixed_;
   if (!rangeFixed_) colouring_.lo = float(h.frameMin), colouring_.hi = float(h.frameMax);
   h.min = rangeFixed_ ? colouring_.lo : h.frameMin;

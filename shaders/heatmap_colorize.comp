@@ -28,7 +28,9 @@ void main() {
   } else if (pc.view == RL_HEAT_SORT_KEY && pc.keyColour == RL_HEAT_KEY_CELL) {
     uvec3 cells = uvec3(1u);
     uvec3 cell = pc.hasKeyParams != 0u ? keyCell(pc.strategy, pc.keyParams.p.grid, bits, cells) : uvec3(0u);
-    c = cellColour(cell, cells);
+    uvec3 lo = uvec3(pc.range.v[RL_HEAT_RANGE_CELL_MIN], pc.range.v[RL_HEAT_RANGE_CELL_MIN + 1u], pc.range.v[RL_HEAT_RANGE_CELL_MIN + 2u]);
+    uvec3 hi = uvec3(pc.range.v[RL_HEAT_RANGE_CELL_MAX], pc.range.v[RL_HEAT_RANGE_CELL_MAX + 1u], pc.range.v[RL_HEAT_RANGE_CELL_MAX + 2u]);
+    c = stretchedCellColour(cell, lo, hi);
   } else if (pc.view == RL_HEAT_CELL_HIT) {
     c = cellHitColour(uintBitsToFloat(bits) > 0.5);
   } else {  // scalar views, and sort-key ranks (bits: the rank as a float)

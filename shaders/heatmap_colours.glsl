@@ -87,6 +87,13 @@ vec3 cellColour(uvec3 cell, uvec3 cells) {
   return 0.15 + 0.8 * f;
 }
 
+// cellColour over the cells [lo, hi] the frame's keys span (per axis), so the view's own part of the grid
+// gets the whole colour range.
+vec3 stretchedCellColour(uvec3 cell, uvec3 lo, uvec3 hi) {
+  uvec3 l = min(lo, cell), h = max(hi, cell);
+  return cellColour(cell - l, h - l + 1u);
+}
+
 // Equal keys share a colour; nothing else can be read from it.
 vec3 hashColour(uint key) {
   uint h = pcgHash(key);

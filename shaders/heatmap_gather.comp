@@ -78,6 +78,14 @@ void main() {
     writeProbe(pixel, id, key, pc.hasKeyParams != 0u ? keyProbeCell(pc.keyParams.p, key) : RL_HEAT_NO_CELL,
                octant(pathDirection(s, i)));
     if (pc.keyColour == RL_HEAT_KEY_RANK) return;  // the rank gather after the sort writes the value
+    if (pc.keyColour == RL_HEAT_KEY_CELL && pc.hasKeyParams != 0u) {
+      uvec3 cells;
+      uvec3 c = keyCell(pc.strategy, pc.keyParams.p.grid, key, cells);
+      for (uint a = 0u; a < 3u; ++a) {
+        atomicMin(pc.range.v[RL_HEAT_RANGE_CELL_MIN + a], c[a]);
+        atomicMax(pc.range.v[RL_HEAT_RANGE_CELL_MAX + a], c[a]);
+      }
+    }
     pc.heat.v[pixel] = key;
     widenRange(key);
     return;

@@ -33,7 +33,11 @@ namespace raylab::gpu {
 #define RL_HEAT_RANGE_MAX 1u       // ... of the largest
 #define RL_HEAT_RANGE_VALUES 2u    // pixels given a value
 #define RL_HEAT_RANGE_NO_VALUE 3u  // pixels given RL_HEAT_NO_VALUE
-#define RL_HEAT_RANGE_SLOTS 4u
+// Sort keys by cell: the smallest and largest cell coordinate per axis the frame's keys encode (3 words
+// each), so the position colours stretch over the part of the grid the view sees, not the whole scene.
+#define RL_HEAT_RANGE_CELL_MIN 4u
+#define RL_HEAT_RANGE_CELL_MAX 7u
+#define RL_HEAT_RANGE_SLOTS 10u
 
 // Per pixel, beside the value: what the hover readout shows (path id, sort key, grid cell, octant).
 #define RL_HEAT_PROBE_PATH 0u  // path id (RL_DEAD_PATH: no path)

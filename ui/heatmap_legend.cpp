@@ -101,7 +101,7 @@ const char* heatmapDescription(HeatmapView view, HeatmapKeyColour keyColour) {
     case HeatmapView::None: return "the render";
     case HeatmapView::SortKey:
       switch (keyColour) {
-        case HeatmapKeyColour::Cell: return "sort key per pixel, coloured by the cell it encodes (x red, y green, z blue)";
+        case HeatmapKeyColour::Cell: return "sort key per pixel, coloured by the cell it encodes (x red, y green, z blue over the cells in view)";
         case HeatmapKeyColour::Rank: return "sort key per pixel, by its rank among the bounce's sorted keys";
         case HeatmapKeyColour::Hash: return "sort key per pixel, hashed: equal keys share a colour";
       }

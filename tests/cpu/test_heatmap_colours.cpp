@@ -105,6 +105,9 @@ TEST(HeatmapColours, CellColourFollowsPosition) {
   const float step = cellColour({1, 0, 0}, cells).r - cellColour({0, 0, 0}, cells).r;
   EXPECT_NEAR(step, 0.8f / 16, 1e-6f);
   EXPECT_EQ(cellColour({99, 99, 99}, cells), cellColour({15, 7, 3}, cells)) << "outside cells clamp";
+  // Stretched over the cells in view: [5, 9] on x spans the colour range as [0, 4] of 5 cells would.
+  EXPECT_EQ(stretchedCellColour({5, 2, 7}, {5, 2, 7}, {9, 2, 7}), cellColour({0, 0, 0}, {5, 1, 1}));
+  EXPECT_EQ(stretchedCellColour({9, 2, 7}, {5, 2, 7}, {9, 2, 7}), cellColour({4, 0, 0}, {5, 1, 1}));
 }
 
 TEST(HeatmapColours, LinearAndLogScales) {

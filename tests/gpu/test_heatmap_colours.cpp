@@ -192,4 +192,37 @@ TEST_F(HeatmapColoursGpu, NoPathAndNoCacheEntryAreCountedAsTheCpuReference) {
     }
 }
 
+// The hover readout: the probed pixel's value, path, key and cell come back with the frame, equal to the
+// pixel's words in the full buffers; without a probe nothing is read back.
+TEST_F(HeatmapColoursGpu, ProbeReadsTheHoveredPixel) {
+  Scene scene = makeTemple();
+  Settings s = heatSettings(HeatmapView::SortKey, KeyStrategy::Fixed);
+  PathTracer tracer(ctx(), scene, s, *scene.findViewpoint("hall"));
+  const glm::uvec2 pixel(40, 20);
+  tracer.heatmap().setProbe(pixel);
+  tracer.renderFrame();
+  const size_t i = size_t(pixel.y) * s.width + pixel.x;
+  const std::vector<uint32_t> heat = tracer.heatmap().readValues(), probes = tracer.heatmap().readProbes();
+  const HeatmapProbe& q = tracer.stats().heatmap.probe;
+  ASSERT_TRUE(q.valid);
+  EXPECT_EQ(glm::uvec2(q.x, q.y), pixel);
+  ASSERT_NE(heat[i], RL_HEAT_EMPTY) << "pick a pixel the hall's walls cover";
+  EXPECT_EQ(q.state, "value");
+  EXPECT_EQ(q.value, double(heat[i]));
+  EXPECT_TRUE(q.hasPath && q.hasKey && q.hasCell);
+  EXPECT_EQ(q.pathId, probes[i * RL_HEAT_PROBE_STRIDE + RL_HEAT_PROBE_PATH]);
+  EXPECT_EQ(q.key, heat[i]);
+  glm::uvec3 cells;
+  EXPECT_EQ(q.cell, keyCell(KeyStrategy::Fixed, tracer.keyStage().grid().gpu, heat[i], cells));
+  // A scalar view's probe: the value as a float, the ray origin's cell.
+  s.heatmap = HeatmapView::TraversalSteps;
+  tracer.applySettings(s);
+  tracer.renderFrame();
+  EXPECT_EQ(tracer.stats().heatmap.probe.value, double(std::bit_cast<float>(tracer.heatmap().readValues()[i])));
+  EXPECT_EQ(tracer.stats().heatmap.probe.cellKind, "origin cell");
+  tracer.heatmap().setProbe(std::nullopt);
+  tracer.renderFrame();
+  EXPECT_FALSE(tracer.stats().heatmap.probe.valid);
+}
+
 }  // namespace raylab::test
