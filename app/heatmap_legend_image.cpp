@@ -71,7 +71,7 @@ LegendLayout LegendLayout::forWidth(uint32_t width) {
   LegendLayout l;
   l.scale = width >= 640 ? 2 : 1;
   const uint32_t s = l.scale;
-  l.height = 44 * s;
+  l.height = 53 * s;
   l.barTop = 3 * s, l.barBottom = 13 * s;
   const uint32_t pad = std::min(4 * s, width / 4);
   l.barLeft = pad, l.barRight = width > pad ? width - pad : width;
@@ -95,9 +95,9 @@ LegendImage withHeatmapLegend(const std::vector<uint32_t>& image, uint32_t width
     c.text(int(l.barLeft), textY, "hit", l.scale);
     c.text(int(l.barRight) - Canvas::textWidth("miss", l.scale), textY, "miss", l.scale);
   } else if (h.keyColour == "cell") {
-    middle += ": key cell x red, y green, z blue (cells in view)";
+    middle = "key cell: x red, y green, z blue";
   } else if (h.keyColour == "hash") {
-    middle += ": hashed keys";
+    middle = "hashed keys: equal keys alike";
   } else {
     c.text(int(l.barLeft), textY, number(h.min), l.scale);
     const std::string hi = number(h.max);
@@ -105,15 +105,15 @@ LegendImage withHeatmapLegend(const std::vector<uint32_t>& image, uint32_t width
     middle = h.unit + " (" + h.scale + (h.rangeLocked ? ", fixed range)" : ", frame's range)");
   }
   c.text(int(l.barLeft), textY + 9 * s, middle, l.scale);
-  // The colours that are not values, with their shares of the image.
-  int x = int(l.barLeft);
-  const int swatchY = top + 34 * s, box = 7 * s;
+  // The colours that are not values, with their shares of the image, one a row.
+  const int x = int(l.barLeft), box = 7 * s;
+  int swatchY = top + 34 * s;
   auto swatch = [&](const glm::vec3& colour, const std::string& text, uint32_t count) {
     char pct[16];
     std::snprintf(pct, sizeof(pct), " %.1f%%", h.pixels ? 100.0 * count / h.pixels : 0.0);
     c.fill(x, swatchY, x + box, swatchY + box, packColour(colour));
-    x += box + 2 * s;
-    x += c.text(x, swatchY, text + pct, l.scale) + 8 * s;
+    c.text(x + box + 2 * s, swatchY, text + pct, l.scale);
+    swatchY += 9 * s;
   };
   swatch(noPathColour(), "no path", h.pixelsWithoutPath);
   if (!h.noValueMeaning.empty()) swatch(noValueColour(), h.noValueMeaning, h.pixelsWithoutValue);

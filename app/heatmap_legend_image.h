@@ -23,7 +23,7 @@ struct LegendLayout {
   uint32_t height = 0;
   uint32_t barTop = 0, barBottom = 0;  // rows of the bar, relative to the strip
   uint32_t barLeft = 0, barRight = 0;  // columns [barLeft, barRight)
-  uint32_t textTop = 0;                // the min / unit / max row
+  uint32_t textTop = 0;                // the min / max row; the unit below, then a swatch a row
   static LegendLayout forWidth(uint32_t width);
 };
 

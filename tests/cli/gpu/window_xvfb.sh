@@ -195,7 +195,7 @@ def variance(pixels):
 
 strategies, heatmaps, headless = sys.argv[1].split(), sys.argv[2].split(), sys.argv[3]
 shots = {name: read_png('shots/%s.png' % name) for name in ['render', 'window', 'again'] + ['heat-' + h for h in heatmaps]}
-LEGEND = 44  # a heatmap render carries its legend strip below the image (app/heatmap_legend_image.h, 160 wide)
+LEGEND = 53  # a heatmap render carries its legend strip below the image (app/heatmap_legend_image.h, 160 wide)
 for name, (w, h, px) in shots.items():
     heat = name.startswith('heat-') and name != 'heat-none'
     assert (w, h) == (160, 90 + (LEGEND if heat else 0)), '%s is %dx%d, not the window size 160x90' % (name, w, h)
