@@ -69,6 +69,24 @@ E parseEnum(const std::string& flag, const std::string& text, std::optional<E> (
   return *v;
 }
 
+// "auto" (each frame's own range) or "MIN:MAX" (locked); the interval is checked as every source's is.
+void parseHeatmapRange(const std::string& text, Settings& s) {
+  if (text == "auto") {
+    s.heatmapRange.locked = false;
+    return;
+  }
+  size_t colon = text.find(':');
+  if (colon == std::string::npos) throw UsageError("--heatmap-range expects auto or MIN:MAX (e.g. 0:200), got '" + text + "'");
+  HeatmapRange r{true, parseFloat("--heatmap-range min", text.substr(0, colon), 0.0f, L::kMaxHeatmapValue),
+                 parseFloat("--heatmap-range max", text.substr(colon + 1), 0.0f, L::kMaxHeatmapValue)};
+  try {
+    checkHeatmapRange(r);
+  } catch (const SettingsError& e) {
+    throw UsageError(e.what());
+  }
+  s.heatmapRange = r;
+}
+
 }  // namespace
 
 CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vector<std::string>* rest) {
@@ -107,6 +125,11 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
                                "none|sort-key|cell-hit|traversal-steps|warp-efficiency|cache-mean|cache-variance");
        }},
       {"--heatmap-bounce", [&](const std::string& v) { s.heatmapBounce = parseUint("--heatmap-bounce", v, 0, L::kMaxBounces - 1); }},
+      {"--heatmap-key-colour", [&](const std::string& v) {
+         s.heatmapKeyColour = parseEnum("--heatmap-key-colour", v, &parseHeatmapKeyColour, "cell|rank|hash");
+       }},
+      {"--heatmap-scale", [&](const std::string& v) { s.heatmapScale = parseEnum("--heatmap-scale", v, &parseHeatmapScale, "linear|log"); }},
+      {"--heatmap-range", [&](const std::string& v) { parseHeatmapRange(v, s); }},
       {"--device", [&](const std::string& v) { o.device = v; }},
       {"--out", [&](const std::string& v) { o.out = v; }},
       {"--stats", [&](const std::string& v) { o.statsPath = v; }},
@@ -163,6 +186,11 @@ std::string commonOptionsHelp() {
          "  --heatmap VIEW         show sort-key|cell-hit|traversal-steps|warp-efficiency|cache-mean|\n"
          "                         cache-variance per pixel instead of the render\n"
          "  --heatmap-bounce N     bounce the heatmap shows (default 1; 0 = camera rays)\n"
+         "  --heatmap-key-colour cell|rank|hash  sort-key colours: the key's grid cell as a position colour\n"
+         "                         (default), its rank among the sorted keys, or a hash (equal keys alike)\n"
+         "  --heatmap-scale linear|log  value to colour mapping of scalar heatmaps (default linear)\n"
+         "  --heatmap-range auto|MIN:MAX  colour range of scalar heatmaps: each frame's own (default;\n"
+         "                         warp-efficiency 0..1), or locked to MIN..MAX\n"
          "  --count-simt           count active subgroup lanes in traversal (slower; not for timing)\n"
          "  --device NAME          Vulkan device whose name contains NAME\n"
          "  --validate             enable the Khronos validation layer\n"

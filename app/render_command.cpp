@@ -10,6 +10,7 @@
 
 #include "app/cli_options.h"
 #include "app/command_errors.h"
+#include "app/heatmap_legend_image.h"
 #include "app/scene_setup.h"
 #include "app/sidecar.h"
 #include "renderer/heatmap_rules.h"
@@ -97,7 +98,13 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
     rays += st.raysTraced;
     if (!options.statsPath.empty()) frames.push_back(toJson(st));
   }
-  writePng(options.out, s.width, s.height, tracer.readImage());
+  // A heatmap carries its legend, and says headless what it shows (or why it shows nothing).
+  const HeatmapStats& heat = tracer.stats().heatmap;
+  const LegendImage image = withHeatmapLegend(tracer.readImage(), s.width, s.height, heat);
+  writePng(options.out, image.width, image.height, image.rgba);
+  if (!heat.view.empty()) std::printf("heatmap %s\n", heatmapLegendLine(heat).c_str());
+  if (!heat.emptyReason.empty())
+    std::fprintf(stderr, "raylab render: heatmap %s shows nothing: %s\n", heat.view.c_str(), heat.emptyReason.c_str());
   double seconds = (gpuMs > 0.0 ? gpuMs : wallMs) * 1e-3;
   std::printf("wrote %s (%ux%u, %u spp, %s, %s, %s tracer) in %.2f s wall; %.3g rays/s\n",
               std::filesystem::absolute(options.out).string().c_str(), s.width,
@@ -113,6 +120,7 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
                           {"bvh_nodes", tracer.scene().bvhStats().nodeCount},
                           {"bvh_build_ms", tracer.scene().bvhStats().buildMs},
                           {"settings", toJson(s)},
+                          {"heatmap", toJson(heat)},
                           {"total_gpu_ms", gpuMs},
                           {"total_wall_ms", wallMs},
                           {"rays_traced", rays},

@@ -39,6 +39,9 @@ const std::map<std::string, Copy>& fieldsOfFlag() {
       {"count-simt", [](Settings& t, const Settings& f) { t.countSimt = f.countSimt; }},
       {"heatmap", [](Settings& t, const Settings& f) { t.heatmap = f.heatmap; }},
       {"heatmap-bounce", [](Settings& t, const Settings& f) { t.heatmapBounce = f.heatmapBounce; }},
+      {"heatmap-key-colour", [](Settings& t, const Settings& f) { t.heatmapKeyColour = f.heatmapKeyColour; }},
+      {"heatmap-scale", [](Settings& t, const Settings& f) { t.heatmapScale = f.heatmapScale; }},
+      {"heatmap-range", [](Settings& t, const Settings& f) { t.heatmapRange = f.heatmapRange; }},
   };
   return table;
 }

@@ -43,6 +43,7 @@ nlohmann::json makeSidecar(const SidecarContent& c) {
           {"device", toJson(c.device)},
           {"settings", toJson(c.settings)},
           {"camera", cameraJson(c.camera)},
+          {"heatmap", toJson(c.stats.heatmap)},  // the legend of a heatmap image: range, unit, scale
           {"stats", toJson(c.stats)}};
 }
 

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "renderer/heatmap_stats.h"
+
 namespace raylab {
 
 struct StageTime {
@@ -48,10 +50,7 @@ struct FrameStats {
   // Set when the figures of our traversal loop (SIMT lane counts, traversal steps, virtual warp
   // efficiency) do not exist for this frame: "not available with the rt tracer". Never reported as zeros.
   std::string traversalStatsUnavailable;
-  // Value range of the heatmap shown this frame, for the colour legend (unit names the quantity).
-  double heatmapMin = 0.0;
-  double heatmapMax = 0.0;
-  std::string heatmapUnit;
+  HeatmapStats heatmap;  // the heatmap shown this frame: range, unit, pixel counts, the hovered pixel
 
   // GPU time of the frame no stage scope covers (barriers between scopes, driver work): shown as its own
   // bar, so the bars always add up to frameMs.

@@ -95,6 +95,8 @@ void PathTracer::applySettings(const Settings& next) {
   apply(change);
 }
 
+const KeyStage& PathTracer::keyStage() const { return pathSorter_->keys(); }
+
 void PathTracer::setCamera(const Viewpoint& camera) {
   camera_ = camera;
   apply(SettingsChange::cameraMove(settings_));
@@ -107,7 +109,9 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
   // Every command of the frame is inside a timed stage, so the stages account for the frame's GPU time.
   recordStage(cmd, &timer_, "setup", [&] {
     recordFrameBlock(cmd);
-    heatmap_->beginFrame(cmd, settings_, settings_.sorts() && pathSorter_->keys().hasCache());
+    const bool sorting = settings_.sorts();
+    heatmap_->beginFrame(cmd, settings_, sorting ? pathSorter_->keys().paramsAddress() : 0,
+                         sorting ? &pathSorter_->keys().grid().gpu : nullptr, sorting && pathSorter_->keys().hasCache());
   });
   const gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0};
   if (settings_.kernel == Kernel::Megakernel)
@@ -166,7 +170,6 @@ void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush&
 void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
   const uint32_t n = buffers_->pathCount;
   const bool sorting = settings_.sorts();
-  const VkDeviceAddress keyParams = sorting ? pathSorter_->keys().paramsAddress() : 0;
   const ComputePipeline& trace = settings_.countSimt ? traceCounting_ : trace_;
   const VkBuffer live = buffers_->live.handle();
   const VkDeviceSize liveDispatch = PathBuffers::kLiveDispatchOffset;
@@ -184,7 +187,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
     const bool sortedBefore = sorting && b > 0 && framePlan_.sortAfter[b - 1];
     if (sorting)
       pathSorter_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, sortedBefore, detailedStats_, &timer_);
-    heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, keyParams, &timer_);
+    heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, &timer_);
     recordStage(cmd, &timer_, "shade", [&] {
       if (usesRt())
         rt_->shade(cmd, push, n);
@@ -193,8 +196,9 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
     });
     if (sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b]) {
       pathSorter_->recordKeys(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
-      heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, keyParams, &timer_);
+      heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, &timer_);
       push.stateSet = pathSorter_->recordSortAndGather(cmd, *buffers_, push.stateSet, &timer_);
+      heatmap_->afterSort(cmd, *buffers_, push.stateSet, b, &timer_);
     }
   }
   timer_.setBounce(-1);
@@ -258,7 +262,7 @@ const FrameStats& PathTracer::finishFrame(double wallMs) {
     stats_.traversalStatsUnavailable = "not available with the rt tracer";
     // The step heatmaps would show the zeros the rt stages write: the legend says why instead.
     if (settings_.heatmap == HeatmapView::TraversalSteps || settings_.heatmap == HeatmapView::WarpEfficiency)
-      stats_.heatmapUnit = "traversal steps: not available with the rt tracer";
+      stats_.heatmap.emptyReason = "traversal steps: not available with the rt tracer";
   }
   double seconds = (stats_.frameMs > 0.0 ? stats_.frameMs : wallMs) * 1e-3;
   stats_.raysPerSecond = seconds > 0.0 ? static_cast<double>(stats_.raysTraced) / seconds : 0.0;

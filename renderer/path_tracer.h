@@ -18,6 +18,7 @@ namespace raylab {
 
 class VulkanContext;
 class PathSorter;
+class KeyStage;
 class HeatmapPass;
 class RtTracer;
 
@@ -52,6 +53,12 @@ class PathTracer {
   uint32_t height() const { return settings_.height; }
   const GpuSceneData& scene() const { return *scene_; }
   const GpuBuffer& imageBuffer() const { return buffers_->image; }
+
+  // The heatmap pass: the hovered pixel to read back (setProbe), and for tests its per-pixel values.
+  HeatmapPass& heatmap() { return *heatmap_; }
+  const HeatmapPass& heatmap() const { return *heatmap_; }
+  // The key stage (grid, length cache) of the path sorter, for tests that check the heatmaps against it.
+  const KeyStage& keyStage() const;
 
   std::vector<uint32_t> readImage() const;          // RGBA8 after tonemapping, row-major, top row first
   std::vector<glm::vec3> readRadiance() const;      // accumulated mean radiance per pixel (linear)

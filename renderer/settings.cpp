@@ -25,6 +25,9 @@ const std::pair<HeatmapView, const char*> kHeatmapNames[] = {
     {HeatmapView::CellHit, "cell-hit"},   {HeatmapView::TraversalSteps, "traversal-steps"},
     {HeatmapView::WarpEfficiency, "warp-efficiency"}, {HeatmapView::CacheMean, "cache-mean"},
     {HeatmapView::CacheVariance, "cache-variance"}};
+const std::pair<HeatmapKeyColour, const char*> kKeyColourNames[] = {
+    {HeatmapKeyColour::Cell, "cell"}, {HeatmapKeyColour::Rank, "rank"}, {HeatmapKeyColour::Hash, "hash"}};
+const std::pair<HeatmapScale, const char*> kScaleNames[] = {{HeatmapScale::Linear, "linear"}, {HeatmapScale::Log, "log"}};
 const std::pair<SortPolicy, const char*> kPolicyNames[] = {
     {SortPolicy::Always, "always"}, {SortPolicy::Never, "never"}, {SortPolicy::Auto, "auto"}};
 const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},
@@ -68,6 +71,10 @@ const std::vector<HeatmapView>& allHeatmapViews() {
   }();
   return all;
 }
+std::string toString(HeatmapKeyColour c) { return nameOf(kKeyColourNames, c); }
+std::string toString(HeatmapScale s) { return nameOf(kScaleNames, s); }
+std::optional<HeatmapKeyColour> parseHeatmapKeyColour(const std::string& n) { return parse(kKeyColourNames, n); }
+std::optional<HeatmapScale> parseHeatmapScale(const std::string& n) { return parse(kScaleNames, n); }
 std::string toString(SortAlgorithm s) { return nameOf(kSortNames, s); }
 std::string toString(Kernel k) { return nameOf(kKernelNames, k); }
 std::optional<KeyStrategy> parseKeyStrategy(const std::string& n) { return parse(kStrategyNames, n); }

@@ -31,12 +31,27 @@ enum class SortAlgorithm { None, Bitonic, Radix };
 // What the display shows instead of the render (per pixel, for one bounce).
 enum class HeatmapView {
   None,            // the render itself
-  SortKey,         // the path's sort key, hashed to a colour so equal keys share one
+  SortKey,         // the path's sort key, coloured by Settings::heatmapKeyColour
   CellHit,         // estimated end-point cell equals the actual cell (green) or not (red)
   TraversalSteps,  // BVH traversal loop iterations
   WarpEfficiency,  // efficiency of the 32-wide warp this path was traced in, over its pixels
   CacheMean,       // length-cache mean at the path's (cell, octant)
   CacheVariance,   // length-cache variance there
+};
+// How the sort-key view colours a key: by the grid cell the key encodes (position colours: neighbouring
+// cells, neighbouring colours), by its rank among the bounce's sorted keys (a ramp from first to last), or
+// hashed (equal keys share a colour, nothing else reads from it).
+enum class HeatmapKeyColour { Cell, Rank, Hash };
+// How a scalar view's value maps onto the colour ramp between the range's ends.
+enum class HeatmapScale { Linear, Log };
+// The colour range of scalar views (traversal steps, warp efficiency, cache mean and variance). Unlocked it
+// follows each frame's values (warp efficiency: always 0..1); locked it stays [min, max] whatever a frame
+// holds, so views of different strategies compare colour for colour.
+struct HeatmapRange {
+  bool locked = false;
+  float min = 0.0f;
+  float max = 1.0f;
+  bool operator==(const HeatmapRange&) const = default;
 };
 enum class Kernel { Wavefront, Megakernel };
 // Who traverses: our BVH in compute shaders, or the driver through VK_KHR_ray_tracing_pipeline.
@@ -64,6 +79,10 @@ std::string toString(SortPolicy p);
 std::optional<SortPolicy> parseSortPolicy(const std::string& name);
 std::string keyStrategyNames();  // "none|dead-last|fixed|..."
 std::string toString(HeatmapView v);
+std::string toString(HeatmapKeyColour c);
+std::string toString(HeatmapScale s);
+std::optional<HeatmapKeyColour> parseHeatmapKeyColour(const std::string& name);
+std::optional<HeatmapScale> parseHeatmapScale(const std::string& name);
 std::optional<HeatmapView> parseHeatmapView(const std::string& name);
 const std::vector<HeatmapView>& allHeatmapViews();
 
@@ -93,6 +112,7 @@ struct SettingLimits {
   static constexpr float kMinEmaAlpha = 0.001f;
   static constexpr float kMaxEmaAlpha = 1.0f;
   static constexpr float kMaxGaussOutlier = 100.0f;
+  static constexpr float kMaxHeatmapValue = 1e30f;  // a locked heatmap range's ends
 };
 
 struct Settings {
@@ -129,6 +149,9 @@ struct Settings {
   bool countSimt = false;  // subgroup-ballot counting in the traversal loop (not for timed runs)
   HeatmapView heatmap = HeatmapView::None;
   uint32_t heatmapBounce = 1;  // which bounce the heatmap shows (0 = camera rays)
+  HeatmapKeyColour heatmapKeyColour = HeatmapKeyColour::Cell;
+  HeatmapScale heatmapScale = HeatmapScale::Linear;
+  HeatmapRange heatmapRange;
 
   bool sorts() const { return kernel == Kernel::Wavefront && strategy != KeyStrategy::None && sort != SortAlgorithm::None; }
   // SER runs only in the rt megakernel; elsewhere the setting is kept but does nothing.

@@ -42,6 +42,13 @@ void checkUint(const NumberRange& r, double v, const std::string& text) {
   }
 }
 
+void checkHeatmapRange(const HeatmapRange& r) {
+  checkFloat(ranges::heatmapRangeMin, r.min, number(r.min));
+  checkFloat(ranges::heatmapRangeMax, r.max, number(r.max));
+  if (!(r.min < r.max))
+    throw SettingsError("--heatmap-range min (" + number(r.min) + ") must be below max (" + number(r.max) + ")");
+}
+
 std::optional<std::string> settingsError(const Settings& s) {
   namespace R = ranges;
   try {
@@ -62,6 +69,8 @@ std::optional<std::string> settingsError(const Settings& s) {
     if (!std::isinf(s.gaussReset) || s.gaussReset < 0) f(R::gaussReset, s.gaussReset);
     u(R::sortBits, s.sortBits);
     u(R::heatmapBounce, s.heatmapBounce);
+    // An unlocked range is not used (the frame's own is), but it is still a range a lock would use.
+    checkHeatmapRange(s.heatmapRange);
   } catch (const SettingsError& e) {
     return e.what();
   }

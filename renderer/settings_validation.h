@@ -40,6 +40,8 @@ inline constexpr NumberRange gaussOutlier{"--gauss-outlier", 0, L::kMaxGaussOutl
 inline constexpr NumberRange gaussReset{"--gauss-reset", 0, 3.0e38};
 inline constexpr NumberRange sortBits{"--sort-bits", 0, 32};
 inline constexpr NumberRange heatmapBounce{"--heatmap-bounce", 0, L::kMaxBounces - 1};
+inline constexpr NumberRange heatmapRangeMin{"--heatmap-range min", 0, L::kMaxHeatmapValue};
+inline constexpr NumberRange heatmapRangeMax{"--heatmap-range max", 0, L::kMaxHeatmapValue};
 }  // namespace ranges
 
 // A number as messages write it: whole numbers in full, others to float precision (0.001 reads 0.001).
@@ -50,6 +52,9 @@ std::string outOfRangeMessage(const NumberRange& r, const std::string& got);
 // documented limits themselves, e.g. --ema-alpha 0.001, are accepted).
 void checkFloat(const NumberRange& r, double v, const std::string& text);
 void checkUint(const NumberRange& r, double v, const std::string& text);
+
+// A locked heatmap range must be a non-empty interval: "--heatmap-range min (5) must be below max (2)".
+void checkHeatmapRange(const HeatmapRange& r);
 
 // The first problem of `s` (a field outside its range, too many paths per frame), or nothing.
 std::optional<std::string> settingsError(const Settings& s);

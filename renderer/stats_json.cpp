@@ -39,6 +39,9 @@ json toJson(const Settings& s) {
       {"count_simt", s.countSimt},
       {"heatmap", toString(s.heatmap)},
       {"heatmap_bounce", s.heatmapBounce},
+      {"heatmap_key_colour", toString(s.heatmapKeyColour)},
+      {"heatmap_scale", toString(s.heatmapScale)},
+      {"heatmap_range", {{"locked", s.heatmapRange.locked}, {"min", s.heatmapRange.min}, {"max", s.heatmapRange.max}}},
   };
 }
 
@@ -126,11 +129,55 @@ Settings settingsFromJson(const json& j) {
       s.heatmap = *view;
     }
     if (j.contains("heatmap_bounce")) s.heatmapBounce = uintAt("heatmap_bounce", j.at("heatmap_bounce"), R::heatmapBounce);
+    // Older sidecars have no heatmap colouring: they hashed keys on a linear, per-frame range.
+    if (j.contains("heatmap_key_colour")) {
+      auto colour = parseHeatmapKeyColour(j.at("heatmap_key_colour").get<std::string>());
+      if (!colour) throw SettingsError("settings: unknown heatmap_key_colour (cell|rank|hash)");
+      s.heatmapKeyColour = *colour;
+    } else if (j.contains("heatmap")) {
+      s.heatmapKeyColour = HeatmapKeyColour::Hash;
+    }
+    if (j.contains("heatmap_scale")) {
+      auto scale = parseHeatmapScale(j.at("heatmap_scale").get<std::string>());
+      if (!scale) throw SettingsError("settings: unknown heatmap_scale (linear|log)");
+      s.heatmapScale = *scale;
+    }
+    if (j.contains("heatmap_range")) {
+      const json& r = j.at("heatmap_range");
+      if (!r.is_object()) throw SettingsError("settings: 'heatmap_range' must be {locked, min, max}, got " + r.dump());
+      s.heatmapRange.locked = r.at("locked").get<bool>();
+      auto end = [&](const char* key, const NumberRange& range) {
+        double d = numberOf(key, r.at(key));
+        checkFloat(range, d, formatNumber(d));
+        return static_cast<float>(d);
+      };
+      s.heatmapRange.min = end("min", R::heatmapRangeMin);
+      s.heatmapRange.max = end("max", R::heatmapRangeMax);
+    }
   } catch (const json::exception& e) {
     throw SettingsError(std::string("settings: ") + e.what());
   }
   validateSettings(s);  // what no single field shows (paths per frame)
   return s;
+}
+
+json toJson(const HeatmapStats& h) {
+  if (h.view.empty()) return nullptr;
+  json j = {{"view", h.view},
+            {"bounce", h.bounce},
+            {"range", json::array({h.min, h.max})},
+            {"range_locked", h.rangeLocked},
+            {"frame_range", json::array({h.frameMin, h.frameMax})},
+            {"unit", h.unit},
+            {"scale", h.scale},
+            {"key_colour", h.keyColour.empty() ? json(nullptr) : json(h.keyColour)},
+            {"pixels", h.pixels},
+            {"pixels_with_value", h.pixelsWithValue},
+            {"pixels_without_path", h.pixelsWithoutPath},
+            {"pixels_without_value", h.pixelsWithoutValue}};
+  if (!h.noValueMeaning.empty()) j["no_value_means"] = h.noValueMeaning;
+  if (!h.emptyReason.empty()) j["empty_reason"] = h.emptyReason;
+  return j;
 }
 
 json toJson(const FrameStats& s) {
@@ -170,7 +217,8 @@ json toJson(const FrameStats& s) {
           {"scene_bytes", s.sceneBytes},
           {"acceleration_structure_bytes", s.accelerationStructureBytes},
           {"stages", stages},
-          {"bounces", bounces}};
+          {"bounces", bounces},
+          {"heatmap", toJson(s.heatmap)}};
 }
 
 json toJson(const DeviceInfo& d) {

@@ -15,6 +15,8 @@ nlohmann::json toJson(const Settings& s);
 // ranges and messages every source of Settings is checked with (settings_validation.h).
 Settings settingsFromJson(const nlohmann::json& j);
 nlohmann::json toJson(const FrameStats& s);
+// The heatmap shown: {view, bounce, range: [min, max], unit, scale, key_colour, ...}; null without one.
+nlohmann::json toJson(const HeatmapStats& h);
 nlohmann::json toJson(const DeviceInfo& d);
 
 }  // namespace raylab

@@ -5,66 +5,107 @@
 
 #include <imgui.h>
 
+#include "renderer/heatmap_colours.h"
 #include "renderer/heatmap_rules.h"
 
 namespace raylab {
 namespace {
 
 ImU32 toColor(const glm::vec3& c) {
-  glm::vec3 v = glm::clamp(c, 0.0f, 1.0f) * 255.0f;
-  return IM_COL32(int(v.r), int(v.g), int(v.b), 255);
+  uint32_t p = packColour(c);  // the bytes the image holds: R low, as ImU32 is
+  return ImU32(p);
 }
 
-void swatch(ImU32 color, const char* text) {
+void swatch(const glm::vec3& colour, const char* text) {
   ImVec2 p = ImGui::GetCursorScreenPos();
   float h = ImGui::GetTextLineHeight();
-  ImGui::GetWindowDrawList()->AddRectFilled(p, ImVec2(p.x + h, p.y + h), color);
+  ImGui::GetWindowDrawList()->AddRectFilled(p, ImVec2(p.x + h, p.y + h), toColor(colour));
   ImGui::GetWindowDrawList()->AddRect(p, ImVec2(p.x + h, p.y + h), IM_COL32(150, 150, 150, 255));
   ImGui::Dummy(ImVec2(h, h));
   ImGui::SameLine();
   ImGui::TextUnformatted(text);
 }
 
-void drawRamp(const FrameStats& stats) {
+void drawRamp(const HeatmapStats& h) {
   const float width = 260.0f, height = 14.0f;
   ImVec2 p = ImGui::GetCursorScreenPos();
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const int steps = 32;
   for (int i = 0; i < steps; ++i) {
     float x0 = p.x + width * i / steps, x1 = p.x + width * (i + 1) / steps;
-    draw->AddRectFilledMultiColor(ImVec2(x0, p.y), ImVec2(x1, p.y + height), toColor(heatmapRamp(float(i) / steps)),
-                                  toColor(heatmapRamp(float(i + 1) / steps)), toColor(heatmapRamp(float(i + 1) / steps)),
-                                  toColor(heatmapRamp(float(i) / steps)));
+    ImU32 a = toColor(heatmapRamp(float(i) / steps)), b = toColor(heatmapRamp(float(i + 1) / steps));
+    draw->AddRectFilledMultiColor(ImVec2(x0, p.y), ImVec2(x1, p.y + height), a, b, b, a);
   }
   ImGui::Dummy(ImVec2(width, height));
-  ImGui::Text("%.4g", stats.heatmapMin);
+  ImGui::Text("%.4g", h.min);
   char hi[32];
-  std::snprintf(hi, sizeof(hi), "%.4g", stats.heatmapMax);
+  std::snprintf(hi, sizeof(hi), "%.4g", h.max);
   ImGui::SameLine(width - ImGui::CalcTextSize(hi).x + ImGui::GetStyle().WindowPadding.x);
   ImGui::TextUnformatted(hi);
-  if (!stats.heatmapUnit.empty()) ImGui::Text("unit: %s", stats.heatmapUnit.c_str());
-  if (stats.heatmapMax <= stats.heatmapMin) ImGui::TextDisabled("(no range reported yet)");
+  ImGui::Text("%s, %s scale", h.unit.c_str(), h.scale.c_str());
+}
+
+// Lock keeps the colours comparable across frames and strategies: checking it takes this frame's range.
+void drawRangeControls(HeatmapRange& range, const HeatmapStats& h) {
+  bool locked = range.locked;
+  if (ImGui::Checkbox("lock range", &locked)) {
+    range.locked = locked;
+    if (locked && h.frameMax > h.frameMin)
+      range.min = float(h.frameMin), range.max = float(h.frameMax);
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled("frame: %.4g .. %.4g", h.frameMin, h.frameMax);
+  if (!range.locked) return;
+  float ends[2] = {range.min, range.max};
+  ImGui::SetNextItemWidth(200);
+  if (ImGui::InputFloat2("min / max", ends, "%.4g")) {
+    const float top = SettingLimits::kMaxHeatmapValue;
+    ends[0] = std::clamp(ends[0], 0.0f, top);
+    ends[1] = std::clamp(ends[1], 0.0f, top);
+    if (ends[0] < ends[1]) range.min = ends[0], range.max = ends[1];  // an empty interval is not taken
+  }
+}
+
+void drawProbe(const HeatmapProbe& q, const HeatmapStats& h) {
+  if (!q.valid) {
+    ImGui::TextDisabled("hover the image for a pixel's value, key, cell and path");
+    return;
+  }
+  ImGui::Text("pixel (%u, %u): %s", q.x, q.y, q.state.c_str());
+  if (q.state == "value") {
+    if (h.keyColour == "cell" || h.keyColour == "hash") ImGui::Text("  key %u (0x%08x)", uint32_t(q.value), uint32_t(q.value));
+    else ImGui::Text("  %s %.6g", h.unit.c_str(), q.value);
+  }
+  if (q.hasPath) ImGui::Text("  path id %u", q.pathId);
+  if (q.hasKey && h.keyColour == "rank") ImGui::Text("  key %u (0x%08x)", q.key, q.key);
+  if (q.hasCell) ImGui::Text("  %s (%u, %u, %u), direction octant %u", q.cellKind.c_str(), q.cell.x, q.cell.y, q.cell.z, q.octant);
+}
+
+void drawCounts(const HeatmapStats& h) {
+  if (h.pixels == 0) return;
+  auto pct = [&](uint32_t n) { return 100.0 * n / h.pixels; };
+  swatch(noPathColour(), "no path at this bounce");
+  ImGui::SameLine();
+  ImGui::TextDisabled("%.1f%%", pct(h.pixelsWithoutPath));
+  if (!h.noValueMeaning.empty()) {
+    swatch(noValueColour(), h.noValueMeaning.c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("%.1f%%", pct(h.pixelsWithoutValue));
+  }
 }
 
 }  // namespace
 
-glm::vec3 heatmapRamp(float t) {
-  const float x = std::clamp(t, 0.0f, 1.0f);
-  const glm::vec4 v4(1.0f, x, x * x, x * x * x);
-  const glm::vec2 v2 = glm::vec2(v4.z, v4.w) * v4.z;
-  const glm::vec4 r4(0.13572138f, 4.61539260f, -42.66032258f, 132.13108234f);
-  const glm::vec4 g4(0.09140261f, 2.19418839f, 4.84296658f, -14.18503333f);
-  const glm::vec4 b4(0.10667330f, 12.64194608f, -60.58204836f, 110.36276771f);
-  const glm::vec2 r2(-152.94239396f, 59.28637943f), g2(4.27729857f, 2.82956604f), b2(-89.90310912f, 27.34824973f);
-  return glm::clamp(glm::vec3(glm::dot(v4, r4) + glm::dot(v2, r2), glm::dot(v4, g4) + glm::dot(v2, g2),
-                              glm::dot(v4, b4) + glm::dot(v2, b2)),
-                    0.0f, 1.0f);
-}
-
-const char* heatmapDescription(HeatmapView view) {
+const char* heatmapDescription(HeatmapView view, HeatmapKeyColour keyColour) {
   switch (view) {
     case HeatmapView::None: return "the render";
-    case HeatmapView::SortKey: return "sort key per pixel, hashed: equal keys share a colour";
+    case HeatmapView::SortKey:
+      switch (keyColour) {
+        case HeatmapKeyColour::Cell: return "sort key per pixel, coloured by the cell it encodes (x red, y green, z blue over the cells in view)";
+        case HeatmapKeyColour::Rank: return "sort key per pixel, by its rank among the bounce's sorted keys";
+        case HeatmapKeyColour::Hash: return "sort key per pixel, hashed: equal keys share a colour";
+      }
+      return "";
     case HeatmapView::CellHit: return "estimated end-point cell against the actual cell";
     case HeatmapView::TraversalSteps: return "BVH traversal steps per pixel";
     case HeatmapView::WarpEfficiency: return "efficiency of the 32-wide warp each path was traced in";
@@ -74,7 +115,7 @@ const char* heatmapDescription(HeatmapView view) {
   return "";
 }
 
-void drawHeatmapLegend(const Settings& settings, const FrameStats& stats) {
+void drawHeatmapLegend(Settings& settings, const FrameStats& stats) {
   if (settings.heatmap == HeatmapView::None) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y - 10), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
@@ -90,17 +131,22 @@ void drawHeatmapLegend(const Settings& settings, const FrameStats& stats) {
       ImGui::End();
       return;
     }
+    const HeatmapStats& h = stats.heatmap;
     ImGui::Text("%s, bounce %u", toString(settings.heatmap).c_str(), heatmapBounceShown(settings));
-    ImGui::TextDisabled("%s", heatmapDescription(settings.heatmap));
+    ImGui::TextDisabled("%s", heatmapDescription(settings.heatmap, settings.heatmapKeyColour));
+    if (!h.emptyReason.empty()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "nothing to show: %s", h.emptyReason.c_str());
     if (settings.heatmap == HeatmapView::CellHit) {
-      swatch(IM_COL32(51, 204, 77, 255), "hit: estimated cell is the actual cell");
-      swatch(IM_COL32(217, 51, 51, 255), "miss");
-    } else if (settings.heatmap == HeatmapView::SortKey) {
-      ImGui::Text("keys %.6g .. %.6g", stats.heatmapMin, stats.heatmapMax);
+      swatch(cellHitColour(true), "hit: estimated cell is the actual cell");
+      swatch(cellHitColour(false), "miss");
+    } else if (settings.heatmap == HeatmapView::SortKey && h.keyColour != "rank") {
+      ImGui::Text("keys %.10g .. %.10g", h.frameMin, h.frameMax);
     } else {
-      drawRamp(stats);
+      drawRamp(h);
+      if (settings.heatmap != HeatmapView::SortKey) drawRangeControls(settings.heatmapRange, h);
     }
-    swatch(IM_COL32(31, 31, 31, 255), "no path at this bounce");
+    drawCounts(h);
+    ImGui::Separator();
+    drawProbe(h.probe, h);
   }
   ImGui::End();
 }

@@ -1,21 +1,17 @@
-// The colour legend of the heatmap that replaces the render: what the colours mean and the value range
-// the renderer reports (FrameStats::heatmapMin/Max/Unit).
+// The heatmap legend over the render: what the colours mean, the colour range (FrameStats::heatmap) with
+// the controls that lock it, the pixel counts (no path / no value), why a view shows nothing, and the hover
+// readout of the pixel under the mouse.
 #pragma once
-
-#include <glm/glm.hpp>
 
 #include "renderer/frame_stats.h"
 #include "renderer/settings.h"
 
 namespace raylab {
 
-void drawHeatmapLegend(const Settings& settings, const FrameStats& stats);
-
-// The ramp drawn in the legend for scalar heatmaps (t in [0, 1]): Turbo, by its polynomial
-// approximation, as shaders/heatmap_colorize.comp (keep the two in step so the legend reads the image).
-glm::vec3 heatmapRamp(float t);
+// Writes only Settings::heatmapRange (lock, min, max), clamped to the validated limits.
+void drawHeatmapLegend(Settings& settings, const FrameStats& stats);
 
 // One line on what a view shows, for the legend and the help.
-const char* heatmapDescription(HeatmapView view);
+const char* heatmapDescription(HeatmapView view, HeatmapKeyColour keyColour);
 
 }  // namespace raylab

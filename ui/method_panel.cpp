@@ -115,6 +115,15 @@ void drawHeatmapSection(Settings& s) {
   uint32_t bounce = heatmapBounceShown(s);
   if (sliderU32("heatmap bounce", bounce, 0, s.bounces - 1)) s.heatmapBounce = bounce;
   ImGui::EndDisabled();
+  // Colouring: keys by cell, rank or hash; scalar views linear or log (range lock: the legend).
+  ImGui::BeginDisabled(s.heatmap != HeatmapView::SortKey);
+  comboEnum("key colour", s.heatmapKeyColour, {HeatmapKeyColour::Cell, HeatmapKeyColour::Rank, HeatmapKeyColour::Hash});
+  ImGui::EndDisabled();
+  const bool scalar = s.heatmap == HeatmapView::TraversalSteps || s.heatmap == HeatmapView::WarpEfficiency ||
+                      s.heatmap == HeatmapView::CacheMean || s.heatmap == HeatmapView::CacheVariance;
+  ImGui::BeginDisabled(!scalar);
+  comboEnum("scale", s.heatmapScale, {HeatmapScale::Linear, HeatmapScale::Log});
+  ImGui::EndDisabled();
   // A strategy, sort or kernel change (or a script) can leave the chosen view without data.
   if (std::optional<std::string> why = heatmapUnavailable(s)) ImGui::TextWrapped("showing the render: %s", why->c_str());
 }

@@ -10,6 +10,7 @@
 
 #include "app/setting_flags.h"
 #include "app/window/lab_input.h"
+#include "app/window/heatmap_hover.h"
 #include "app/window/presenter.h"
 #include "app/window/swapchain.h"
 #include "renderer/heatmap_rules.h"
@@ -183,6 +184,7 @@ bool LabWindow::frame() {
   handleRequests(requests);
   updateCamera(seconds);
   syncTracer();
+  updateHeatmapHover(*tracer_, heatmapShown(settings_) != HeatmapView::None);
 
   PresentedFrame shown = presenter_->drawFrame(*tracer_, ImGui::GetDrawData(), !pendingWindowShot_.empty(),
                                                heatmapShown(settings_) != HeatmapView::None);

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "app/heatmap_legend_image.h"
 #include "renderer/png_writer.h"
 
 namespace raylab {
@@ -16,7 +17,12 @@ std::string writeScreenshot(const std::string& dir, const std::string& name, con
   fs::create_directories(dir, error);
   if (error) throw std::runtime_error("cannot create screenshot folder '" + dir + "': " + error.message());
   const fs::path png = fs::path(dir) / (name + ".png");
-  writePng(png.string(), content.imageWidth, content.imageHeight, rgba);
+  // A heatmap render carries its legend (the window's own legend is in a window screenshot already).
+  const HeatmapStats noLegend;
+  const LegendImage image = withHeatmapLegend(rgba, content.imageWidth, content.imageHeight,
+                                              content.kind == "render" ? content.stats.heatmap : noLegend);
+  content.imageHeight = image.height;
+  writePng(png.string(), image.width, image.height, image.rgba);
   content.image = png.filename().string();
   const fs::path json = fs::path(dir) / (name + ".json");
   std::ofstream out(json);

@@ -21,16 +21,16 @@ static_assert(static_cast<uint32_t>(KeyStrategy::Gaussian) == RL_KEY_GAUSSIAN);
 static_assert(static_cast<uint32_t>(KeyStrategy::TwoPoint) == RL_KEY_TWO_POINT);
 static_assert(static_cast<uint32_t>(KeyStrategy::Oracle) == RL_KEY_ORACLE);
 
-namespace {
-
-float asFloat(uint32_t u) { return std::bit_cast<float>(u); }
-uint32_t asUint(float f) { return std::bit_cast<uint32_t>(f); }
-
 uint32_t pcgHash(uint32_t v) {
   uint32_t state = v * 747796405u + 2891336453u;
   uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
   return (word >> 22u) ^ word;
 }
+
+namespace {
+
+float asFloat(uint32_t u) { return std::bit_cast<float>(u); }
+uint32_t asUint(float f) { return std::bit_cast<uint32_t>(f); }
 
 uint32_t keyCached(const KeyParams& p, const KeyEnv& env, const KeyPath& path, bool gaussian, float& len) {
   if (!validDirection(path.direction)) {

@@ -46,6 +46,8 @@ float detSqrt(float x);
 float detLn(float x);
 float detCos2Pi(float u);
 float gaussianSample(uint32_t& rng);
+// rng.glsl's integer hash.
+uint32_t pcgHash(uint32_t v);
 uint32_t rngSeed(uint32_t pathId, uint32_t frame, uint32_t bounce, uint32_t seed, uint32_t stream);
 float rngNext(uint32_t& state);
 

@@ -58,6 +58,10 @@ const std::vector<Case>& cases() {
       {"countSimt", [](Settings& s) { s.countSimt = true; }, wants(false, false, false, false)},
       {"heatmap", [](Settings& s) { s.heatmap = HeatmapView::TraversalSteps; }, wants(false, false, false, false)},
       {"heatmapBounce", [](Settings& s) { s.heatmapBounce = 2; }, wants(false, false, false, false)},
+      // Heatmap colouring is display only.
+      {"heatmapKeyColour", [](Settings& s) { s.heatmapKeyColour = HeatmapKeyColour::Rank; }, wants(false, false, false, false)},
+      {"heatmapScale", [](Settings& s) { s.heatmapScale = HeatmapScale::Log; }, wants(false, false, false, false)},
+      {"heatmapRange", [](Settings& s) { s.heatmapRange = {true, 2.0f, 40.0f}; }, wants(false, false, false, false)},
   };
   return all;
 }
@@ -87,7 +91,8 @@ TEST(SettingsChange, EachFieldAsksForWhatItNeeds) {
 // that change none of those (exposure, heatmap, frame count) keep it.
 TEST(SettingsChange, SortCostsResetWhenWhatTheyMeasuredChanges) {
   const Settings base;
-  const std::vector<std::string> keep = {"frames", "exposure", "countSimt", "heatmap", "heatmapBounce"};
+  const std::vector<std::string> keep = {"frames",        "exposure",         "countSimt",   "heatmap",
+                                          "heatmapBounce", "heatmapKeyColour", "heatmapScale", "heatmapRange"};
   for (const Case& c : cases()) {
     Settings next = base;
     c.change(next);

@@ -3,6 +3,7 @@
 // whole product through applySettings, as the window does, so switches such as gaussian -> fixed with a
 // cache view showing (which once read a cache that no longer existed) are covered too.
 #include <algorithm>
+#include <array>
 
 #include <gtest/gtest.h>
 
@@ -76,7 +77,14 @@ TEST_F(HeatmapProduct, EveryCombinationRendersOrSaysWhyNot) {
         for (HeatmapView heatmap : allHeatmapViews()) {
           Settings s = tinySettings();
           s.kernel = kernel, s.sort = sort, s.strategy = strategy, s.heatmap = heatmap;
-          std::string what = toString(kernel) + "/" + toString(sort) + "/" + toString(strategy) + "/" + toString(heatmap);
+          // The colouring options rotate through the product: every key colour, scale and range lock meets
+          // every view many times without multiplying the renders.
+          const int n = shown + refused;
+          s.heatmapKeyColour = std::array{HeatmapKeyColour::Cell, HeatmapKeyColour::Rank, HeatmapKeyColour::Hash}[n % 3];
+          s.heatmapScale = n % 2 ? HeatmapScale::Log : HeatmapScale::Linear;
+          s.heatmapRange = {n % 5 == 0, 1.0f, 50.0f};
+          std::string what = toString(kernel) + "/" + toString(sort) + "/" + toString(strategy) + "/" + toString(heatmap) +
+                             "/" + toString(s.heatmapKeyColour) + "/" + toString(s.heatmapScale);
           std::optional<std::string> why = heatmapUnavailable(s);
           tracer.applySettings(s);
           tracer.renderFrame();
@@ -91,7 +99,7 @@ TEST_F(HeatmapProduct, EveryCombinationRendersOrSaysWhyNot) {
           std::vector<uint32_t> image = tracer.readImage();
           EXPECT_TRUE(std::any_of(image.begin(), image.end(), [](uint32_t p) { return p != kEmptyPixel; }))
               << what << ": an available view showed no data";
-          EXPECT_FALSE(tracer.stats().heatmapUnit.empty()) << what;
+          EXPECT_FALSE(tracer.stats().heatmap.unit.empty()) << what;
         }
   // 2 kernels x 3 sorts x 11 strategies x 3 trace views, plus the key views of the 10 strategies x 2 sorts
   // (sort-key 20, cell-hit 6 x 2, cache 3 x 2 x 2).
@@ -109,11 +117,11 @@ TEST_F(HeatmapProduct, CacheViewSurvivesLosingTheCache) {
   s.heatmap = HeatmapView::CacheMean;
   tracer.applySettings(s);
   tracer.renderFrame();
-  EXPECT_EQ(tracer.stats().heatmapUnit, "cached length mean");
+  EXPECT_EQ(tracer.stats().heatmap.unit, "cached length mean");
   s.strategy = KeyStrategy::Fixed;
   tracer.applySettings(s);
   tracer.renderFrame();
-  EXPECT_TRUE(tracer.stats().heatmapUnit.empty()) << "an unavailable view must not be gathered";
+  EXPECT_TRUE(tracer.stats().heatmap.view.empty()) << "an unavailable view must not be gathered";
 }
 
 }  // namespace raylab::test

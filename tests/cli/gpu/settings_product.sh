@@ -12,19 +12,28 @@ strategies=$("$raylab" render --help | sed -n 's/.*--strategy \([a-z|-]*\).*/\1/
 heatmaps=$("$raylab" render --heatmap '?' 2>&1 | sed -n 's/.*must be one of \([a-z|-]*\).*/\1/p' | tr '|' ' ')
 [ -n "$strategies" ] && [ -n "$heatmaps" ] || { echo "FAIL: cannot list strategies/heatmaps"; exit 1; }
 
-one() {  # kernel sort strategy heatmap -> a line "RESULT kernel sort strategy heatmap"
-  local name="$1-$2-$3-$4" out rc
+# The heatmap colouring options join the product by rotation (line n takes key colour n mod 3, scale n mod 2,
+# range n mod 5): every option meets every view, strategy and kernel without multiplying the renders.
+one() {  # n kernel sort strategy heatmap -> a line "RESULT kernel sort strategy heatmap"
+  local n="$1"; shift
+  local colours=(cell rank hash) scales=(linear log) ranges=(auto 1:50 auto auto 0.5:8)
+  local name="$1-$2-$3-$4" out rc height
   out=$(timeout 120 "$raylab" render --size 32x16 --bounces 2 --frames 1 --kernel "$1" --sort "$2" \
-        --strategy "$3" --heatmap "$4" --out "$dir/$name.png" 2>&1)
+        --strategy "$3" --heatmap "$4" --heatmap-key-colour "${colours[n % 3]}" --heatmap-scale "${scales[n % 2]}" \
+        --heatmap-range "${ranges[n % 5]}" --out "$dir/$name.png" 2>&1)
   rc=$?
-  if [ $rc -eq 0 ] && [ -s "$dir/$name.png" ]; then echo "rendered $*"
+  # A heatmap PNG carries its legend below the 16 rows of the image (IHDR height, bytes 20..23).
+  height=$( [ -s "$dir/$name.png" ] && od -An -tu1 -j20 -N4 "$dir/$name.png" | awk '{print $1*16777216+$2*65536+$3*256+$4}')
+  if [ $rc -eq 0 ] && [ -s "$dir/$name.png" ] && { [ "$4" = none ] || [ "${height:-0}" -gt 16 ]; }; then echo "rendered $*"
   elif [ $rc -eq 2 ] && grep -q "^raylab render: --heatmap $4" <<<"$out"; then echo "refused $*"
   else echo "FAIL $* exit $rc: $(head -2 <<<"$out" | tr '\n' ' ')"; fi
 }
 export -f one
 export raylab dir
+n=0
 for k in wavefront megakernel; do for s in none bitonic radix; do for st in $strategies; do for h in $heatmaps; do
-  echo "$k $s $st $h"; done; done; done; done | xargs -P 4 -L 1 bash -c 'one "$@"' _ >"$dir/results.txt"
+  echo "$n $k $s $st $h"; n=$((n + 1)); done; done; done; done |
+  xargs -P 4 -L 1 bash -c 'one "$@"' _ >"$dir/results.txt"
 
 total=$(wc -l <"$dir/results.txt")
 rendered=$(grep -c "^rendered" "$dir/results.txt")

@@ -195,11 +195,22 @@ def variance(pixels):
 
 strategies, heatmaps, headless = sys.argv[1].split(), sys.argv[2].split(), sys.argv[3]
 shots = {name: read_png('shots/%s.png' % name) for name in ['render', 'window', 'again'] + ['heat-' + h for h in heatmaps]}
+LEGEND = 53  # a heatmap render carries its legend strip below the image (app/heatmap_legend_image.h, 160 wide)
 for name, (w, h, px) in shots.items():
-    assert (w, h) == (160, 90), '%s is %dx%d, not the window size 160x90' % (name, w, h)
+    heat = name.startswith('heat-') and name != 'heat-none'
+    assert (w, h) == (160, 90 + (LEGEND if heat else 0)), '%s is %dx%d, not the window size 160x90' % (name, w, h)
     sidecar = json.load(open('shots/%s.json' % name))
     for key in ('settings', 'stats', 'device', 'git_revision', 'camera'):
         assert key in sidecar, '%s.json has no %s' % (name, key)
+    assert sidecar['image_height'] == h, '%s.json gives the height %s for a %d-high PNG' % (name, sidecar['image_height'], h)
+    if heat:
+        legend = sidecar['heatmap']
+        assert legend['view'] == name[5:] and len(legend['range']) == 2 and legend['unit'], (name, legend)
+        assert legend['scale'] in ('linear', 'log', 'categorical'), (name, legend)
+        text = sum(1 for i in range(90 * w * 4, len(px), 4) if px[i:i + 3] == bytes((230, 230, 230)))
+        assert text > 50, '%s: no legend text burned in below the heatmap (%d text pixels)' % (name, text)
+    else:
+        assert sidecar.get('heatmap') is None, '%s.json describes a heatmap it does not show' % name
 resized = read_png('shots/resized.png')
 gone = json.load(open('shots/unavailable.json'))['settings']
 assert (gone['strategy'], gone['heatmap']) == ('fixed', 'cache-mean'), gone
