@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "app/process_memory.h"
 #include "app/setting_flags.h"
 #include "app/window/lab_input.h"
 #include "app/window/lab_window.h"
@@ -139,6 +140,11 @@ void LabWindow::runAction(const ScriptAction& a) {
     case K::ScreenshotWindow:
       if (!swapchain_->readable()) throw ScriptError("this surface cannot be read back (no TRANSFER_SRC usage)");
       pendingWindowShot_ = a.value;
+      break;
+    case K::ResetLayout: view_.resetLayout = true; break;
+    case K::Memory:
+      std::printf("%s\n", memoryReportLine(a.value, frames_, readProcessMemory()).c_str());
+      std::fflush(stdout);
       break;
     case K::Quit: quit_ = true; break;
     case K::Wait: break;  // the runner counts the frames
