@@ -48,6 +48,7 @@ struct UiRequests {
   std::optional<float> speed;
   bool screenshotRender = false;
   bool screenshotWindow = false;
+  bool resetLayout = false;  // the panels go back to their default places (LabUi does it, next frame)
 };
 
 }  // namespace raylab

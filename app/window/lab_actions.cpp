@@ -162,6 +162,7 @@ void LabWindow::saveScreenshots(const PresentedFrame& frame) {
   auto save = [&](std::string& name, const char* kind, const std::vector<uint32_t>& pixels, uint32_t w, uint32_t h) {
     if (name.empty()) return;
     content.kind = kind, content.imageWidth = w, content.imageHeight = h;
+    content.panels = content.kind == std::string("window") ? ui_.panelRects() : nlohmann::json();
     try {
       std::string path = writeScreenshot(options_.screenshotDir, name, pixels, content);
       cameraModel_.lastScreenshot = "saved " + path;
