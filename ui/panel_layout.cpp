@@ -89,7 +89,7 @@ Box PanelLayout::keepInside(Panel panel, const Box& actual, bool collapsed, floa
   Box placed = clampToDisplay(want, w, h);
   e.lastReturned = placed;
   e.displayWidth = w, e.displayHeight = h;
-  rects_.push_back({panelTitle(panel), placed, collapsed});
+  rects_.push_back({panelTitle(panel), actual, collapsed});  // as drawn this frame: what a screenshot shows
   return placed;
 }
 

@@ -40,7 +40,8 @@ class PanelLayout {
   // size moves the panel by its anchors from that preferred place. A collapsed panel keeps its size.
   Box keepInside(Panel panel, const Box& actual, bool collapsed, float displayWidth, float displayHeight);
   void forget() { entries_.clear(); }  // after a reset: the defaults become the preferred places
-  const std::vector<PanelRect>& rects() const { return rects_; }  // this frame's, in call order
+  // Where each panel was drawn this frame (before any correction), in call order.
+  const std::vector<PanelRect>& rects() const { return rects_; }
   void startFrame() { rects_.clear(); }
 
  private:
