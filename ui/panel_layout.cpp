@@ -29,7 +29,8 @@ Box defaultPanelBox(Panel panel, float w, float h) {
   const float left = std::min(330.0f, std::max(120.0f, 0.42f * w - 1.5f * kMargin));
   const float right = std::min(360.0f, std::max(120.0f, w - left - 3.0f * kMargin));
   const float usable = std::max(60.0f, h - 3.0f * kMargin);
-  const float methodHeight = std::min(540.0f, 0.6f * usable), timingHeight = 0.55f * usable;
+  // Speed vs accuracy gets the larger share on the right: its plot and table need it; timing scrolls.
+  const float methodHeight = std::min(540.0f, 0.6f * usable), timingHeight = 0.45f * usable;
   Box b;
   switch (panel) {
     case Panel::Method: b = {kMargin, kMargin, kMargin + left, kMargin + methodHeight}; break;

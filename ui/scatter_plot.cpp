@@ -1,6 +1,7 @@
 #include "ui/scatter_plot.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <imgui.h>
@@ -21,6 +22,20 @@ std::string format(double v) {
   return text;
 }
 
+struct Range {
+  double lo = 0.0, hi = 1.0;
+};
+
+// The values' span with a tenth of it to spare on each side (a tenth of the value when they are all equal),
+// not below zero: every value here is a time or a rate.
+Range rangeOf(const std::vector<double>& values) {
+  if (values.empty()) return {};
+  auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  double pad = 0.1 * (*hi - *lo);
+  if (pad <= 0.0) pad = std::max(0.1 * std::abs(*hi), 1e-6);
+  return {std::max(0.0, *lo - pad), *hi + pad};
+}
+
 void dashedVertical(ImDrawList* draw, float x, float y0, float y1, ImU32 color) {
   for (float y = y0; y < y1; y += 6.0f) draw->AddLine(ImVec2(x, y), ImVec2(x, std::min(y + 3.0f, y1)), color);
 }
@@ -38,20 +53,19 @@ void drawScatter(const char* id, const std::vector<ScatterPoint>& points, const 
   draw->PushClipRect(origin, ImVec2(origin.x + width, origin.y + height), true);
   const float line = ImGui::GetTextLineHeight();
 
-  double xMax = 0.0, yTop = axes.yMax;
-  bool anyWithoutY = false;
+  std::vector<double> xs, ys;
   for (const ScatterPoint& p : points) {
-    xMax = std::max(xMax, p.x);
-    if (p.y < 0.0) anyWithoutY = true;
-    else if (axes.yMax <= 0.0) yTop = std::max(yTop, p.y);
+    xs.push_back(p.x);
+    if (p.y >= 0.0) ys.push_back(p.y);
   }
-  for (const ReferenceLine& l : lines) xMax = std::max(xMax, l.x);
-  xMax = xMax > 0.0 ? xMax * 1.1 : 1.0;
-  yTop = yTop > 0.0 ? yTop * (axes.yMax <= 0.0 ? 1.1 : 1.0) : 1.0;
+  for (const ReferenceLine& l : lines) xs.push_back(l.x);
+  const bool anyWithoutY = ys.size() < points.size();
+  const Range xr = rangeOf(xs), yr = rangeOf(ys);
 
   // Rows from the top: y title, plot, strip (points without y), x tick values, x title.
-  const std::string yTopText = format(yTop), xMaxText = format(xMax);
-  const float left = origin.x + std::max(ImGui::CalcTextSize(yTopText.c_str()).x, ImGui::CalcTextSize("0").x) + 6.0f;
+  const std::string yHiText = format(yr.hi), yLoText = format(yr.lo), xHiText = format(xr.hi), xLoText = format(xr.lo);
+  const float left = origin.x + std::max({ImGui::CalcTextSize(yHiText.c_str()).x, ImGui::CalcTextSize(yLoText.c_str()).x,
+                                          ImGui::CalcTextSize("n/a").x}) + 6.0f;
   const float right = origin.x + width - 4.0f;
   const float top = origin.y + line + 4.0f;
   const float strip = anyWithoutY ? line + 6.0f : 0.0f;
@@ -60,22 +74,21 @@ void drawScatter(const char* id, const std::vector<ScatterPoint>& points, const 
   draw->AddRectFilled(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(25, 25, 30, 255));
   draw->AddLine(ImVec2(left, bottom), ImVec2(right, bottom), kAxis);
   draw->AddLine(ImVec2(left, top), ImVec2(left, bottom), kAxis);
-  draw->AddText(ImVec2(origin.x, top), kText, yTopText.c_str());
-  draw->AddText(ImVec2(left - ImGui::CalcTextSize("0").x - 3.0f, bottom - line), kText, "0");
+  draw->AddText(ImVec2(origin.x, top), kText, yHiText.c_str());
+  draw->AddText(ImVec2(origin.x, bottom - line), kText, yLoText.c_str());
   if (anyWithoutY) {
     draw->AddRectFilled(ImVec2(left, bottom + 2.0f), ImVec2(right, bottom + strip), IM_COL32(35, 30, 30, 255));
-    draw->AddText(ImVec2(right - ImGui::CalcTextSize(axes.noValue.c_str()).x - 2.0f, bottom + 3.0f),
-                  IM_COL32(150, 150, 150, 255), axes.noValue.c_str());
+    draw->AddText(ImVec2(origin.x, bottom + 3.0f), IM_COL32(150, 150, 150, 255), "n/a");
   }
   const float ticks = bottom + strip + 2.0f;
-  draw->AddText(ImVec2(left, ticks), kText, "0");
-  draw->AddText(ImVec2(right - ImGui::CalcTextSize(xMaxText.c_str()).x, ticks), kText, xMaxText.c_str());
+  draw->AddText(ImVec2(left, ticks), kText, xLoText.c_str());
+  draw->AddText(ImVec2(right - ImGui::CalcTextSize(xHiText.c_str()).x, ticks), kText, xHiText.c_str());
   const float titleWidth = ImGui::CalcTextSize(axes.x.c_str()).x;
   draw->AddText(ImVec2(std::max(left, 0.5f * (left + right - titleWidth)), ticks + line + 2.0f), kText, axes.x.c_str());
 
-  auto screenX = [&](double x) { return left + static_cast<float>(x / xMax) * (right - left); };
+  auto screenX = [&](double x) { return left + static_cast<float>((x - xr.lo) / (xr.hi - xr.lo)) * (right - left); };
   auto screenY = [&](double y) {
-    return y < 0.0 ? bottom + 0.5f * (strip + 2.0f) : bottom - static_cast<float>(std::min(y / yTop, 1.0)) * (bottom - top);
+    return y < 0.0 ? bottom + 0.5f * (strip + 2.0f) : bottom - static_cast<float>((y - yr.lo) / (yr.hi - yr.lo)) * (bottom - top);
   };
   // Tags of reference lines at their tops, then the points' tags, placed together so none overlaps.
   std::vector<LabelRequest> requests;
@@ -116,6 +129,8 @@ void drawScatter(const char* id, const std::vector<ScatterPoint>& points, const 
   }
   draw->PopClipRect();
   if (under) ImGui::SetTooltip("%s", under->tooltip.c_str());
+  else if (hovered && anyWithoutY && ImGui::GetIO().MousePos.y > bottom && ImGui::GetIO().MousePos.y < bottom + strip)
+    ImGui::SetTooltip("%s", axes.noValue.c_str());
   ImGui::PopID();
 }
 

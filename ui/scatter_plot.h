@@ -1,5 +1,5 @@
-// A small scatter plot drawn with the ImGui draw list (ImPlot is not packaged): axes from zero to the
-// largest value, one marker and a short tag per point (label_placement.h keeps tags apart and inside the
+// A small scatter plot drawn with the ImGui draw list (ImPlot is not packaged): each axis spans its data
+// with a margin (never below zero), so close points stay apart; one marker and a short tag per point (label_placement.h keeps tags apart and inside the
 // plot, with a leader line where one had to move away), vertical reference lines for baselines, and a strip
 // under the axis for points that have no value on the y axis. Everything stays inside the widget's box.
 #pragma once
@@ -23,9 +23,8 @@ struct ReferenceLine {
 };
 
 struct ScatterAxes {
-  std::string x, y;          // titles
-  double yMax = 0.0;         // <= 0: from the data
-  std::string noValue;       // what the strip under the plot means ("no prediction")
+  std::string x, y;     // titles
+  std::string noValue;  // what the strip under the plot ("n/a") means, on hover: "no prediction"
 };
 
 void drawScatter(const char* id, const std::vector<ScatterPoint>& points, const std::vector<ReferenceLine>& lines,

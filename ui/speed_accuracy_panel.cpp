@@ -69,10 +69,14 @@ void drawTable(const SpeedAccuracyBook& book, float height) {
 void drawPlot(const SpeedAccuracyBook& book, const SpeedAccuracyView& view, float height) {
   std::vector<ScatterPoint> points;
   std::vector<ReferenceLine> lines;
+  std::string hidden;
   const SpeedAccuracyPoint* current = book.current();
   for (const SpeedAccuracyPoint& p : book.points()) {
     double x = xOf(p, view.xAxis);
-    if (x < 0.0) continue;  // a megakernel has no trace stage
+    if (x < 0.0) {  // a megakernel has no trace stage
+      hidden += (hidden.empty() ? "" : ", ") + p.label;
+      continue;
+    }
     double y = yOf(p, view.yAxis);
     if (p.key.baseline != Baseline::None) {
       lines.push_back({x, p.label});
@@ -80,10 +84,11 @@ void drawPlot(const SpeedAccuracyBook& book, const SpeedAccuracyView& view, floa
     }
     points.push_back({x, y, std::to_string(p.number), std::to_string(p.number) + " " + p.label, &p == current});
   }
-  // Rates run 0..1; the prediction error (over the scene diagonal) from the data.
-  const ScatterAxes axes{kXAxes[view.xAxis], kYTitles[view.yAxis], view.yAxis == 0 ? 0.0 : 1.0,
-                         view.yAxis == 2 ? "not measured" : "no prediction"};
+  const ScatterAxes axes{kXAxes[view.xAxis], kYTitles[view.yAxis],
+                         view.yAxis == 2 ? "n/a: not measured (detailed stats off, or the rt tracer)"
+                                         : "n/a: no prediction (a baseline, or a key with no end point)"};
   drawScatter("speed-accuracy", points, lines, axes, height);
+  if (!hidden.empty()) ImGui::TextDisabled("not on this axis (no trace stage): %s", hidden.c_str());
 }
 
 // Why the current method has no point on the accuracy axes.
@@ -129,7 +134,7 @@ void drawSpeedAccuracyPanel(SpeedAccuracyBook& book, BaselineRun& baselines, Spe
   ImGui::Combo("y", &view.yAxis, kYAxes, IM_ARRAYSIZE(kYAxes));
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kYHelp[view.yAxis]);
   const float avail = ImGui::GetContentRegionAvail().y;
-  const float plotHeight = std::max(120.0f, 0.6f * avail);
+  const float plotHeight = std::max(120.0f, 0.6f * avail - ImGui::GetTextLineHeightWithSpacing());
   drawPlot(book, view, plotHeight);
   drawTable(book, std::max(3.0f * ImGui::GetFrameHeight(), ImGui::GetContentRegionAvail().y));
   ImGui::End();

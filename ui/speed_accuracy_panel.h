@@ -12,7 +12,7 @@ namespace raylab {
 
 // The panel's own choices, kept between frames.
 struct SpeedAccuracyView {
-  int xAxis = 0;  // trace, frame, trace + reorder
+  int xAxis = 1;  // trace, frame (the default: the baselines compare there), trace + reorder
   int yAxis = 0;  // prediction error, cell-hit rate, warp efficiency
 };
 
