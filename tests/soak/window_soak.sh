@@ -2,8 +2,8 @@
 # Soak of the lab window: FRAMES frames (default 10000) of a 160x90 window rendering at full scale under
 # Xvfb, with the strategy and heatmap changing every BLOCK frames (up to 250) so the panels, the
 # speed-accuracy book and the renderer's rebuilds all keep running. The process's resident memory (VmRSS,
-# from the script's `memory` action) is read after the warm-up (frame 500, or a third of a short run) and at
-# the end; both go to OUT/soak.json with the device and the growth between them. It takes long (about a
+# from the script's `memory` action) is read after the warm-up (frame 500, or a third of a short run), at
+# every tenth of the rest and at the end; OUT/soak.json has them with the device and the growth. It takes long (about a
 # frame every 60-100 ms on two lavapipe cores), so it is a manual tool, not part of ctest; ctest runs a
 # 300-frame version (tests/cli/gpu/window_soak_short.sh) that checks only that the report is well formed.
 #
@@ -30,11 +30,20 @@ run_frames() {
     step=$((step + 1)); n=$((n - f))
   done
 }
+# Between warm-up and end, a reading every tenth of the rest: a steady climb (a leak) and a step that then
+# stays flat (a cache filling once) look different in the series.
+every=$(( (frames - warm) / 10 > block ? (frames - warm) / 10 : block ))
 {
   echo "set bounces 4"
   run_frames "$warm"
   echo "memory warm"
-  run_frames $((frames - warm))
+  done=$warm
+  while [ $((done + every)) -lt "$frames" ]; do
+    run_frames "$every"
+    done=$((done + every))
+    echo "memory at-$done"
+  done
+  run_frames $((frames - done))
   echo "memory end"
   echo "screenshot soak-end"
   echo "quit"
@@ -50,13 +59,14 @@ seconds=$(( $(date +%s) - start ))
 python3 - "$out" "$frames" "$warm" "$seconds" <<'PY'
 import json, sys
 out, frames, warm, seconds = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
-reports = {}
+reports, series = {}, []
 for line in open(out + '/soak-stdout.txt'):
     line = line.strip()
     if line.startswith('{'):
         r = json.loads(line)
         if 'memory' in r:
             reports[r['memory']] = r
+            series.append([r['frame'], r['vm_rss_kib']])
 sidecar = json.load(open(out + '/soak-end.json'))
 warm_r, end_r = reports['warm'], reports['end']
 result = {
@@ -66,9 +76,12 @@ result = {
     'git_revision': sidecar['git_revision'],
     'warm_rss_kib': warm_r['vm_rss_kib'], 'end_rss_kib': end_r['vm_rss_kib'],
     'growth_kib': end_r['vm_rss_kib'] - warm_r['vm_rss_kib'], 'peak_rss_kib': end_r['vm_hwm_kib'],
+    # [frame, VmRSS KiB] from the warm-up on; the second half's growth tells a leak from a one-time step.
+    'series': series,
+    'second_half_growth_kib': end_r['vm_rss_kib'] - series[len(series) // 2][1],
 }
 json.dump(result, open(out + '/soak.json', 'w'), indent=1)
 print('soak: %(frames)d frames, window %(window)s, render %(render)s, %(device)s (%(driver)s), %(seconds)d s: '
       'VmRSS %(warm_rss_kib)d KiB at frame %(warm_frame)d, %(end_rss_kib)d KiB at the end (%(growth_kib)+d KiB), '
-      'peak %(peak_rss_kib)d KiB' % result)
+      'peak %(peak_rss_kib)d KiB; second half %(second_half_growth_kib)+d KiB' % result)
 PY

@@ -24,6 +24,8 @@ for key in ('warm_rss_kib', 'end_rss_kib', 'peak_rss_kib'):
     assert isinstance(r[key], int) and r[key] > 1000, (key, r)  # a Vulkan process holds megabytes
 assert r['peak_rss_kib'] >= max(r['warm_rss_kib'], r['end_rss_kib']), r
 assert r['growth_kib'] == r['end_rss_kib'] - r['warm_rss_kib'], r
+frames = [f for f, _ in r['series']]
+assert frames == sorted(frames) and len(frames) >= 3 and frames[0] == r['warm_frame'] and frames[-1] == r['frames'], r
 assert r['render'] == '160x90' and r['device'], r
 print('ok: soak report well formed')
 PY
