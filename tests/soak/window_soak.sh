@@ -8,6 +8,8 @@
 # 300-frame version (tests/cli/gpu/window_soak_short.sh) that checks only that the report is well formed.
 #
 #   tests/soak/window_soak.sh build/raylab [FRAMES] [OUT]
+#   SOAK_STEADY=1 tests/soak/window_soak.sh ...   the same settings throughout (fixed strategy, no heatmap):
+#                                                 growth there is not pipeline rebuilds
 set -eu
 raylab=$(realpath "$1")
 frames=${2:-10000}
@@ -20,6 +22,7 @@ warm=$(( frames >= 1500 ? 500 : frames / 3 ))
 block=$(( warm / 2 < 250 ? warm / 2 : 250 ))
 strategies=(fixed two-point gaussian none ema)
 heatmaps=(none sort-key none traversal-steps)
+if [ "${SOAK_STEADY:-0}" = 1 ]; then strategies=(fixed fixed fixed fixed fixed) heatmaps=(none none none none); fi
 step=0
 # Runs n frames in blocks, each block with the next strategy and heatmap.
 run_frames() {
@@ -71,7 +74,7 @@ sidecar = json.load(open(out + '/soak-end.json'))
 warm_r, end_r = reports['warm'], reports['end']
 result = {
     'frames': end_r['frame'], 'warm_frame': warm_r['frame'], 'seconds': seconds,
-    'window': '160x90', 'render': '%dx%d' % (sidecar['settings']['width'], sidecar['settings']['height']),
+    'window': '160x90', 'steady': __import__('os').environ.get('SOAK_STEADY', '0') == '1', 'render': '%dx%d' % (sidecar['settings']['width'], sidecar['settings']['height']),
     'device': sidecar['device'].get('name'), 'driver': sidecar['device'].get('driver'),
     'git_revision': sidecar['git_revision'],
     'warm_rss_kib': warm_r['vm_rss_kib'], 'end_rss_kib': end_r['vm_rss_kib'],
