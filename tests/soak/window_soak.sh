@@ -24,11 +24,11 @@ strategies=(fixed two-point gaussian none ema)
 heatmaps=(none sort-key none traversal-steps)
 if [ "${SOAK_STEADY:-0}" = 1 ]; then strategies=(fixed fixed fixed fixed fixed) heatmaps=(none none none none); fi
 step=0
-# Runs n frames in blocks, each block with the next strategy and heatmap.
+# Runs n frames in blocks (of `size`, default `block`), each block with the next strategy and heatmap.
 run_frames() {
-  local n=$1 f
+  local n=$1 size=${2:-$block} f
   while [ "$n" -gt 0 ]; do
-    f=$(( n < block ? n : block ))
+    f=$(( n < size ? n : size ))
     printf 'set strategy %s\nset heatmap %s\nwait %d\n' "${strategies[step % 5]}" "${heatmaps[step % 4]}" "$f"
     step=$((step + 1)); n=$((n - f))
   done
@@ -38,7 +38,8 @@ run_frames() {
 every=$(( (frames - warm) / 10 > block ? (frames - warm) / 10 : block ))
 {
   echo "set bounces 4"
-  run_frames "$warm"
+  # The warm-up visits each of the 20 strategy x heatmap pairs (pipelines, buffers made once) at least once.
+  run_frames "$warm" $(( warm / 20 > 0 ? warm / 20 : 1 ))
   echo "memory warm"
   done=$warm
   while [ $((done + every)) -lt "$frames" ]; do
