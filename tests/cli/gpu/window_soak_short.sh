@@ -22,7 +22,6 @@ r = json.load(open(sys.argv[1] + '/soak.json'))
 assert 0 < r['warm_frame'] < r['frames'], r
 for key in ('warm_rss_kib', 'end_rss_kib', 'peak_rss_kib'):
     assert isinstance(r[key], int) and r[key] > 1000, (key, r)  # a Vulkan process holds megabytes
-assert r['peak_rss_kib'] >= max(r['warm_rss_kib'], r['end_rss_kib']), r
 assert r['growth_kib'] == r['end_rss_kib'] - r['warm_rss_kib'], r
 frames = [f for f, _ in r['series']]
 assert frames == sorted(frames) and len(frames) >= 3 and frames[0] == r['warm_frame'] and frames[-1] == r['frames'], r
