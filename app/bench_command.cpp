@@ -30,17 +30,6 @@ std::vector<glm::vec3> renderReference(PathTracer& tracer, const Settings& base,
   return image;
 }
 
-double meanOf(const std::vector<BounceStats>& bounces, double BounceStats::*field, bool skipFirst) {
-  double sum = 0.0;
-  int n = 0;
-  for (size_t b = skipFirst ? 1 : 0; b < bounces.size(); ++b)
-    if (bounces[b].*field >= 0.0) {
-      sum += bounces[b].*field;
-      ++n;
-    }
-  return n ? sum / n : -1.0;
-}
-
 const char* kStages[] = {"generate", "trace", "learn", "shade", "keys", "oracle-trace", "sort", "reorder",
                          "accumulate", "tonemap", "megakernel", "setup", "counters"};
 
@@ -70,11 +59,11 @@ void writeCsvRow(std::ofstream& csv, const VulkanContext& ctx, const BenchCell& 
   for (const char* st : kStages) csv << "," << (r.stageMs.count(st) ? r.stageMs.at(st).median : 0.0);
   // Figures of our traversal loop do not exist with the rt tracer: written as n/a, never as numbers.
   auto loop = [&](double v) { return r.detailed.traversalStatsUnavailable.empty() ? std::to_string(v) : std::string("n/a"); };
-  csv << "," << r.raysPerSecond << "," << loop(meanOf(b, &BounceStats::simtEfficiency, false)) << ","
-      << loop(meanOf(b, &BounceStats::virtualWarpEfficiency, false)) << ","
-      << loop(meanOf(b, &BounceStats::virtualWarpEfficiency, true)) << ","
-      << meanOf(b, &BounceStats::predictionErrorMean, true) << ","
-      << meanOf(b, &BounceStats::predictionErrorMedian, true) << "," << meanOf(b, &BounceStats::cellHitRate, true)
+  csv << "," << r.raysPerSecond << "," << loop(meanOverBounces(b, &BounceStats::simtEfficiency, false)) << ","
+      << loop(meanOverBounces(b, &BounceStats::virtualWarpEfficiency, false)) << ","
+      << loop(meanOverBounces(b, &BounceStats::virtualWarpEfficiency, true)) << ","
+      << meanOverBounces(b, &BounceStats::predictionErrorMean, true) << ","
+      << meanOverBounces(b, &BounceStats::predictionErrorMedian, true) << "," << meanOverBounces(b, &BounceStats::cellHitRate, true)
       << "," << r.detailed.keyBits << "," << r.detailed.lengthCacheBytes << ","
       << r.finalRelMse << "," << toString(s.sortPolicy) << ",";
   // Which bounces the policy sorted after in the last timed frame, e.g. "YNY-" (- : the last bounce).

@@ -35,16 +35,18 @@ Viewpoint cameraFrom(const json& j) {
 }  // namespace
 
 nlohmann::json makeSidecar(const SidecarContent& c) {
-  return {{"kind", c.kind},
-          {"image", c.image},
-          {"image_width", c.imageWidth},
-          {"image_height", c.imageHeight},
-          {"git_revision", RAYLAB_GIT_REV},
-          {"device", toJson(c.device)},
-          {"settings", toJson(c.settings)},
-          {"camera", cameraJson(c.camera)},
-          {"heatmap", toJson(c.stats.heatmap)},  // the legend of a heatmap image: range, unit, scale
-          {"stats", toJson(c.stats)}};
+  json sidecar = {{"kind", c.kind},
+                  {"image", c.image},
+                  {"image_width", c.imageWidth},
+                  {"image_height", c.imageHeight},
+                  {"git_revision", RAYLAB_GIT_REV},
+                  {"device", toJson(c.device)},
+                  {"settings", toJson(c.settings)},
+                  {"camera", cameraJson(c.camera)},
+                  {"heatmap", toJson(c.stats.heatmap)},  // the legend of a heatmap image: range, unit, scale
+                  {"stats", toJson(c.stats)}};
+  if (!c.panels.is_null()) sidecar["panels"] = c.panels;
+  return sidecar;
 }
 
 Sidecar readSidecar(const std::string& path) {

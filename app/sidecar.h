@@ -25,6 +25,7 @@ struct SidecarContent {
   Viewpoint camera;
   FrameStats stats;
   DeviceInfo device;
+  nlohmann::json panels;  // window shots: where each panel was (ui/panel_layout.h); null: left out
 };
 
 nlohmann::json makeSidecar(const SidecarContent& content);

@@ -26,6 +26,12 @@ bool validFileName(const std::string& name) {
   return true;
 }
 
+// A name that must be a plain file name (screenshots) or label (memory reports).
+std::string checkedName(const std::string& what, const std::string& name) {
+  if (!validFileName(name)) throw ScriptError(what + " '" + name + "' must be letters, digits, '-', '_' or '.'");
+  return name;
+}
+
 ScriptAction parseLine(const std::vector<std::string>& w) {
   using K = ScriptAction::Kind;
   ScriptAction a;
@@ -52,13 +58,18 @@ ScriptAction parseLine(const std::vector<std::string>& w) {
     a.kind = K::Wait, a.frames = parseUint("wait", w[1], 0, 1000000);
   } else if (verb == "screenshot" || verb == "screenshot-window") {
     expectArgs(1, "screenshot NAME");
-    if (!validFileName(w[1])) throw ScriptError("screenshot name '" + w[1] + "' must be letters, digits, '-', '_' or '.'");
-    a.kind = verb == "screenshot" ? K::Screenshot : K::ScreenshotWindow, a.value = w[1];
+    a.kind = verb == "screenshot" ? K::Screenshot : K::ScreenshotWindow, a.value = checkedName("screenshot name", w[1]);
+  } else if (verb == "reset-layout") {
+    expectArgs(0, "reset-layout");
+    a.kind = K::ResetLayout;
+  } else if (verb == "memory") {
+    expectArgs(1, "memory LABEL");
+    a.kind = K::Memory, a.value = checkedName("memory label", w[1]);
   } else if (verb == "quit") {
     expectArgs(0, "quit");
     a.kind = K::Quit;
   } else {
-    throw ScriptError("unknown action '" + verb + "' (set, camera, view, wait, screenshot, screenshot-window, quit)");
+    throw ScriptError("unknown action '" + verb + "' (set, camera, view, wait, screenshot, screenshot-window, reset-layout, memory, quit)");
   }
   return a;
 }

@@ -8,6 +8,9 @@
 //   wait N                   render N frames
 //   screenshot NAME          save the render as NAME.png + NAME.json in the screenshot folder
 //   screenshot-window NAME   the same with the panels
+//   reset-layout             put the panels back where they open by default (the "Reset layout" button)
+//   memory LABEL             print the process's resident memory as one JSON line on stdout:
+//                            {"memory":LABEL,"frame":N,"vm_rss_kib":K,"vm_hwm_kib":K} (the soak reads it)
 //   quit                     close the window (the end of the file does too)
 // Blank lines and lines starting with # are ignored.
 #pragma once
@@ -26,11 +29,12 @@ struct ScriptError : std::runtime_error {
 };
 
 struct ScriptAction {
-  enum class Kind { Set, Camera, View, Wait, Screenshot, ScreenshotWindow, Quit };
+  enum class Kind { Set, Camera, View, Wait, Screenshot, ScreenshotWindow, ResetLayout, Memory, Quit };
   Kind kind = Kind::Quit;
   int line = 0;
   std::string key;    // Set: the flag name
-  std::string value;  // Set: its value; View: the viewpoint; Screenshot*: the file name; Camera: the text
+  std::string value;  // Set: its value; View: the viewpoint; Screenshot*: the file name; Camera: the text;
+                      // Memory: the label
   uint32_t frames = 0;  // Wait
 };
 

@@ -31,6 +31,17 @@ struct BounceStats {
   std::string sortReason;
 };
 
+// Mean of one per-bounce figure over the bounces that measured it (>= 0), unweighted, from bounce 1 on when
+// `skipFirst` (camera rays are never sorted): the per-frame figure the bench writes (prediction_error_mean,
+// cell_hit_rate, virtual_warp_efficiency_after_first) and the speed-accuracy panel plots. -1 when none did.
+inline double meanOverBounces(const std::vector<BounceStats>& bounces, double BounceStats::*field, bool skipFirst) {
+  double sum = 0.0;
+  int n = 0;
+  for (size_t b = skipFirst ? 1 : 0; b < bounces.size(); ++b)
+    if (bounces[b].*field >= 0.0) sum += bounces[b].*field, ++n;
+  return n ? sum / n : -1.0;
+}
+
 struct FrameStats {
   uint32_t frameIndex = 0;
   uint32_t samplesPerPixel = 0;  // accumulated so far

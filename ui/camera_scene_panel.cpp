@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include "ui/panel_layout.h"
+
 namespace raylab {
 namespace {
 
@@ -75,15 +77,16 @@ void drawCapture(const CameraModel& m, UiRequests& r) {
   if (!m.lastScreenshot.empty()) ImGui::TextWrapped("%s", m.lastScreenshot.c_str());
 }
 
+void drawWindowSection(UiRequests& r) {
+  if (ImGui::Button("Reset layout")) r.resetLayout = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("put the panels back where they open (as --reset does at start)");
+}
+
 }  // namespace
 
 UiRequests drawCameraScenePanel(const CameraModel& m) {
   UiRequests r;
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(10, display.y - 40), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 280), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Scene and camera")) {
+  if (!ImGui::Begin(panelTitle(Panel::SceneCamera))) {
     ImGui::End();
     return r;
   }
@@ -92,6 +95,7 @@ UiRequests drawCameraScenePanel(const CameraModel& m) {
   if (ImGui::CollapsingHeader("Viewpoints", ImGuiTreeNodeFlags_DefaultOpen)) drawViewpoints(m, r);
   if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) drawCamera(m, r);
   if (ImGui::CollapsingHeader("Screenshots", ImGuiTreeNodeFlags_DefaultOpen)) drawCapture(m, r);
+  if (ImGui::CollapsingHeader("Window", ImGuiTreeNodeFlags_DefaultOpen)) drawWindowSection(r);
   ImGui::End();
   return r;
 }

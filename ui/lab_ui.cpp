@@ -6,19 +6,32 @@
 #include "ui/heatmap_legend.h"
 #include "ui/help_overlay.h"
 #include "ui/method_panel.h"
-#include "ui/speed_accuracy_panel.h"
+#include "ui/panel_placement.h"
 #include "ui/timing_panel.h"
 
 namespace raylab {
 
 UiRequests LabUi::draw(Settings& settings, ViewOptions& view, const CameraModel& camera) {
   UiRequests requests;
+  baselines_.steer(settings);  // before the panels, so they show what will be rendered
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  displayWidth_ = display.x, displayHeight_ = display.y;
+  const bool reset = view.resetLayout;
+  view.resetLayout = false;
+  if (reset) layout_.forget();
+  layout_.startFrame();
   if (view.showPanels) {
-    drawMethodPanel(settings, view);
-    drawTimingPanel(timing_, last_, settings, view);
-    drawSpeedAccuracyPanel(book_, settings);
-    requests = drawCameraScenePanel(camera);
+    auto panel = [&](Panel p, auto&& drawPanel) {
+      placeNextPanel(p, reset);
+      drawPanel();
+      keepPanelInside(p, layout_);
+    };
+    panel(Panel::Method, [&] { drawMethodPanel(settings, view); });
+    panel(Panel::Timing, [&] { drawTimingPanel(timing_, last_, settings, view); });
+    panel(Panel::SpeedAccuracy, [&] { drawSpeedAccuracyPanel(book_, baselines_, speedView_, settings); });
+    panel(Panel::SceneCamera, [&] { requests = drawCameraScenePanel(camera); });
   }
+  if (requests.resetLayout) view.resetLayout = true;
   drawHeatmapLegend(settings, last_);
   drawHelpOverlay(&view.showHelp);
   return requests;
@@ -27,6 +40,7 @@ UiRequests LabUi::draw(Settings& settings, ViewOptions& view, const CameraModel&
 void LabUi::onFrame(const Settings& settings, const FrameStats& stats) {
   last_ = stats;
   timing_.push(stats);
+  baselines_.onFrame(settings);
   book_.record(settings, stats);
 }
 

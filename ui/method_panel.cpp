@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "renderer/heatmap_rules.h"
+#include "ui/panel_layout.h"
 
 namespace raylab {
 namespace {
@@ -140,9 +141,7 @@ Settings methodDefaults(const Settings& current) {
 }
 
 void drawMethodPanel(Settings& s, ViewOptions& view) {
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, std::min(540.0f, ImGui::GetIO().DisplaySize.y - 60)), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Method")) {
+  if (!ImGui::Begin(panelTitle(Panel::Method))) {
     ImGui::End();
     return;
   }

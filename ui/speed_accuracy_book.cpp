@@ -1,62 +1,155 @@
 #include "ui/speed_accuracy_book.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 namespace raylab {
 namespace {
 
-// Ray-weighted mean over the bounces that measured it; -1 when none did.
-template <class Get>
-double weightedMean(const FrameStats& stats, Get get) {
-  double sum = 0.0, weight = 0.0;
-  for (const BounceStats& b : stats.bounces) {
-    double v = get(b);
-    if (v < 0.0) continue;
-    sum += v * b.rays;
-    weight += b.rays;
-  }
-  return weight > 0.0 ? sum / weight : -1.0;
+using Baseline = MethodKey::Baseline;
+
+// Strategies whose keys read the fixed length (as the estimate, the seed of a cache, or a miss's end point).
+bool readsFixedLength(KeyStrategy s) {
+  return s == KeyStrategy::Fixed || s == KeyStrategy::TwoPoint || s == KeyStrategy::Average || s == KeyStrategy::Ema ||
+         s == KeyStrategy::Gaussian || s == KeyStrategy::Oracle;
 }
 
-double smooth(double old, double fresh, uint32_t frames) {
-  if (fresh < 0.0) return old;
-  if (frames == 0 || old < 0.0) return fresh;
-  return old + SpeedAccuracyBook::kSmoothing * (fresh - old);
+std::string number(const char* name, float v) {
+  char text[48];
+  if (std::isinf(v)) std::snprintf(text, sizeof(text), " %s inf", name);
+  else std::snprintf(text, sizeof(text), " %s %g", name, v);
+  return text;
+}
+
+bool hasStage(const FrameStats& stats, const char* name) {
+  return std::any_of(stats.stages.begin(), stats.stages.end(), [&](const StageTime& t) { return t.stage == name; });
 }
 
 }  // namespace
 
-bool SpeedAccuracyBook::comparable(const Settings& a, const Settings& b) {
-  return a.scene == b.scene && a.width == b.width && a.height == b.height && a.bounces == b.bounces &&
-         a.sppPerFrame == b.sppPerFrame && a.kernel == b.kernel && a.countSimt == b.countSimt;
+MethodKey methodKeyOf(const Settings& s) {
+  MethodKey k;
+  k.kernel = s.kernel;
+  k.tracer = s.tracer;
+  if (s.kernel == Kernel::Megakernel) {
+    k.baseline = Baseline::Megakernel;
+    if (s.reordersInHardware()) k.ser = s.ser;
+    if (k.ser == Ser::Hint) k.strategy = s.strategy;  // the hint is the strategy's key
+    return k;
+  }
+  if (!s.sorts() || s.sortPolicy == SortPolicy::Never) {
+    k.baseline = Baseline::Unsorted;
+    return k;
+  }
+  k.strategy = s.strategy;
+  k.sort = s.sort;
+  k.policy = s.sortPolicy;
+  if (s.strategy != KeyStrategy::DeadLast) {  // dead-last keys are 0 or dead: no grid
+    k.grid = s.grid;
+    if (s.grid.automatic) k.grid.cells = {0, 0, 0};
+    else k.grid.autoCells = 0;
+    k.clampDistance = s.clampToCamera ? s.clampDistance : 0.0f;
+  } else {
+    k.grid = GridSetting{false, 0, {0, 0, 0}};
+  }
+  if (readsFixedLength(s.strategy)) k.fixedFactor = s.fixedFactor;
+  if (s.strategy == KeyStrategy::Ema) k.emaAlpha = s.emaAlpha;
+  if (s.strategy == KeyStrategy::Gaussian) k.gaussOutlier = s.gaussOutlier, k.gaussReset = s.gaussReset;
+  return k;
 }
 
-const StrategyPoint* SpeedAccuracyBook::find(KeyStrategy s) const {
-  for (const StrategyPoint& p : points_)
-    if (p.strategy == s) return &p;
+std::string describe(const MethodKey& k) {
+  std::string tracer = k.tracer == Tracer::Rt ? " rt" : "";
+  if (k.baseline == Baseline::Unsorted) return "unsorted" + tracer;
+  if (k.baseline == Baseline::Megakernel) {
+    std::string text = "megakernel" + tracer;
+    if (k.ser != Ser::Off) text += " ser-" + toString(k.ser);
+    if (k.ser == Ser::Hint) text += " " + toString(k.strategy);
+    return text;
+  }
+  std::string text = toString(k.strategy) + " " + toString(k.sort) + tracer;
+  if (k.policy != SortPolicy::Always) text += " " + toString(k.policy);
+  if (k.strategy != KeyStrategy::DeadLast) {
+    char grid[48];
+    if (k.grid.automatic) std::snprintf(grid, sizeof(grid), " | grid %u", k.grid.autoCells);
+    else std::snprintf(grid, sizeof(grid), " | grid %ux%ux%u", k.grid.cells.x, k.grid.cells.y, k.grid.cells.z);
+    text += grid;
+    if (k.clampDistance > 0.0f) text += number("clamp", k.clampDistance);
+  }
+  if (readsFixedLength(k.strategy)) text += " |" + number("f", k.fixedFactor);
+  if (k.strategy == KeyStrategy::Ema) text += number("a", k.emaAlpha);
+  if (k.strategy == KeyStrategy::Gaussian) text += number("out", k.gaussOutlier) + number("reset", k.gaussReset);
+  return text;
+}
+
+void RecentMean::add(double v) {
+  if (!(v >= 0.0)) return;  // -1 (not measured) and NaN
+  values_[next_] = v;
+  next_ = (next_ + 1) % kWindow;
+  count_ = std::min(count_ + 1, kWindow);
+}
+
+double RecentMean::value() const {
+  if (count_ == 0) return -1.0;
+  double sum = 0.0;
+  for (size_t i = 0; i < count_; ++i) sum += values_[i];
+  return sum / double(count_);
+}
+
+bool SpeedAccuracyBook::comparable(const Settings& a, const Settings& b) {
+  return a.scene == b.scene && a.view == b.view && a.width == b.width && a.height == b.height &&
+         a.bounces == b.bounces && a.sppPerFrame == b.sppPerFrame && a.countSimt == b.countSimt;
+}
+
+void SpeedAccuracyBook::clear() {
+  points_.clear();
+  nextNumber_ = 1;
+}
+
+const SpeedAccuracyPoint* SpeedAccuracyBook::find(const MethodKey& key) const {
+  for (const SpeedAccuracyPoint& p : points_)
+    if (p.key == key) return &p;
   return nullptr;
 }
 
-void SpeedAccuracyBook::record(const Settings& settings, const FrameStats& stats) {
-  if (started_ && !comparable(settings, context_)) points_.clear();
-  context_ = settings;
+const SpeedAccuracyPoint* SpeedAccuracyBook::current() const { return started_ ? find(currentKey_) : nullptr; }
+
+void SpeedAccuracyBook::dropOldest() {
+  auto oldest = points_.end();
+  for (auto it = points_.begin(); it != points_.end(); ++it)
+    if (it->key.baseline == Baseline::None && !(it->key == currentKey_) &&
+        (oldest == points_.end() || it->lastSeen < oldest->lastSeen))
+      oldest = it;
+  if (oldest != points_.end()) points_.erase(oldest);
+}
+
+void SpeedAccuracyBook::record(const Settings& rendered, const FrameStats& stats) {
+  if (started_ && !comparable(rendered, context_)) clear();
+  context_ = rendered;
   started_ = true;
-  auto it = std::find_if(points_.begin(), points_.end(), [&](const StrategyPoint& p) { return p.strategy == settings.strategy; });
-  if (it == points_.end()) it = points_.insert(points_.end(), StrategyPoint{settings.strategy});
-  StrategyPoint& p = *it;
-  if (current_ != settings.strategy || p.sort != settings.sort) p.frames = 0;  // coming back: a fresh point
-  current_ = settings.strategy;
-  p.sort = settings.sort;
-  double reorder = stats.stageTotal("learn") + stats.stageTotal("keys") + stats.stageTotal("sort") +
-                   stats.stageTotal("reorder") + stats.stageTotal("oracle-trace");
-  p.traceMs = smooth(p.traceMs, stats.stageTotal("trace"), p.frames);
-  p.reorderMs = smooth(p.reorderMs, reorder, p.frames);
-  p.frameMs = smooth(p.frameMs, stats.frameMs, p.frames);
-  double error = weightedMean(stats, [](const BounceStats& b) { return b.predictionErrorMean; });
-  double hits = weightedMean(stats, [](const BounceStats& b) { return b.cellHitRate; });
-  p.meanError = p.frames == 0 ? error : smooth(p.meanError, error, p.frames);
-  p.cellHitRate = p.frames == 0 ? hits : smooth(p.cellHitRate, hits, p.frames);
+  currentKey_ = methodKeyOf(rendered);
+  auto it = std::find_if(points_.begin(), points_.end(), [&](const SpeedAccuracyPoint& p) { return p.key == currentKey_; });
+  if (it == points_.end()) {
+    SpeedAccuracyPoint fresh;
+    fresh.number = nextNumber_++;
+    fresh.key = currentKey_;
+    fresh.label = describe(currentKey_);
+    points_.push_back(fresh);
+    it = points_.end() - 1;
+  }
+  SpeedAccuracyPoint& p = *it;
   ++p.frames;
+  p.lastSeen = ++frame_;
+  if (hasStage(stats, "trace")) p.traceMs.add(stats.stageTotal("trace"));
+  p.reorderMs.add(stats.stageTotal("learn") + stats.stageTotal("keys") + stats.stageTotal("sort") +
+                  stats.stageTotal("reorder") + stats.stageTotal("oracle-trace"));
+  p.frameMs.add(stats.frameMs);
+  p.predictionError.add(meanOverBounces(stats.bounces, &BounceStats::predictionErrorMean, true));
+  p.cellHitRate.add(meanOverBounces(stats.bounces, &BounceStats::cellHitRate, true));
+  if (stats.traversalStatsUnavailable.empty())
+    p.warpEfficiency.add(meanOverBounces(stats.bounces, &BounceStats::virtualWarpEfficiency, true));
+  if (points_.size() > kMaxPoints) dropOldest();
 }
 
 }  // namespace raylab

@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "ui/panel_layout.h"
 #include "ui/stage_colors.h"
 
 namespace raylab {
@@ -132,10 +133,7 @@ void drawMemory(const FrameStats& s) {
 }  // namespace
 
 void drawTimingPanel(const TimingHistory& history, const FrameStats& stats, Settings& settings, ViewOptions& view) {
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 370, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, std::min(430.0f, display.y - 60)), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Timing")) {
+  if (!ImGui::Begin(panelTitle(Panel::Timing))) {
     ImGui::End();
     return;
   }

@@ -15,6 +15,7 @@ struct ViewOptions {
   bool detailedStats = true;     // per-bounce readbacks: virtual warp efficiency, prediction accuracy
   bool showPanels = true;        // Tab hides them to look at the render alone
   bool showHelp = false;         // F1
+  bool resetLayout = false;      // "Reset layout" (or a script): the panels go back to their default places
   // Why the device cannot run the rt tracer / SER (empty: it can); the window fills them from its device,
   // the method panel greys the options out with the reason.
   std::string rtUnavailable;
@@ -47,6 +48,7 @@ struct UiRequests {
   std::optional<float> speed;
   bool screenshotRender = false;
   bool screenshotWindow = false;
+  bool resetLayout = false;  // the panels go back to their default places (LabUi does it, next frame)
 };
 
 }  // namespace raylab

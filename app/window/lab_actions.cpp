@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "app/process_memory.h"
 #include "app/setting_flags.h"
 #include "app/window/lab_input.h"
 #include "app/window/lab_window.h"
@@ -140,6 +141,11 @@ void LabWindow::runAction(const ScriptAction& a) {
       if (!swapchain_->readable()) throw ScriptError("this surface cannot be read back (no TRANSFER_SRC usage)");
       pendingWindowShot_ = a.value;
       break;
+    case K::ResetLayout: view_.resetLayout = true; break;
+    case K::Memory:
+      std::printf("%s\n", memoryReportLine(a.value, frames_, readProcessMemory()).c_str());
+      std::fflush(stdout);
+      break;
     case K::Quit: quit_ = true; break;
     case K::Wait: break;  // the runner counts the frames
   }
@@ -156,6 +162,7 @@ void LabWindow::saveScreenshots(const PresentedFrame& frame) {
   auto save = [&](std::string& name, const char* kind, const std::vector<uint32_t>& pixels, uint32_t w, uint32_t h) {
     if (name.empty()) return;
     content.kind = kind, content.imageWidth = w, content.imageHeight = h;
+    content.panels = content.kind == std::string("window") ? ui_.panelRects() : nlohmann::json();
     try {
       std::string path = writeScreenshot(options_.screenshotDir, name, pixels, content);
       cameraModel_.lastScreenshot = "saved " + path;

@@ -89,3 +89,19 @@ TEST(UiScript, MissingFileIsAScriptError) {
 
 }  // namespace
 }  // namespace raylab
+
+namespace raylab {
+namespace {
+
+TEST(UiScript, LayoutAndMemoryActions) {
+  auto actions = parseScript("reset-layout\nmemory warm-up.1\n", "t.txt");
+  ASSERT_EQ(actions.size(), 2u);
+  EXPECT_EQ(actions[0].kind, ScriptAction::Kind::ResetLayout);
+  EXPECT_EQ(actions[1].kind, ScriptAction::Kind::Memory);
+  EXPECT_EQ(actions[1].value, "warm-up.1");
+  for (const char* bad : {"memory", "memory a b", "memory ../x", "reset-layout now"})
+    EXPECT_THROW(parseScript(std::string(bad) + "\n", "t.txt"), ScriptError) << bad;
+}
+
+}  // namespace
+}  // namespace raylab

@@ -1,0 +1,14 @@
+// PanelLayout applied to the ImGui windows of the panels: their default place before Begin, and after End
+// the correction that keeps them inside the display.
+#pragma once
+
+#include "ui/panel_layout.h"
+
+namespace raylab {
+
+// Before the panel's Begin: its default place and size on first use, or now (expanded) on a reset.
+void placeNextPanel(Panel panel, bool reset);
+// After the panel's End: moves or resizes its window where PanelLayout says.
+void keepPanelInside(Panel panel, PanelLayout& layout);
+
+}  // namespace raylab
