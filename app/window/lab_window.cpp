@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "app/setting_flags.h"
+#include "app/window/frame_log.h"
 #include "app/window/lab_input.h"
 #include "app/window/presenter.h"
 #include "app/window/swapchain.h"
@@ -45,6 +46,7 @@ LabWindow::LabWindow(const WindowOptions& options)
   loadStartScene();
   if (options_.sidecar && options_.sidecar->camera) scene_.view = *options_.sidecar->camera;
   if (!options_.script.empty()) script_.emplace(loadScript(options_.script));
+  if (!options_.frameLog.empty()) frameLog_ = std::make_unique<FrameLog>(options_.frameLog);
   openWindow();
 }
 
@@ -172,7 +174,7 @@ bool LabWindow::frame() {
   window_->framebufferSize(&fbw, &fbh);
   if (recreate_ || fbw != framebufferWidth_ || fbh != framebufferHeight_) recreateSwapchain();
 
-  auto now = std::chrono::steady_clock::now();
+  const auto now = std::chrono::steady_clock::now();
   float seconds = std::min(std::chrono::duration<float>(now - lastFrame_).count(), 0.25f);
   lastFrame_ = now;
   layer_->newFrame();
@@ -189,6 +191,15 @@ bool LabWindow::frame() {
   recreate_ = shown.recreateSwapchain;
   if (!shown.rendered) return true;
   ui_.onFrame(tracer_->settings(), tracer_->finishFrame(shown.wallMs));
+  if (frameLog_) {
+    UiFrameRecord r;
+    r.uiMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - now).count();
+    r.renderMs = shown.wallMs;
+    r.frameDone = true;
+    r.restarted = tracer_->accumulatedFrames() == 1;
+    r.slicePaths = r.framePaths = tracer_->framePaths();
+    frameLog_->write(r);
+  }
   ++frames_;
   wallMsTotal_ += shown.wallMs;
   saveScreenshots(shown);

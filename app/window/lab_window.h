@@ -26,6 +26,7 @@ class Swapchain;
 class Presenter;
 class PathTracer;
 class LabInput;
+class FrameLog;
 struct PresentedFrame;
 
 class LabWindow {
@@ -80,6 +81,7 @@ class LabWindow {
   std::unique_ptr<ImGuiLayer> layer_;
   std::unique_ptr<Presenter> presenter_;
   std::unique_ptr<PathTracer> tracer_;
+  std::unique_ptr<FrameLog> frameLog_;
 
   bool quit_ = false;
   bool recreate_ = false;

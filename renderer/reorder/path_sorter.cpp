@@ -58,9 +58,9 @@ void PathSorter::makeSorter(const Settings& settings) {
     sorter_ = std::make_unique<GpuSorter>(ctx_, settings.sort, maxPaths_);
 }
 
-void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
-                                    uint32_t bounce, bool learn, bool detailed, StageTimer* timer) {
-  const uint32_t n = buffers.pathCount;
+void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t paths,
+                                    uint32_t stateSet, uint32_t bounce, bool learn, bool detailed, StageTimer* timer) {
+  const uint32_t n = paths;
   if (bounce > 0 && learn) keys_.recordLearn(cmd, buffers.frameBlock.address(), stateSet, bounce, n, timer);
   if (!detailed || bounce == 0) return;
   // The rays of this bounce with the predictions made for them, before shading overwrites them.
@@ -76,9 +76,9 @@ void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffer
   computeBarrier(cmd);
 }
 
-void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
-                              bool detailed, StageTimer* timer) {
-  const uint32_t n = buffers.pathCount;
+void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t paths, uint32_t stateSet,
+                              uint32_t bounce, bool detailed, StageTimer* timer) {
+  const uint32_t n = paths;
   keys_.recordKeys(cmd, buffers.frameBlock.address(), stateSet, bounce, buffers.keys.address(),
                    buffers.values.address(), n, timer);
   if (detailed) {
@@ -91,9 +91,9 @@ void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uin
   }
 }
 
-uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
-                                           StageTimer* timer) {
-  const uint32_t n = buffers.pathCount;
+uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t paths,
+                                           uint32_t stateSet, StageTimer* timer) {
+  const uint32_t n = paths;
   {
     ScopedStage s(timer, cmd, "sort");  // the sorter fences its own passes
     // Live keys are < 2^(keyBits-1) and the dead key is all ones (KeyStage::keyBits), so keyBits - 1 bits

@@ -1,7 +1,9 @@
 // The central invariant: sorting never changes the image. Each path's random stream depends on its id,
 // not on its thread, and finished radiance is summed per pixel in sample order, so for every key
 // strategy and sort the accumulated image must equal the unsorted one bit for bit (no tolerance).
+#include <algorithm>
 #include <cstring>
+#include <iterator>
 
 #include <gtest/gtest.h>
 
@@ -82,6 +84,82 @@ TEST_P(SortInvariant, EverySortPolicyRendersTheUnsortedImage) {
       std::vector<glm::vec3> sorted = renderRadiance(ctx(), scene, s, view);
       EXPECT_EQ(0, std::memcmp(sorted.data(), unsorted.data(), sorted.size() * sizeof(glm::vec3)))
           << toString(strategy) << " with policy " << toString(policy) << " changed the image";
+    }
+  }
+}
+
+// A frame rendered in slices (PathTracer::recordSlice, what the window does to stay live) is the whole-frame
+// render bit for bit: uneven slice sizes (one path, a part of a work group, several groups, then the rest),
+// each slice sorted on its own, over two frames (the second uses what the caches learned in the first), for
+// the unsorted wavefront, every sort policy's sorted wavefront and the megakernel. Rays and stage names of a
+// sliced frame are those of the whole frame, so its statistics describe whole frames.
+std::vector<glm::vec3> renderSlicedRadiance(const VulkanContext& ctx, const Scene& scene, const Settings& settings,
+                                            const Viewpoint& view, std::vector<FrameStats>* frames) {
+  const uint32_t sizes[] = {1, 37, 300, 64, 1000};
+  PathTracer tracer(ctx, scene, settings, view);
+  size_t next = 0;
+  for (uint32_t f = 0; f < settings.frames; ++f) {
+    const FrameStats* done = nullptr;
+    uint32_t slices = 0;
+    while (!done) {
+      const uint32_t first = tracer.nextSlicePath();
+      EXPECT_EQ(first == 0, slices == 0) << "a frame starts with its first slice";
+      ctx.submitAndWait([&](VkCommandBuffer cmd) { tracer.recordSlice(cmd, sizes[next++ % std::size(sizes)]); });
+      done = tracer.finishSlice(1.0);
+      ++slices;
+    }
+    EXPECT_GT(slices, 2u);
+    EXPECT_EQ(done->wallMs, double(slices)) << "wall time sums over the slices";
+    frames->push_back(*done);
+  }
+  return tracer.readRadiance();
+}
+
+std::vector<std::pair<std::string, int>> stageNames(const FrameStats& s) {
+  std::vector<std::pair<std::string, int>> names;
+  for (const StageTime& t : s.stages) names.emplace_back(t.stage, t.bounce);
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+TEST_P(SortInvariant, SlicedFramesRenderTheWholeFrameImage) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("hall");
+  Settings base;
+  base.width = 37;
+  base.height = 19;
+  base.bounces = 4;
+  base.sppPerFrame = 2;
+  base.frames = 2;
+  std::vector<Settings> cases;
+  cases.push_back(base);
+  for (SortPolicy policy : {SortPolicy::Always, SortPolicy::Auto}) {
+    Settings s = base;
+    s.strategy = KeyStrategy::Gaussian;
+    s.sort = GetParam();
+    s.sortPolicy = policy;
+    cases.push_back(s);
+  }
+  Settings mega = base;
+  mega.kernel = Kernel::Megakernel;
+  cases.push_back(mega);
+  for (const Settings& s : cases) {
+    PathTracer whole(ctx(), scene, s, view);
+    FrameStats wholeStats;
+    for (uint32_t f = 0; f < s.frames; ++f) wholeStats = whole.renderFrame();
+    std::vector<FrameStats> sliced;
+    std::vector<glm::vec3> radiance = renderSlicedRadiance(ctx(), scene, s, view, &sliced);
+    std::vector<glm::vec3> expected = whole.readRadiance();
+    const std::string what = toString(s.kernel) + " " + toString(s.strategy) + " " + toString(s.sortPolicy);
+    ASSERT_EQ(radiance.size(), expected.size());
+    EXPECT_EQ(0, std::memcmp(radiance.data(), expected.data(), radiance.size() * sizeof(glm::vec3)))
+        << what << ": the sliced frames changed the image";
+    ASSERT_EQ(sliced.size(), s.frames);
+    EXPECT_EQ(sliced.back().raysTraced, wholeStats.raysTraced) << what;
+    EXPECT_EQ(sliced.back().samplesPerPixel, wholeStats.samplesPerPixel) << what;
+    if (s.sortPolicy != SortPolicy::Auto) {  // auto's second frame sorts where its (timed) costs say
+      EXPECT_EQ(stageNames(sliced.back()), stageNames(wholeStats)) << what;
     }
   }
 }
