@@ -40,10 +40,18 @@ gpu::GpuCamera makeGpuCamera(const Viewpoint& v, uint32_t width, uint32_t height
 }
 
 PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera)
+    : PathTracer(ctx, scene, std::make_shared<GpuSceneData>(ctx, scene), settings, camera) {}
+
+PathTracer::PathTracer(const PathTracer& sameScene, const Scene& scene, const Settings& settings,
+                       const Viewpoint& camera)
+    : PathTracer(sameScene.ctx_, scene, sameScene.scene_, settings, camera) {}
+
+PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared_ptr<GpuSceneData> gpuScene,
+                       const Settings& settings, const Viewpoint& camera)
     : ctx_(ctx),
       settings_(settings),
       camera_(camera),
-      scene_(std::make_unique<GpuSceneData>(ctx, scene)),
+      scene_(std::move(gpuScene)),
       generate_(ctx, "generate", sizeof(gpu::PathStagePush), kGroup),
       trace_(ctx, "trace", sizeof(gpu::PathStagePush), kGroup, {0}),
       traceCounting_(ctx, "trace", sizeof(gpu::PathStagePush), kGroup, {1}),
@@ -102,7 +110,7 @@ void PathTracer::setCamera(const Viewpoint& camera) {
   apply(SettingsChange::cameraMove(settings_));
 }
 
-bool PathTracer::needsWholeFrames() const { return detailedStats_ || heatmapShown(settings_) != HeatmapView::None; }
+bool PathTracer::needsWholeFrames() const { return heatmapShown(settings_) != HeatmapView::None; }
 
 void PathTracer::setDetailedStats(bool on) {
   if (on != detailedStats_) sliceNext_ = sliceEnd_ = 0;
@@ -115,7 +123,7 @@ void PathTracer::recordFrame(VkCommandBuffer cmd) {
   recordSlice(cmd, buffers_->pathCount);
 }
 
-void PathTracer::recordSlice(VkCommandBuffer cmd, uint32_t paths) {
+uint32_t PathTracer::recordSlice(VkCommandBuffer cmd, uint32_t paths) {
   const uint32_t total = buffers_->pathCount;
   if (needsWholeFrames()) sliceNext_ = 0, paths = total;
   const uint32_t first = sliceNext_;
@@ -138,9 +146,9 @@ void PathTracer::recordSlice(VkCommandBuffer cmd, uint32_t paths) {
   });
   const gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0};
   if (settings_.kernel == Kernel::Megakernel)
-    recordMegakernel(cmd, push, count);
+    recordMegakernel(cmd, push, {first, count});
   else
-    recordWavefront(cmd, push, count);
+    recordWavefront(cmd, push, {first, count});
   if (ends) {
     recordStage(cmd, &timer_, "accumulate", [&] { accumulate_.dispatchThreads(cmd, push, buffers_->pixelCount); });
     if (!heatmap_->colorize(cmd, *buffers_, &timer_))
@@ -148,6 +156,7 @@ void PathTracer::recordSlice(VkCommandBuffer cmd, uint32_t paths) {
     recordCountersToHost(cmd);
   }
   sliceEnd_ = first + count;
+  return count;
 }
 
 // The GpuFrame block every stage reads (addresses, camera, frame parameters, the slice's paths).
@@ -169,8 +178,8 @@ void PathTracer::recordFrameBlock(VkCommandBuffer cmd, uint32_t firstPath, uint3
   computeBarrier(cmd);
 }
 
-void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push, uint32_t paths) {
-  const uint32_t n = paths;
+void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push, PathRange slice) {
+  const uint32_t n = slice.count;
   const ComputePipeline& megakernel = settings_.countSimt ? megakernelCounting_ : megakernel_;
   recordStage(cmd, &timer_, "megakernel", [&] {
     if (!usesRt()) {
@@ -186,7 +195,7 @@ void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush&
       rt_->serMegakernel(cmd, ser, hint, n);
     }
   });
-  if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, 0);
+  if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, 0, slice);
   heatmap_->afterMegakernel(cmd, *buffers_, &timer_);
 }
 
@@ -194,8 +203,8 @@ void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush&
 // policy's plan says so (learn only for rays that were sorted). Trace and shade are dispatched indirectly
 // over the live paths: all of them until a sort has moved the finished paths behind the live ones
 // (GpuFrame::live); a bounce that does not sort keeps the last sort's order and live count.
-void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, uint32_t paths) {
-  const uint32_t n = paths;
+void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, PathRange slice) {
+  const uint32_t n = slice.count;
   const bool sorting = settings_.sorts();
   const VkDeviceAddress keyParams = sorting ? pathSorter_->keys().paramsAddress() : 0;
   const ComputePipeline& trace = settings_.countSimt ? traceCounting_ : trace_;
@@ -211,10 +220,10 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, u
       else
         trace.dispatchIndirect(cmd, push, live, liveDispatch);
     });
-    if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, b);
+    if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, b, slice);
     const bool sortedBefore = sorting && b > 0 && framePlan_.sortAfter[b - 1];
     if (sorting)
-      pathSorter_->recordAfterTrace(cmd, *buffers_, n, push.stateSet, b, sortedBefore, detailedStats_, &timer_);
+      pathSorter_->recordAfterTrace(cmd, *buffers_, slice, push.stateSet, b, sortedBefore, detailedStats_, &timer_);
     heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, keyParams, &timer_);
     recordStage(cmd, &timer_, "shade", [&] {
       if (usesRt())
@@ -223,7 +232,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, u
         shade_.dispatchIndirect(cmd, push, live, liveDispatch);
     });
     if (sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b]) {
-      pathSorter_->recordKeys(cmd, *buffers_, n, push.stateSet, b, detailedStats_, &timer_);
+      pathSorter_->recordKeys(cmd, *buffers_, slice, push.stateSet, b, detailedStats_, &timer_);
       heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, keyParams, &timer_);
       push.stateSet = pathSorter_->recordSortAndGather(cmd, *buffers_, n, push.stateSet, &timer_);
     }
@@ -232,12 +241,15 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, u
 }
 
 // Detailed mode: keeps this trace's per-path traversal steps (the next trace overwrites them) for the
-// virtual warp efficiency. Released again by gatherCounters(): only the frame that asked holds them.
-void PathTracer::recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce) {
+// virtual warp efficiency, in dispatch order: a slice's slots go to its part of the frame's readback, so the
+// warps are those of the whole frame where slices are whole warps (LiveRender's are whole work groups).
+// Released again by gatherCounters(): only the frame that asked holds them.
+void PathTracer::recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce, PathRange slice) {
   ScopedStage s(&timer_, cmd, "counters");
   if (stepsReadback_.size() <= bounce) stepsReadback_.resize(bounce + 1);
-  stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
-  VkBufferCopy steps{0, 0, VkDeviceSize(buffers_->pathCount) * 4};
+  if (stepsReadback_[bounce].size() != buffers_->hitSteps.size())
+    stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
+  VkBufferCopy steps{0, VkDeviceSize(slice.first) * 4, VkDeviceSize(slice.count) * 4};
   vkCmdCopyBuffer(cmd, buffers_->hitSteps.handle(), stepsReadback_[bounce].handle(), 1, &steps);
   computeBarrier(cmd);
 }

@@ -24,6 +24,9 @@ class RtTracer;
 class PathTracer {
  public:
   PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera);
+  // A second tracer of the same scene (the window's coarse preview): shares `sameScene`'s GPU scene (no second
+  // BVH build or upload); `scene` must be the one `sameScene` was made from.
+  PathTracer(const PathTracer& sameScene, const Scene& scene, const Settings& settings, const Viewpoint& camera);
   ~PathTracer();
 
   // Applies new settings: reallocates, restarts accumulation, resets caches and uploads key parameters
@@ -49,13 +52,14 @@ class PathTracer {
   // bit the whole-frame render's. finishSlice() after each slice completed: it adds the slice's stage times
   // and wall time to the frame's, and returns the whole frame's stats after the last slice (else nullptr).
   // Any change of settings or camera abandons a partial frame (its paths are rendered again).
-  void recordSlice(VkCommandBuffer cmd, uint32_t paths);
+  // Returns the paths the slice holds.
+  uint32_t recordSlice(VkCommandBuffer cmd, uint32_t paths);
   const FrameStats* finishSlice(double wallMs);
   // Paths of a whole frame, and the first path id of the next slice (0: the next slice starts a frame).
   uint32_t framePaths() const { return buffers_->pathCount; }
   uint32_t nextSlicePath() const { return sliceNext_; }
-  // Heatmaps and detailed statistics read every path of a frame at once: such frames render in one slice
-  // (recordSlice records the whole frame whatever it is asked for).
+  // Heatmaps read every path of a frame at once: such frames render in one slice (recordSlice records the
+  // whole frame whatever it is asked for). Detailed statistics read each slice's part back.
   bool needsWholeFrames() const;
 
   // Detailed statistics (per-path steps, prediction accuracy) cost readbacks; off for timed runs.
@@ -75,16 +79,18 @@ class PathTracer {
   std::vector<glm::vec3> readRadiance() const;      // accumulated mean radiance per pixel (linear)
 
  private:
+  PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared_ptr<GpuSceneData> gpuScene,
+             const Settings& settings, const Viewpoint& camera);
   void allocate();
   void apply(const SettingsChange& change);
   void checkSupported(const Settings& settings) const;
   bool usesRt() const { return settings_.tracer == Tracer::Rt; }
   void recordFrameBlock(VkCommandBuffer cmd, uint32_t firstPath, uint32_t paths);
-  void recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push, uint32_t paths);
-  void recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, uint32_t paths);
+  void recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push, PathRange slice);
+  void recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, PathRange slice);
   void addSliceStages(const std::vector<StageTime>& slice);
   const FrameStats& completeFrame();
-  void recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce);
+  void recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce, PathRange slice);
   void recordCountersToHost(VkCommandBuffer cmd);
   void gatherCounters();
   uint32_t countedBounces() const;
@@ -92,7 +98,7 @@ class PathTracer {
   const VulkanContext& ctx_;
   Settings settings_;
   Viewpoint camera_;
-  std::unique_ptr<GpuSceneData> scene_;
+  std::shared_ptr<GpuSceneData> scene_;
   std::unique_ptr<PathBuffers> buffers_;
   std::unique_ptr<PathSorter> pathSorter_;
   std::unique_ptr<HeatmapPass> heatmap_;

@@ -31,7 +31,7 @@ void main() {
     shadePath(f.scene, p, hit, b, f.bounceCount, rng);
     radiance = addBounceRadiance(radiance, b, p.radiance);
   }
-  f.hits.steps.v[id] = steps;
+  f.hits.steps.v[gl_GlobalInvocationID.x] = steps;  // by slot, in dispatch order like the wavefront's
   f.results.v[id] = vec4(radiance, 1.0);
   countRays(rays);
 }

@@ -19,7 +19,7 @@ void main() {
     shadePath(f.scene, p, hit, b, f.bounceCount, rng);
     radiance = addBounceRadiance(radiance, b, p.radiance);
   }
-  f.hits.steps.v[id] = 0u;
+  f.hits.steps.v[gl_LaunchIDEXT.x] = 0u;
   f.results.v[id] = vec4(radiance, 1.0);
   rtCountRays(f.counters, 0u, rays);
 }

@@ -58,6 +58,8 @@ void LabWindow::loadSceneOrThrow(const std::string& nameOrPath) {
   auto tracer = std::make_unique<PathTracer>(*ctx_, loaded.scene, start, loaded.view);
   vkDeviceWaitIdle(ctx_->device());
   tracer_ = std::move(tracer);
+  live_->sceneChanged();
+  live_->restarted();
   scene_ = std::move(loaded);
   settings_.scene = nameOrPath;
   settings_.view = scene_.view.name;

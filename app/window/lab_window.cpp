@@ -11,6 +11,7 @@
 #include "app/setting_flags.h"
 #include "app/window/frame_log.h"
 #include "app/window/lab_input.h"
+#include "app/window/live_render.h"
 #include "app/window/presenter.h"
 #include "app/window/swapchain.h"
 #include "renderer/heatmap_rules.h"
@@ -53,6 +54,7 @@ LabWindow::LabWindow(const WindowOptions& options)
 LabWindow::~LabWindow() {
   if (ctx_) vkDeviceWaitIdle(ctx_->device());
   tracer_.reset();
+  live_.reset();
   presenter_.reset();
   layer_.reset();
   input_.reset();
@@ -123,6 +125,7 @@ void LabWindow::openWindow() {
   input_ = std::make_unique<LabInput>(window_->handle());
   layer_ = std::make_unique<ImGuiLayer>(*ctx_, window_->handle(), *swapchain_);
   presenter_ = std::make_unique<Presenter>(*ctx_, *swapchain_, *layer_);
+  live_ = std::make_unique<LiveRender>(*ctx_, options_.renderBudgetMs);
 
   resetCamera(scene_.view);
   syncTracer();
@@ -184,31 +187,41 @@ bool LabWindow::frame() {
   ImGui::Render();
   handleRequests(requests);
   updateCamera(seconds);
-  syncTracer();
+  const bool restarted = syncTracer();
+  if (restarted) live_->restarted();
 
-  PresentedFrame shown = presenter_->drawFrame(*tracer_, ImGui::GetDrawData(), !pendingWindowShot_.empty(),
+  // This UI frame's share of the render (a slice or a preview), then the panels over what is shown. A
+  // window screenshot waits for a UI frame that completed a render frame, so it shows that frame.
+  const RenderTurn turn = live_->turn(*tracer_, scene_.scene);
+  const bool capture = turn.frameDone && !pendingWindowShot_.empty();
+  PresentedFrame shown = presenter_->drawFrame(live_->shown(*tracer_), ImGui::GetDrawData(), capture,
                                                heatmapShown(settings_) != HeatmapView::None);
   recreate_ = shown.recreateSwapchain;
-  if (!shown.rendered) return true;
-  ui_.onFrame(tracer_->settings(), tracer_->finishFrame(shown.wallMs));
+  ++uiFrames_;
   if (frameLog_) {
     UiFrameRecord r;
     r.uiMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - now).count();
-    r.renderMs = shown.wallMs;
-    r.frameDone = true;
-    r.restarted = tracer_->accumulatedFrames() == 1;
-    r.slicePaths = r.framePaths = tracer_->framePaths();
+    r.renderMs = turn.renderMs;
+    r.frameDone = turn.frameDone != nullptr;
+    r.preview = turn.preview;
+    r.restarted = restarted;
+    r.slicePaths = turn.slicePaths;
+    r.framePaths = tracer_->framePaths();
+    r.previewWidth = turn.previewWidth, r.previewHeight = turn.previewHeight;
     frameLog_->write(r);
   }
+  if (!turn.frameDone) return true;
+  // Statistics, screenshots and the script's frame count follow whole render frames only.
+  ui_.onFrame(tracer_->settings(), *turn.frameDone);
   ++frames_;
-  wallMsTotal_ += shown.wallMs;
+  wallMsTotal_ += turn.frameDone->wallMs;
   saveScreenshots(shown);
   if (script_) script_->frameDone();
   return true;
 }
 
 // The render is the window's size times the resolution scale; the renderer restarts only what must.
-void LabWindow::syncTracer() {
+bool LabWindow::syncTracer() {
   const VkExtent2D extent = swapchain_->extent();
   Settings want = settings_;
   auto scaled = [&](uint32_t size) {
@@ -218,16 +231,19 @@ void LabWindow::syncTracer() {
   want.width = scaled(extent.width);
   want.height = scaled(extent.height);
   settings_.width = want.width, settings_.height = want.height;
+  bool changed = false;
   if (!tracer_) {
     tracer_ = std::make_unique<PathTracer>(*ctx_, scene_.scene, want, camera_.viewpoint());
+    changed = true;
   } else {
-    if (!(want == tracer_->settings())) tracer_->applySettings(want);
-    if (!sameCamera(camera_.viewpoint(), tracer_->camera())) tracer_->setCamera(camera_.viewpoint());
+    if (!(want == tracer_->settings())) tracer_->applySettings(want), changed = true;
+    if (!sameCamera(camera_.viewpoint(), tracer_->camera())) tracer_->setCamera(camera_.viewpoint()), changed = true;
   }
   tracer_->setDetailedStats(view_.detailedStats);
   int w = 0, h = 0;
   window_->windowSize(&w, &h);
   ini_.width = w, ini_.height = h;
+  return changed && tracer_->accumulatedFrames() == 0;  // a change that kept the image needs no preview
 }
 
 void LabWindow::updateCamera(float seconds) { camera_.update(input_->cameraInput(seconds)); }
@@ -250,13 +266,13 @@ void LabWindow::resetCamera(const Viewpoint& view) {
 }
 
 void LabWindow::printSummary() const {
-  if (frames_ == 0) return;
+  if (frames_ == 0 || uiFrames_ == 0) return;
   std::fprintf(stderr,
-               "raylab: %llu frames at %ux%u (render %ux%u): %.1f ms per frame submitted (render + panels), "
-               "%.1f ms per loop turn (%.1f fps)\n",
+               "raylab: %llu render frames at %ux%u (render %ux%u): %.1f ms of render work each; %llu UI frames, "
+               "%.1f ms per UI frame (%.1f fps)\n",
                static_cast<unsigned long long>(frames_), swapchain_->extent().width, swapchain_->extent().height,
-               settings_.width, settings_.height, wallMsTotal_ / frames_, loopMsTotal_ / frames_,
-               1000.0 * frames_ / loopMsTotal_);
+               settings_.width, settings_.height, wallMsTotal_ / frames_, static_cast<unsigned long long>(uiFrames_),
+               loopMsTotal_ / uiFrames_, 1000.0 * uiFrames_ / loopMsTotal_);
 }
 
 }  // namespace raylab

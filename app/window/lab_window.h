@@ -27,6 +27,7 @@ class Presenter;
 class PathTracer;
 class LabInput;
 class FrameLog;
+class LiveRender;
 struct PresentedFrame;
 
 class LabWindow {
@@ -43,7 +44,7 @@ class LabWindow {
   void openWindow();
   bool frame();
   void recreateSwapchain();
-  void syncTracer();
+  bool syncTracer();  // true when the render restarted its accumulation
   void updateCamera(float seconds);
   void fillCameraModel();
   void printSummary() const;
@@ -81,6 +82,7 @@ class LabWindow {
   std::unique_ptr<ImGuiLayer> layer_;
   std::unique_ptr<Presenter> presenter_;
   std::unique_ptr<PathTracer> tracer_;
+  std::unique_ptr<LiveRender> live_;
   std::unique_ptr<FrameLog> frameLog_;
 
   bool quit_ = false;
@@ -89,6 +91,7 @@ class LabWindow {
   std::string pendingRenderShot_, pendingWindowShot_;  // names of screenshots due after this frame
   std::chrono::steady_clock::time_point lastFrame_;
   uint64_t frames_ = 0;
+  uint64_t uiFrames_ = 0;
   double wallMsTotal_ = 0.0, loopMsTotal_ = 0.0;
 };
 

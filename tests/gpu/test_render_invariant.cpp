@@ -94,9 +94,11 @@ TEST_P(SortInvariant, EverySortPolicyRendersTheUnsortedImage) {
 // the unsorted wavefront, every sort policy's sorted wavefront and the megakernel. Rays and stage names of a
 // sliced frame are those of the whole frame, so its statistics describe whole frames.
 std::vector<glm::vec3> renderSlicedRadiance(const VulkanContext& ctx, const Scene& scene, const Settings& settings,
-                                            const Viewpoint& view, std::vector<FrameStats>* frames) {
+                                            const Viewpoint& view, std::vector<FrameStats>* frames,
+                                            bool detailed = false) {
   const uint32_t sizes[] = {1, 37, 300, 64, 1000};
   PathTracer tracer(ctx, scene, settings, view);
+  tracer.setDetailedStats(detailed);
   size_t next = 0;
   for (uint32_t f = 0; f < settings.frames; ++f) {
     const FrameStats* done = nullptr;
@@ -160,6 +162,51 @@ TEST_P(SortInvariant, SlicedFramesRenderTheWholeFrameImage) {
     EXPECT_EQ(sliced.back().samplesPerPixel, wholeStats.samplesPerPixel) << what;
     if (s.sortPolicy != SortPolicy::Auto) {  // auto's second frame sorts where its (timed) costs say
       EXPECT_EQ(stageNames(sliced.back()), stageNames(wholeStats)) << what;
+    }
+  }
+}
+
+// Detailed statistics of a sliced frame are read back slice by slice into the whole frame's readbacks:
+// unsorted, slot order is path order, so the per-bounce warp efficiency and traversal steps equal the whole
+// frame's exactly (wavefront and megakernel); sorted with a key that learns nothing (fixed), the cell-hit
+// rate and distinct keys do too (prediction is per path; only the sort order within a slice differs).
+TEST_P(SortInvariant, SlicedFramesKeepDetailedStatistics) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("hall");
+  Settings base;
+  base.width = 37;
+  base.height = 19;
+  base.bounces = 3;
+  base.frames = 1;
+  Settings sorted = base;
+  sorted.strategy = KeyStrategy::Fixed;
+  sorted.sort = GetParam();
+  Settings mega = base;
+  mega.kernel = Kernel::Megakernel;
+  for (const Settings& s : {base, sorted, mega}) {
+    PathTracer whole(ctx(), scene, s, view);
+    whole.setDetailedStats(true);
+    const FrameStats expected = whole.renderFrame();
+    std::vector<FrameStats> sliced;
+    renderSlicedRadiance(ctx(), scene, s, view, &sliced, true);
+    const FrameStats& got = sliced.back();
+    const std::string what = toString(s.kernel) + " " + toString(s.strategy);
+    ASSERT_EQ(got.bounces.size(), expected.bounces.size()) << what;
+    for (size_t b = 0; b < got.bounces.size(); ++b) {
+      const BounceStats &g = got.bounces[b], &e = expected.bounces[b];
+      EXPECT_EQ(g.rays, e.rays) << what << " bounce " << b;
+      if (s.sorts()) {
+        if (b > 0) {
+          EXPECT_GE(e.cellHitRate, 0.0) << what << " bounce " << b << ": measured";
+        }
+        EXPECT_EQ(g.cellHitRate, e.cellHitRate) << what << " bounce " << b;
+        EXPECT_EQ(g.distinctKeys, e.distinctKeys) << what << " bounce " << b;
+        EXPECT_EQ(g.predictionErrorMedian, e.predictionErrorMedian) << what << " bounce " << b;
+      } else {
+        EXPECT_GT(e.virtualWarpEfficiency, 0.0) << what << " bounce " << b;
+        EXPECT_EQ(g.virtualWarpEfficiency, e.virtualWarpEfficiency) << what << " bounce " << b;
+        EXPECT_EQ(g.meanTraversalSteps, e.meanTraversalSteps) << what << " bounce " << b;
+      }
     }
   }
 }
