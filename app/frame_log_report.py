@@ -5,7 +5,8 @@ usage: python3 app/frame_log_report.py FRAME_LOG [--skip N] [--json]
   --skip N   leave out the first N UI frames (start-up: pipelines, first allocation)
   --json     one JSON object instead of the text table
 Reports, over the UI frames: p50/p95/max of ui_ms (and the UI rate they mean), the render work per UI
-frame, whole render frames completed, and after each change that restarted the accumulation ("restarted"):
+frame, whole render frames completed, the window's own cost (ui_ms - render_ms) in the UI frames that
+rebuilt the panels and presented, and after each change that restarted the accumulation ("restarted"):
 time to preview (the UI frames from the change up to and including the first one that showed a preview or
 a completed frame) and time to the first whole frame (up to the first frame_done). A line that is not a
 JSON object with the required fields stops the report with a message naming the line (exit 1).
@@ -71,10 +72,17 @@ def report(frames):
         "ui_ms_max": max(ui),
         "ui_hz_at_p50": 1000.0 / percentile(ui, 50) if percentile(ui, 50) > 0 else None,
         "render_ms_p50": percentile(render, 50),
+        "render_ms_p95": percentile(render, 95),
         "whole_frames": sum(1 for r in frames if r["frame_done"]),
         "preview_frames": sum(1 for r in frames if r.get("preview")),
         "changes": len(previews),
     }
+    # UI frames that rebuilt the panels and presented (the window's own cost shows in these; the others
+    # only rendered their slice). Logs of windows that present every frame have no "panels" field.
+    drawn = [r["ui_ms"] - r["render_ms"] for r in frames if r.get("panels", True) and r.get("presented", True)]
+    if drawn:
+        out.update({"panel_frames": len(drawn), "panel_ms_p50": percentile(drawn, 50),
+                    "panel_ms_p95": percentile(drawn, 95)})
     if previews:
         out.update({"time_to_preview_ms_p50": percentile(previews, 50), "time_to_preview_ms_max": max(previews),
                     "time_to_whole_frame_ms_p50": percentile(wholes, 50),

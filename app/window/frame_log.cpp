@@ -17,9 +17,10 @@ FrameLog::~FrameLog() {
 void FrameLog::write(const UiFrameRecord& r) {
   std::fprintf(file_,
                "{\"ui_frame\":%llu,\"ui_ms\":%.3f,\"render_ms\":%.3f,\"frame_done\":%s,\"preview\":%s,"
-               "\"restarted\":%s,\"slice_paths\":%u,\"frame_paths\":%u,\"preview_width\":%u,\"preview_height\":%u}\n",
+               "\"restarted\":%s,\"panels\":%s,\"presented\":%s,\"slice_paths\":%u,\"frame_paths\":%u,\"preview_width\":%u,\"preview_height\":%u}\n",
                static_cast<unsigned long long>(frames_++), r.uiMs, r.renderMs, r.frameDone ? "true" : "false",
-               r.preview ? "true" : "false", r.restarted ? "true" : "false", r.slicePaths, r.framePaths,
+               r.preview ? "true" : "false", r.restarted ? "true" : "false", r.panels ? "true" : "false",
+               r.presented ? "true" : "false", r.slicePaths, r.framePaths,
                r.previewWidth, r.previewHeight);
   std::fflush(file_);  // a log of a run that is killed still ends on a whole line
 }

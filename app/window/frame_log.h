@@ -16,6 +16,8 @@ struct UiFrameRecord {
   bool frameDone = false;     // a whole render frame completed in it (statistics and screenshots then)
   bool preview = false;       // a coarse preview was rendered and shown in it
   bool restarted = false;     // a change of camera or settings restarted the accumulation in it
+  bool panels = false;        // the panels were rebuilt in it (after input, or when what they show changed)
+  bool presented = false;     // the window was drawn and presented in it
   uint32_t slicePaths = 0;    // paths of the render slice submitted in it (0: none)
   uint32_t framePaths = 0;    // paths of a whole render frame
   uint32_t previewWidth = 0, previewHeight = 0;  // size of the preview rendered in it

@@ -165,6 +165,8 @@ int LabWindow::run() {
 
 // One turn of the loop; false ends it. Minimised, it waits for events instead of rendering.
 bool LabWindow::frame() {
+  const auto start = std::chrono::steady_clock::now();
+  const Settings before = settings_;
   glfwPollEvents();
   if (window_->shouldClose() || quit_) return false;
   if (window_->minimized()) {
@@ -180,12 +182,23 @@ bool LabWindow::frame() {
   const auto now = std::chrono::steady_clock::now();
   float seconds = std::min(std::chrono::duration<float>(now - lastFrame_).count(), 0.25f);
   lastFrame_ = now;
-  layer_->newFrame();
-  handleHotkeys();
-  fillCameraModel();
-  UiRequests requests = ui_.draw(settings_, view_, cameraModel_);
-  ImGui::Render();
-  handleRequests(requests);
+  // The panels are rebuilt (and the window presented) only when something they show may have changed:
+  // input within the last kPanelSettleSeconds (ImGui's hover delays and animations play out in it), a
+  // script or panel change of settings, or a render frame, preview or restart in the last UI frame. Other
+  // UI frames only render their slice: on lavapipe a rebuilt and presented window costs tens of
+  // milliseconds (measured: docs/lab-window.md), which a live render's UI frames cannot afford each time.
+  if (input_->takeActivity()) lastInput_ = now;
+  const bool drawPanels = panelsDirty_ || !(settings_ == before) ||
+                          std::chrono::duration<double>(now - lastInput_).count() < kPanelSettleSeconds;
+  panelsDirty_ = false;
+  if (drawPanels) {
+    layer_->newFrame();
+    handleHotkeys();
+    fillCameraModel();
+    UiRequests requests = ui_.draw(settings_, view_, cameraModel_);
+    ImGui::Render();
+    handleRequests(requests);
+  }
   updateCamera(seconds);
   const bool restarted = syncTracer();
   if (restarted) live_->restarted();
@@ -194,13 +207,21 @@ bool LabWindow::frame() {
   // window screenshot waits for a UI frame that completed a render frame, so it shows that frame.
   const RenderTurn turn = live_->turn(*tracer_, scene_.scene);
   const bool capture = turn.frameDone && !pendingWindowShot_.empty();
-  PresentedFrame shown = presenter_->drawFrame(live_->shown(*tracer_), ImGui::GetDrawData(), capture,
-                                               heatmapShown(settings_) != HeatmapView::None);
-  recreate_ = shown.recreateSwapchain;
+  // What the panels show changes with a completed frame or a restart: they are rebuilt next UI frame.
+  panelsDirty_ = restarted || turn.preview || turn.frameDone;
+  PresentedFrame shown;
+  if (drawPanels || turn.preview || turn.frameDone) {
+    shown = presenter_->drawFrame(live_->shown(*tracer_), ImGui::GetDrawData(), capture,
+                                  heatmapShown(settings_) != HeatmapView::None);
+    recreate_ = shown.recreateSwapchain;
+    panelsDirty_ = panelsDirty_ || recreate_;
+  }
   ++uiFrames_;
   if (frameLog_) {
     UiFrameRecord r;
-    r.uiMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - now).count();
+    r.uiMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    r.panels = drawPanels;
+    r.presented = shown.rendered;
     r.renderMs = turn.renderMs;
     r.frameDone = turn.frameDone != nullptr;
     r.preview = turn.preview;
