@@ -182,13 +182,15 @@ bool LabWindow::frame() {
   const auto now = std::chrono::steady_clock::now();
   float seconds = std::min(std::chrono::duration<float>(now - lastFrame_).count(), 0.25f);
   lastFrame_ = now;
-  // The panels are rebuilt (and the window presented) only when something they show may have changed:
-  // input within the last kPanelSettleSeconds (ImGui's hover delays and animations play out in it), a
-  // script or panel change of settings, or a render frame, preview or restart in the last UI frame. Other
-  // UI frames only render their slice: on lavapipe a rebuilt and presented window costs tens of
-  // milliseconds (measured: docs/lab-window.md), which a live render's UI frames cannot afford each time.
+  // The panels are rebuilt and the window presented only when something on it may have changed: input
+  // within the last kPanelSettleSeconds (ImGui's hover delays and animations play out in it), a script or
+  // panel change of settings, a preview or restart in the last UI frame, or completed render frames not yet
+  // shown, at most every kImageRefreshSeconds. Other UI frames only render their slice: on lavapipe a
+  // presented window costs tens of milliseconds whether or not the panels are rebuilt (docs/lab-window.md),
+  // which the UI frames of a live render cannot afford each time.
   if (input_->takeActivity()) lastInput_ = now;
-  const bool drawPanels = panelsDirty_ || !(settings_ == before) ||
+  const bool refresh = imagePending_ && std::chrono::duration<double>(now - lastPresent_).count() >= kImageRefreshSeconds;
+  const bool drawPanels = panelsDirty_ || refresh || !(settings_ == before) ||
                           std::chrono::duration<double>(now - lastInput_).count() < kPanelSettleSeconds;
   panelsDirty_ = false;
   if (drawPanels) {
@@ -207,14 +209,18 @@ bool LabWindow::frame() {
   // window screenshot waits for a UI frame that completed a render frame, so it shows that frame.
   const RenderTurn turn = live_->turn(*tracer_, scene_.scene);
   const bool capture = turn.frameDone && !pendingWindowShot_.empty();
-  // What the panels show changes with a completed frame or a restart: they are rebuilt next UI frame.
-  panelsDirty_ = restarted || turn.preview || turn.frameDone;
+  // A restart or preview changes what the panels show: they are rebuilt next UI frame. A completed frame's
+  // image and statistics are shown by the next refresh.
+  panelsDirty_ = restarted || turn.preview;
+  imagePending_ = imagePending_ || turn.frameDone;
   PresentedFrame shown;
-  if (drawPanels || turn.preview || turn.frameDone) {
+  if (drawPanels || turn.preview || capture) {
     shown = presenter_->drawFrame(live_->shown(*tracer_), ImGui::GetDrawData(), capture,
                                   heatmapShown(settings_) != HeatmapView::None);
     recreate_ = shown.recreateSwapchain;
     panelsDirty_ = panelsDirty_ || recreate_;
+    lastPresent_ = now;
+    imagePending_ = imagePending_ && !drawPanels;  // a preview alone leaves the render's frame unshown
   }
   ++uiFrames_;
   if (frameLog_) {

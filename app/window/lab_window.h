@@ -89,9 +89,10 @@ class LabWindow {
   bool recreate_ = false;
   int framebufferWidth_ = 0, framebufferHeight_ = 0;  // what the swapchain was made for
   std::string pendingRenderShot_, pendingWindowShot_;  // names of screenshots due after this frame
-  std::chrono::steady_clock::time_point lastFrame_, lastInput_;
-  static constexpr double kPanelSettleSeconds = 1.0;
+  std::chrono::steady_clock::time_point lastFrame_, lastInput_, lastPresent_;
+  static constexpr double kPanelSettleSeconds = 1.0, kImageRefreshSeconds = 0.1;
   bool panelsDirty_ = true;
+  bool imagePending_ = false;  // a render frame completed since the window was last presented
   uint64_t frames_ = 0;
   uint64_t uiFrames_ = 0;
   double wallMsTotal_ = 0.0, loopMsTotal_ = 0.0;
