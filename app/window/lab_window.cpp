@@ -196,6 +196,7 @@ bool LabWindow::frame() {
   const bool drawPanels = panelsDirty_ || refresh || !(settings_ == before) ||
                           std::chrono::duration<double>(now - lastInput_).count() < kPanelSettleSeconds;
   panelsDirty_ = false;
+  const auto panelsStart = std::chrono::steady_clock::now();
   if (drawPanels) {
     layer_->newFrame();
     handleHotkeys();
@@ -210,7 +211,9 @@ bool LabWindow::frame() {
 
   // This UI frame's share of the render (a slice or a preview), then the panels over what is shown. A
   // window screenshot waits for a UI frame that completed a render frame, so it shows that frame.
-  const RenderTurn turn = live_->turn(*tracer_, scene_.scene);
+  // A UI frame that presents spends the panels' time and a present besides its slice: the slice gets less.
+  const double panelsMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - panelsStart).count();
+  const RenderTurn turn = live_->turn(*tracer_, scene_.scene, drawPanels ? panelsMs + presentMs_ : 0.0);
   const bool capture = turn.frameDone && !pendingWindowShot_.empty();
   // A restart or preview changes what the panels show: they are rebuilt next UI frame. A completed frame's
   // image and statistics are shown by the next refresh.
@@ -218,8 +221,11 @@ bool LabWindow::frame() {
   imagePending_ = imagePending_ || turn.frameDone;
   PresentedFrame shown;
   if (drawPanels || turn.preview || capture) {
+    const auto presentStart = std::chrono::steady_clock::now();
     shown = presenter_->drawFrame(live_->shown(*tracer_), ImGui::GetDrawData(), capture,
                                   heatmapShown(settings_) != HeatmapView::None);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - presentStart).count();
+    presentMs_ += 0.5 * (ms - presentMs_);  // smoothed: one slow present does not starve the next slices
     recreate_ = shown.recreateSwapchain;
     panelsDirty_ = panelsDirty_ || recreate_;
     lastPresent_ = now;

@@ -92,7 +92,8 @@ class LabWindow {
   std::chrono::steady_clock::time_point lastFrame_, lastInput_, lastPresent_;
   static constexpr double kPanelSettleSeconds = 1.0, kImageRefreshSeconds = 0.1;
   bool panelsDirty_ = true;
-  bool imagePending_ = false;  // a render frame completed since the window was last presented
+  bool imagePending_ = false;
+  double presentMs_ = 0.0;  // what presenting the window took, smoothed (LiveRender leaves it room)  // a render frame completed since the window was last presented
   uint64_t frames_ = 0;
   uint64_t uiFrames_ = 0;
   double wallMsTotal_ = 0.0, loopMsTotal_ = 0.0;

@@ -15,11 +15,15 @@ namespace {
 // device (4096 paths: a few milliseconds on two lavapipe cores at 4 bounces).
 constexpr uint32_t kSliceGranule = RL_PATH_GROUP_SIZE;
 constexpr uint32_t kFirstSlicePaths = 4096;
+constexpr uint32_t kCostBlock = 1024;
 // The preview's width and height are the render's divided by 2..16; 4 before anything was measured.
 constexpr uint32_t kMinPreviewDivisor = 2, kMaxPreviewDivisor = 16, kFirstPreviewDivisor = 4;
 // Smoothing of the measured milliseconds per path: a new measurement counts half, so a setting that makes
 // paths dearer (more bounces) is followed within two or three UI frames.
 constexpr double kSmoothing = 0.5;
+// A slice keeps at least this share of the budget whatever the rest of the UI frame costs, so the render
+// still progresses while the panels are busy.
+constexpr double kMinSliceShare = 0.25;
 
 double smoothed(double previous, double measured) {
   return previous > 0.0 ? previous + kSmoothing * (measured - previous) : measured;
@@ -45,32 +49,59 @@ bool LiveRender::wholeFrameFits(const PathTracer& tracer) const {
   return msPerPath_ > 0.0 && double(tracer.framePaths()) * msPerPath_ <= budgetMs_;
 }
 
-uint32_t LiveRender::slicePaths(const PathTracer& tracer) const {
-  if (msPerPath_ <= 0.0) return std::min(kFirstSlicePaths, tracer.framePaths());
-  const double fit = budgetMs_ / msPerPath_;
-  if (fit >= double(tracer.framePaths())) return tracer.framePaths();
-  return std::max(kSliceGranule, uint32_t(fit) / kSliceGranule * kSliceGranule);
+// As many paths from the next slice's first as the cost per path of their blocks (or, where not measured,
+// the smoothed average) says fit `budgetMs`, in whole work groups.
+uint32_t LiveRender::slicePaths(const PathTracer& tracer, double budgetMs) const {
+  const uint32_t total = tracer.framePaths(), first = tracer.nextSlicePath();
+  if (msPerPath_ <= 0.0) return std::min(kFirstSlicePaths, total);
+  if (first == 0 && double(total) * msPerPath_ <= budgetMs) return total;
+  double spent = 0.0;
+  uint32_t end = first;
+  while (end < total) {
+    const size_t block = end / kCostBlock;
+    const uint32_t blockEnd = std::min<uint32_t>(total, uint32_t(block + 1) * kCostBlock);
+    const double cost = block < blockMsPerPath_.size() && blockMsPerPath_[block] > 0.0 ? blockMsPerPath_[block] : msPerPath_;
+    const double all = double(blockEnd - end) * cost;
+    if (spent + all > budgetMs) {
+      end += uint32_t((budgetMs - spent) / cost);
+      break;
+    }
+    spent += all;
+    end = blockEnd;
+  }
+  if (end >= total) return total - first;
+  return std::max(kSliceGranule, (end - first) / kSliceGranule * kSliceGranule);
 }
 
-RenderTurn LiveRender::turn(PathTracer& tracer, const Scene& scene) {
+void LiveRender::learnSliceCost(const PathTracer& tracer, uint32_t first, uint32_t paths, double ms) {
+  const double perPath = ms / paths;
+  msPerPath_ = smoothed(msPerPath_, perPath);
+  blockMsPerPath_.resize((tracer.framePaths() + kCostBlock - 1) / kCostBlock, 0.0);
+  for (uint32_t b = first / kCostBlock; b < blockMsPerPath_.size() && b * kCostBlock < first + paths; ++b)
+    blockMsPerPath_[b] = perPath;
+}
+
+RenderTurn LiveRender::turn(PathTracer& tracer, const Scene& scene, double otherWorkMs) {
   RenderTurn turn;
   if (previewDue_) {
     previewDue_ = false;
     showingPreview_ = false;
+    blockMsPerPath_.assign(blockMsPerPath_.size(), 0.0);  // another view or setting: other costs
     // A frame that fits the budget is shown whole in this very UI frame: no preview needed.
     if (!wholeFrameFits(tracer) && !tracer.needsWholeFrames()) {
       renderPreview(tracer, scene, &turn);
       return turn;  // the preview was this UI frame's render work
     }
   }
-  const uint32_t want = slicePaths(tracer);
+  const uint32_t want = slicePaths(tracer, std::max(kMinSliceShare * budgetMs_, budgetMs_ - otherWorkMs));
+  const uint32_t first = tracer.nextSlicePath();
   const auto start = std::chrono::steady_clock::now();
   ctx_.submitAndWait([&](VkCommandBuffer cmd) {
     tinyPass_->record(cmd);
     turn.slicePaths = tracer.recordSlice(cmd, want);
   });
   turn.renderMs = msSince(start);
-  msPerPath_ = smoothed(msPerPath_, turn.renderMs / turn.slicePaths);
+  learnSliceCost(tracer, tracer.needsWholeFrames() ? 0 : first, turn.slicePaths, turn.renderMs);
   turn.frameDone = tracer.finishSlice(turn.renderMs);
   if (turn.frameDone) {
     showingPreview_ = false;

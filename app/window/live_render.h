@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "renderer/frame_stats.h"
 
@@ -46,18 +47,24 @@ class LiveRender {
   void restarted() { previewDue_ = true; }
   // The scene changed: the preview tracer of the old one goes.
   void sceneChanged();
-  // This UI frame's render work on `tracer` (whose scene is `scene`).
-  RenderTurn turn(PathTracer& tracer, const Scene& scene);
+  // This UI frame's render work on `tracer` (whose scene is `scene`). `otherWorkMs`: what the UI frame
+  // spends besides (panels, present), taken from the slice's budget so the whole UI frame keeps to it.
+  RenderTurn turn(PathTracer& tracer, const Scene& scene, double otherWorkMs);
   ShownImage shown(const PathTracer& tracer) const;
 
  private:
   bool wholeFrameFits(const PathTracer& tracer) const;
-  uint32_t slicePaths(const PathTracer& tracer) const;
+  uint32_t slicePaths(const PathTracer& tracer, double budgetMs) const;
+  void learnSliceCost(const PathTracer& tracer, uint32_t first, uint32_t paths, double ms);
   void renderPreview(const PathTracer& tracer, const Scene& scene, RenderTurn* turn);
 
   const VulkanContext& ctx_;
   double budgetMs_;
   double msPerPath_ = 0.0;         // slices' wall time per path, smoothed (0: not measured yet)
+  // Wall time per path of each block of kCostBlock paths, from the last slice over it (0: not measured
+  // since the last restart). Paths are in pixel order, so a slice over the sky costs a fraction of one over
+  // the geometry: sizing the next slice from the last one's average overshot the budget at such borders.
+  std::vector<double> blockMsPerPath_;
   double previewMsPerPath_ = 0.0;  // the same for previews
   std::unique_ptr<PathTracer> preview_;
   std::unique_ptr<TinyPass> tinyPass_;  // binds a 1x1 framebuffer before each render submission (tiny_pass.h)
