@@ -7,20 +7,18 @@
 #include <cstdio>
 #include <string>
 
+#include "app/window/live_render.h"
+
 namespace raylab {
 
-// What one turn of the window's loop did.
+// What one turn of the window's loop did besides its render work (RenderTurn: render_ms, frame_done,
+// preview, slice_paths, preview_width/height).
 struct UiFrameRecord {
   double uiMs = 0.0;          // the turn's wall time: events, panels, render work, blit, present
-  double renderMs = 0.0;      // wall time of the render submissions made in it (slices and preview)
-  bool frameDone = false;     // a whole render frame completed in it (statistics and screenshots then)
-  bool preview = false;       // a coarse preview was rendered and shown in it
   bool restarted = false;     // a change of camera or settings restarted the accumulation in it
   bool panels = false;        // the panels were rebuilt in it (after input, or when what they show changed)
   bool presented = false;     // the window was drawn and presented in it
-  uint32_t slicePaths = 0;    // paths of the render slice submitted in it (0: none)
   uint32_t framePaths = 0;    // paths of a whole render frame
-  uint32_t previewWidth = 0, previewHeight = 0;  // size of the preview rendered in it
 };
 
 class FrameLog {
@@ -31,7 +29,7 @@ class FrameLog {
   FrameLog(const FrameLog&) = delete;
   FrameLog& operator=(const FrameLog&) = delete;
 
-  void write(const UiFrameRecord& r);
+  void write(const UiFrameRecord& r, const RenderTurn& turn);
 
  private:
   std::FILE* file_ = nullptr;

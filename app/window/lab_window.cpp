@@ -12,6 +12,7 @@
 #include "app/window/frame_log.h"
 #include "app/window/lab_input.h"
 #include "app/window/live_render.h"
+#include "app/window/wall_clock.h"
 #include "app/window/presenter.h"
 #include "app/window/swapchain.h"
 #include "renderer/heatmap_rules.h"
@@ -156,7 +157,7 @@ int LabWindow::run() {
   }
   std::signal(SIGINT, oldInt);
   std::signal(SIGTERM, oldTerm);
-  loopMsTotal_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  loopMsTotal_ = msSince(started);
   vkDeviceWaitIdle(ctx_->device());
   printSummary();
   if (ctx_->validationErrors() > 0) {
@@ -212,8 +213,7 @@ bool LabWindow::frame() {
   // This UI frame's share of the render (a slice or a preview), then the panels over what is shown. A
   // window screenshot waits for a UI frame that completed a render frame, so it shows that frame.
   // A UI frame that presents spends the panels' time and a present besides its slice: the slice gets less.
-  const double panelsMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - panelsStart).count();
-  const RenderTurn turn = live_->turn(*tracer_, scene_.scene, drawPanels ? panelsMs + presentMs_ : 0.0);
+  const RenderTurn turn = live_->turn(*tracer_, scene_.scene, drawPanels ? msSince(panelsStart) + presentMs_ : 0.0);
   const bool capture = turn.frameDone && !pendingWindowShot_.empty();
   // A restart or preview changes what the panels show: they are rebuilt next UI frame. A completed frame's
   // image and statistics are shown by the next refresh.
@@ -224,8 +224,7 @@ bool LabWindow::frame() {
     const auto presentStart = std::chrono::steady_clock::now();
     shown = presenter_->drawFrame(live_->shown(*tracer_), ImGui::GetDrawData(), capture,
                                   heatmapShown(settings_) != HeatmapView::None);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - presentStart).count();
-    presentMs_ += 0.5 * (ms - presentMs_);  // smoothed: one slow present does not starve the next slices
+    presentMs_ += 0.5 * (msSince(presentStart) - presentMs_);  // smoothed: one slow present does not starve slices
     recreate_ = shown.recreateSwapchain;
     panelsDirty_ = panelsDirty_ || recreate_;
     lastPresent_ = now;
@@ -234,17 +233,12 @@ bool LabWindow::frame() {
   ++uiFrames_;
   if (frameLog_) {
     UiFrameRecord r;
-    r.uiMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    r.uiMs = msSince(start);
     r.panels = drawPanels;
     r.presented = shown.rendered;
-    r.renderMs = turn.renderMs;
-    r.frameDone = turn.frameDone != nullptr;
-    r.preview = turn.preview;
     r.restarted = restarted;
-    r.slicePaths = turn.slicePaths;
     r.framePaths = tracer_->framePaths();
-    r.previewWidth = turn.previewWidth, r.previewHeight = turn.previewHeight;
-    frameLog_->write(r);
+    frameLog_->write(r, turn);
   }
   if (!turn.frameDone) return true;
   // Statistics, screenshots and the script's frame count follow whole render frames only.

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "app/window/tiny_pass.h"
+#include "app/window/wall_clock.h"
 #include "renderer/path_tracer.h"
 #include "renderer/vk/vk_context.h"
 
@@ -27,10 +28,6 @@ constexpr double kMinSliceShare = 0.25;
 
 double smoothed(double previous, double measured) {
   return previous > 0.0 ? previous + kSmoothing * (measured - previous) : measured;
-}
-
-double msSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "app/window/imgui_layer.h"
 #include "app/window/render_image.h"
 #include "app/window/swapchain.h"
+#include "app/window/wall_clock.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
 
@@ -101,7 +102,7 @@ PresentedFrame Presenter::drawFrame(const ShownImage& shown, ImDrawData* ui, boo
   VK_CHECK(vkResetFences(ctx_.device(), 1, &fence_));
   VK_CHECK(vkQueueSubmit(ctx_.queue(), 1, &submit, fence_));
   VK_CHECK(vkWaitForFences(ctx_.device(), 1, &fence_, VK_TRUE, UINT64_MAX));
-  out.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  out.wallMs = msSince(start);
   out.rendered = true;
   if (captureWindow) {
     out.window = readCapture();
