@@ -9,10 +9,18 @@ Writes, per (scene, view) case, into BENCH_OUT_DIR:
   coherence_<case>.png   SIMT and virtual warp efficiency per strategy
   tracers_<case>.png     (sweeps with --tracers) frame and trace-after-first time of every cell, compute
                          tracer against the rt tracer and SER; the SER reordering hint in the title
+Sweeps over scene size (--scale-tris) or path length (--bounces 2,4,...) make a case per size and bounce
+count (<case> = scene-view-b<bounces>), draw only its stage breakdown, and add per view (and tracer):
+  crossover_triangles_<view>.png  frame time of every method over the unsorted wavefront's, the frame
+                         times themselves and the virtual warp efficiency of bounces >= 1 (device
+                         independent), against the triangle count (log), one column per bounce count; a
+                         dashed line where the BVH (nodes + triangles) passes the H200's 50 MB L2
+  crossover_bounces_<view>.png    the same ratios against the bounce count, one column per scene size
 Uses Debian's python3-matplotlib (run with /usr/bin/python3).
 """
 import csv
 import json
+import math
 import os
 import sys
 
@@ -20,6 +28,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 
 STAGES = ["generate", "trace", "learn", "shade", "keys", "oracle-trace", "sort", "reorder",
           "accumulate", "tonemap", "megakernel", "setup", "counters"]
@@ -37,8 +46,19 @@ def load(folder):
     return rows, curves
 
 
-def case_name(row):
-    return f'{os.path.splitext(os.path.basename(row["scene"]))[0]}-{row["view"]}'
+L2_BYTES = 50e6  # the H200's L2
+
+
+def scene_name(row):
+    """A glTF file's name without folder and extension; a built-in name as it is (temple-detail:1e6)."""
+    scene = row["scene"]
+    if scene.lower().endswith((".gltf", ".glb")):
+        scene = os.path.splitext(os.path.basename(scene))[0]
+    return scene.replace(":", "-")
+
+
+def case_name(row, with_bounces=False):
+    return f'{scene_name(row)}-{row["view"]}' + (f'-b{row["bounces"]}' if with_bounces else "")
 
 
 def num(row, key):
@@ -146,24 +166,141 @@ def tracers(rows, title, path):
     plt.close(fig)
 
 
+def is_baseline(row):
+    return row["kernel"] == "wavefront" and row["strategy"] == "none"
+
+
+def frame_ratios(rows):
+    """{(view, tracer): {label: [(triangles, bounces, ratio to the unsorted wavefront, frame ms)]}}."""
+    unsorted = {(r["view"], r["tracer"], r["scene"], r["bounces"]): num(r, "frame_ms_median")
+                for r in rows if is_baseline(r)}
+    series = {}
+    for r in rows:
+        base = unsorted.get((r["view"], r["tracer"], r["scene"], r["bounces"]))
+        if is_baseline(r) or not base or base <= 0:
+            continue
+        ms = num(r, "frame_ms_median")
+        series.setdefault((r["view"], r["tracer"]), {}).setdefault(r["label"], []).append(
+            (num(r, "triangles"), int(r["bounces"]), ms / base, ms))
+    return series
+
+
+def coherence_of(rows, label, bounces):
+    """[(triangles, virtual warp efficiency of bounces >= 1)] of one method, where measured."""
+    pts = [(num(r, "triangles"), num(r, "virtual_warp_efficiency_after_first")) for r in rows
+           if r["label"] == label and int(r["bounces"]) == bounces]
+    return sorted(p for p in pts if p[1] >= 0)
+
+
+def l2_crossing(rows):
+    """Triangle count at which the BVH passes L2_BYTES, interpolated in log space; None outside the data."""
+    points = sorted({(num(r, "triangles"), num(r, "bvh_bytes")) for r in rows})
+    for (t0, b0), (t1, b1) in zip(points, points[1:]):
+        if b0 < L2_BYTES <= b1 and t0 > 0 and b0 > 0:
+            f = (math.log(L2_BYTES) - math.log(b0)) / (math.log(b1) - math.log(b0))
+            return math.exp(math.log(t0) + f * (math.log(t1) - math.log(t0)))
+    return None
+
+
+def crossover_triangles(rows, methods, title, path):
+    counts = sorted({b for pts in methods.values() for _, b, _, _ in pts})
+    fig, axes = plt.subplots(3, len(counts), figsize=(4.2 * len(counts) + 1, 10.5), squeeze=False, sharex=True)
+    crossing = l2_crossing(rows)
+    unsorted_label = next(r["label"] for r in rows if is_baseline(r))
+    for col, bounces in enumerate(counts):
+        ratio_ax, ms_ax, vwe_ax = axes[0][col], axes[1][col], axes[2][col]
+        for i, (label, pts) in enumerate(sorted(methods.items())):
+            colour = f"C{i}"
+            pts = sorted(p for p in pts if p[1] == bounces)
+            ratio_ax.plot([p[0] for p in pts], [p[2] for p in pts], marker="o", color=colour, label=label)
+            ms_ax.plot([p[0] for p in pts], [p[3] for p in pts], marker="o", color=colour, label=label)
+            vwe = coherence_of(rows, label, bounces)
+            vwe_ax.plot([p[0] for p in vwe], [p[1] for p in vwe], marker="o", color=colour, label=label)
+        base = sorted((num(r, "triangles"), num(r, "frame_ms_median")) for r in rows
+                      if is_baseline(r) and int(r["bounces"]) == bounces)
+        ms_ax.plot([b[0] for b in base], [b[1] for b in base], marker="s", color="black", label="unsorted")
+        vwe = coherence_of(rows, unsorted_label, bounces)
+        vwe_ax.plot([p[0] for p in vwe], [p[1] for p in vwe], marker="s", color="black", label="unsorted")
+        vwe_ax.set_ylim(0, 1)
+        vwe_ax.set_xlabel("triangles")
+        ratio_ax.axhline(1.0, color="black", lw=0.8)
+        for ax in (ratio_ax, ms_ax, vwe_ax):
+            ax.set_xscale("log")
+            if crossing:
+                ax.axvline(crossing, color="grey", ls="--", lw=0.8)
+        if crossing:
+            ratio_ax.text(crossing, ratio_ax.get_ylim()[1], " BVH > 50 MB", fontsize=7, va="top", color="grey")
+        ratio_ax.set_title(f"{bounces} bounce{'s' if bounces != 1 else ''}", fontsize=9)
+        ms_ax.set_yscale("log")
+    axes[0][0].set_ylabel("frame time / unsorted wavefront")
+    axes[1][0].set_ylabel("frame time (ms, median)")
+    axes[2][0].set_ylabel("virtual warp efficiency, bounces >= 1")
+    axes[0][-1].legend(fontsize=7)
+    fig.suptitle(f"Where does sorting pay? {title}", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def crossover_bounces(rows, methods, title, path):
+    sizes = sorted({t for pts in methods.values() for t, _, _, _ in pts})
+    fig, axes = plt.subplots(1, len(sizes), figsize=(4.2 * len(sizes) + 1, 4.2), squeeze=False, sharey=True)
+    bvh = {num(r, "triangles"): num(r, "bvh_bytes") for r in rows}
+    for col, tris in enumerate(sizes):
+        ax = axes[0][col]
+        for label, pts in sorted(methods.items()):
+            pts = sorted((p[1], p[2]) for p in pts if p[0] == tris)
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], marker="o", label=label)
+        ax.axhline(1.0, color="black", lw=0.8)
+        ax.set_xscale("log", base=2)
+        ax.set_xticks(sorted({p[1] for pts in methods.values() for p in pts}))
+        ax.get_xaxis().set_major_formatter(matplotlib.ticker.ScalarFormatter())
+        ax.set_xlabel("bounces")
+        ax.set_title(f"{tris:.3g} triangles, BVH {bvh.get(tris, float('nan')) / 1e6:.3g} MB", fontsize=9)
+    axes[0][0].set_ylabel("frame time / unsorted wavefront")
+    axes[0][-1].legend(fontsize=7)
+    fig.suptitle(f"Sorting and the megakernel against path length — {title}", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def crossover_charts(folder, rows):
+    for (view, tracer), methods in frame_ratios(rows).items():
+        view_rows = [r for r in rows if r["view"] == view and r["tracer"] == tracer]
+        name = view + ("" if tracer == "compute" else f"-{tracer}")
+        title = f'{view}, {tracer} tracer, {rows[0]["width"]}x{rows[0]["height"]}, {rows[0]["device"]}'
+        if len({r["triangles"] for r in view_rows}) > 1:
+            crossover_triangles(view_rows, methods, title, os.path.join(folder, f"crossover_triangles_{name}.png"))
+        if len({r["bounces"] for r in view_rows}) > 1:
+            crossover_bounces(view_rows, methods, title, os.path.join(folder, f"crossover_bounces_{name}.png"))
+        print(f"crossover charts for {name} in {folder}")
+
+
 def main():
     if len(sys.argv) < 2:
         print(__doc__)
         return 2
     folder = sys.argv[1]
     rows, curves = load(folder)
+    several_bounces = len({r["bounces"] for r in rows}) > 1
+    scale_sweep = several_bounces or len({r["scene"] for r in rows if r["scene"].startswith("temple-detail")}) > 1
     cases = {}
     for r in rows:
-        cases.setdefault(case_name(r), []).append(r)
+        cases.setdefault(case_name(r, several_bounces), []).append(r)
     for name, case_rows in cases.items():
         title = f'{name}, {case_rows[0]["width"]}x{case_rows[0]["height"]}, {case_rows[0]["device"]}'
         stacked_stages(case_rows, title, os.path.join(folder, f"stages_{name}.png"))
+        if scale_sweep:
+            continue
         speed_accuracy(case_rows, title, os.path.join(folder, f"speed_accuracy_{name}.png"))
         equal_time(case_rows, curves, title, os.path.join(folder, f"equal_time_{name}.png"))
         coherence(case_rows, title, os.path.join(folder, f"coherence_{name}.png"))
         if len({r.get("tracer", "compute") for r in case_rows}) > 1:
             tracers(case_rows, title, os.path.join(folder, f"tracers_{name}.png"))
         print(f"charts for {name} in {folder}")
+    if scale_sweep:
+        crossover_charts(folder, rows)
     return 0
 
 

@@ -51,13 +51,14 @@ void writeCsvHeader(std::ofstream& csv) {
   for (const char* s : kStages) csv << "," << s << "_ms";
   csv << ",rays_per_second,simt_efficiency,virtual_warp_efficiency,virtual_warp_efficiency_after_first,"
          "prediction_error_mean,prediction_error_median,cell_hit_rate,key_bits,length_cache_bytes,final_rel_mse,"
-         "sort_policy,sorted_after\n";
+         "sort_policy,sorted_after,triangles,bvh_nodes,bvh_bytes,scene_bytes,bvh_build_ms,scene_load_ms,tracer_setup_ms,"
+         "sort_bits\n";
 }
 
 std::string csvQuote(const std::string& s) { return "\"" + s + "\""; }
 
 void writeCsvRow(std::ofstream& csv, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
-                 const CellResult& r) {
+                 const SceneFacts& scene, const CellResult& r) {
   const Settings& s = cell.settings;
   const auto& b = r.detailed.bounces;
   csv << csvQuote(ctx.info().name) << "," << csvQuote(ctx.info().driver) << "," << RAYLAB_GIT_REV << ","
@@ -78,7 +79,8 @@ void writeCsvRow(std::ofstream& csv, const VulkanContext& ctx, const BenchCell& 
       << r.finalRelMse << "," << toString(s.sortPolicy) << ",";
   // Which bounces the policy sorted after in the last timed frame, e.g. "YNY-" (- : the last bounce).
   for (size_t k = 0; k < r.sortedAfter.size(); ++k) csv << (k + 1 == r.sortedAfter.size() ? '-' : r.sortedAfter[k] ? 'Y' : 'N');
-  csv << "\n";
+  csv << "," << scene.triangles << "," << scene.bvhNodes << "," << scene.bvhBytes << "," << scene.sceneBytes << ","
+      << scene.bvhBuildMs << "," << scene.sceneLoadMs << "," << scene.tracerSetupMs << "," << s.sortBits << "\n";
   csv.flush();
 }
 
@@ -115,24 +117,43 @@ int runBenchCommand(const std::vector<std::string>& args) {
       if (c.caseIndex == ci) cells.push_back(&c);
     try {
       Settings caseSettings = cells.front()->settings;
+      auto msSince = [](std::chrono::steady_clock::time_point t) {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+      };
+      auto loadStart = std::chrono::steady_clock::now();
       LoadedScene loaded = loadSceneForSettings(caseSettings);
+      double loadMs = msSince(loadStart);
+      auto setupStart = std::chrono::steady_clock::now();
       PathTracer tracer(ctx, loaded.scene, caseSettings, loaded.view);
-      std::vector<glm::vec3> reference = renderReference(tracer, caseSettings, plan.referenceSpp);
-      std::vector<double> errorCurve = measureErrorCurve(tracer, caseSettings, plan.timedFrames, reference);
+      SceneFacts facts = sceneFactsOf(tracer.scene(), loadMs, msSince(setupStart));
+      std::fprintf(stderr, "%s: %llu triangles, BVH %.1f MB (built in %.0f ms), scene made in %.0f ms\n",
+                   loaded.scene.name.c_str(), static_cast<unsigned long long>(facts.triangles), facts.bvhBytes / 1e6,
+                   facts.bvhBuildMs, facts.sceneLoadMs);
+      // The reference and the error curve depend on the path length: made again for each bounce count.
+      uint32_t referenceBounces = 0;
+      std::vector<glm::vec3> reference;
+      std::vector<double> errorCurve;
       for (const BenchCell* cell : cells) {
+        if (cell->settings.bounces != referenceBounces) {
+          Settings group = caseSettings;
+          group.bounces = referenceBounces = cell->settings.bounces;
+          reference = renderReference(tracer, group, plan.referenceSpp);
+          errorCurve = measureErrorCurve(tracer, group, plan.timedFrames, reference);
+        }
         ++done;
         CellResult r = measureCell(tracer, cell->settings, plan.warmupFrames, plan.timedFrames, reference,
                                    errorCurve, plan.detailFrame);
-        writeCsvRow(csv, ctx, *cell, loaded.view.name, r);
+        writeCsvRow(csv, ctx, *cell, loaded.view.name, facts, r);
         nlohmann::json row = {{"device", toJson(ctx.info())}, {"git_revision", RAYLAB_GIT_REV},
                               {"view", loaded.view.name},      {"label", cell->label},
-                              {"settings", toJson(cell->settings)}, {"result", toJson(r)}};
+                              {"settings", toJson(cell->settings)}, {"scene", toJson(facts)},
+                              {"result", toJson(r)}};
         jsonl << row.dump() << "\n";
         jsonl.flush();
         double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "[%zu/%zu %.0fs] %s@%s %-32s frame %.2f ms, trace(b>=1) %.2f ms\n", done,
+        std::fprintf(stderr, "[%zu/%zu %.0fs] %s@%s b=%u %-32s frame %.2f ms, trace(b>=1) %.2f ms\n", done,
                      plan.cells.size(), elapsed, loaded.scene.name.c_str(), loaded.view.name.c_str(),
-                     cell->label.c_str(), r.frameMs.median, r.traceAfterFirstMs.median);
+                     cell->settings.bounces, cell->label.c_str(), r.frameMs.median, r.traceAfterFirstMs.median);
       }
     } catch (const std::exception& e) {
       failed += cells.size();

@@ -91,6 +91,25 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
   return r;
 }
 
+SceneFacts sceneFactsOf(const GpuSceneData& scene, double sceneLoadMs, double tracerSetupMs) {
+  SceneFacts f;
+  f.triangles = scene.triangleCount();
+  f.bvhNodes = scene.bvhStats().nodeCount;
+  f.bvhBytes = f.bvhNodes * sizeof(gpu::BvhNode) + f.triangles * sizeof(gpu::GpuTriangle);
+  f.sceneBytes = scene.memoryBytes();
+  f.bvhBuildMs = scene.bvhStats().buildMs;
+  f.sceneLoadMs = sceneLoadMs;
+  f.tracerSetupMs = tracerSetupMs;
+  return f;
+}
+
+nlohmann::json toJson(const SceneFacts& f) {
+  return {{"triangles", f.triangles},           {"bvh_nodes", f.bvhNodes},
+          {"bvh_bytes", f.bvhBytes},            {"scene_bytes", f.sceneBytes},
+          {"bvh_build_ms", f.bvhBuildMs},       {"scene_load_ms", f.sceneLoadMs},
+          {"tracer_setup_ms", f.tracerSetupMs}};
+}
+
 nlohmann::json toJson(const CellResult& r) {
   auto spread = [](const Spread& s) { return nlohmann::json{{"median", s.median}, {"min", s.min}, {"max", s.max}}; };
   nlohmann::json stages;

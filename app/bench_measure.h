@@ -32,6 +32,21 @@ struct CellResult {
   std::vector<bool> sortedAfter;          // the sort policy's plan in the last timed frame (empty: no sort)
 };
 
+// What a case's scene costs before any frame: its size, its BVH (what the trace stage reads: nodes and the
+// triangles in BVH order) and the host time to make the scene and to set the tracer up (BVH build, uploads,
+// pipelines). The scene-scale sweep charts ratios against these.
+struct SceneFacts {
+  uint64_t triangles = 0;
+  uint64_t bvhNodes = 0;
+  uint64_t bvhBytes = 0;    // nodes + BVH-order triangles
+  uint64_t sceneBytes = 0;  // every scene buffer on the device
+  double bvhBuildMs = 0.0;
+  double sceneLoadMs = 0.0;
+  double tracerSetupMs = 0.0;
+};
+SceneFacts sceneFactsOf(const GpuSceneData& scene, double sceneLoadMs, double tracerSetupMs);
+nlohmann::json toJson(const SceneFacts& f);
+
 // The timed frames run back to back with no readback between them: host gaps let a GPU drop its clocks,
 // which was seen to slow later cells of a sweep two- to fourfold on an H100. Warm-up lasts at least
 // `warmup` frames and half a second. `errorCurve` is the case's relative MSE after k frames: sorting never

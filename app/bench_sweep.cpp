@@ -1,10 +1,13 @@
 #include "app/bench_sweep.h"
 
 #include "app/setting_flags.h"
+#include "scenes/scene_library.h"
+#include "scenes/temple_detail.h"
 
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace raylab {
 namespace {
@@ -42,7 +45,60 @@ struct Axes {
   std::vector<std::string> strategies{"all"}, sorts{"radix"}, grids{"auto"}, clamps{"off"}, resets{}, factors{};
   std::vector<std::string> tracers{}, sers{}, serHints{"two-point"};
   std::vector<std::string> policies{"always"};
+  std::vector<std::string> sortBits{};    // --sort-bits-list: empty keeps the render flag's (all bits)
+  std::vector<std::string> bounces{};     // --bounces with a list: one group of cells per count
+  std::vector<std::string> scaleTris{};   // --scale-tris: the sizes of every bare temple-detail case
 };
+
+// `raylab bench --bounces 2,4,8,16` sweeps the path length; every other mode takes one count. The list is
+// taken out here and its first count left for parseCommonOptions, which checks it like any render flag.
+std::vector<std::string> takeBounceList(std::vector<std::string>& args) {
+  std::vector<std::string> list;
+  for (size_t i = 0; i + 1 < args.size(); ++i)
+    if (args[i] == "--bounces") {
+      list = splitList(args[i + 1]);
+      if (list.empty()) throw UsageError("--bounces needs a count or a list of counts, got '" + args[i + 1] + "'");
+      args[i + 1] = list.front();
+    }
+  return list;
+}
+
+// Throws UsageError for a scene name or family size loadSceneByName would refuse, so that a bad case stops
+// the plan before any case has run.
+void checkCaseScene(const std::string& scene) {
+  try {
+    checkSceneName(scene);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--cases: ") + e.what());
+  }
+}
+
+// Expands every bare temple-detail case into one case per --scale-tris size (in the given order).
+std::vector<BenchCase> scaleCases(const std::vector<BenchCase>& cases, const std::vector<std::string>& sizes) {
+  if (sizes.empty()) return cases;
+  std::vector<BenchCase> out;
+  bool scaled = false;
+  for (const BenchCase& c : cases) {
+    if (c.scene != kTempleDetailName) {
+      out.push_back(c);
+      continue;
+    }
+    scaled = true;
+    for (const std::string& size : sizes) {
+      std::string scene = std::string(kTempleDetailName) + ":" + size;
+      try {
+        parseTempleDetailTriangles(scene);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--scale-tris: ") + e.what());
+      }
+      out.push_back({scene, c.view});
+    }
+  }
+  if (!scaled)
+    throw UsageError(std::string("--scale-tris sizes the ") + kTempleDetailName + " cases, and --cases names none (e.g. " +
+                     kTempleDetailName + "@hall)");
+  return out;
+}
 
 // One sweep-axis value applied to a copy of the settings, with the CLI's validation ("clamp off" too).
 Settings withFlag(const Settings& base, const std::string& flag, const std::string& value) {
@@ -76,6 +132,8 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
   Axes axes;
   std::vector<std::string> rest;
   std::vector<std::string> caseList{"temple@alley", "temple@hall", "temple@openings"};
+  axes.bounces = takeBounceList(args);
+  bool casesGiven = false;
   plan.common = parseCommonOptions(args, &rest);
   for (size_t i = 0; i < rest.size(); ++i) {
     const std::string& flag = rest[i];
@@ -85,10 +143,12 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
     }
     if (i + 1 >= rest.size()) throw UsageError(flag + " needs a value");
     const std::string& v = rest[++i];
-    if (flag == "--cases") caseList = splitList(v);
+    if (flag == "--cases") caseList = splitList(v), casesGiven = true;
+    else if (flag == "--scale-tris") axes.scaleTris = splitList(v);
     else if (flag == "--strategies") axes.strategies = splitList(v);
     else if (flag == "--sorts") axes.sorts = splitList(v);
     else if (flag == "--sort-policies") axes.policies = splitList(v);
+    else if (flag == "--sort-bits-list") axes.sortBits = splitList(v);
     else if (flag == "--grids") axes.grids = splitList(v);
     else if (flag == "--clamps") axes.clamps = splitList(v);
     else if (flag == "--gauss-resets") axes.resets = splitList(v);
@@ -102,10 +162,14 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
     else if (flag == "--out-dir") plan.outDir = v;
     else throw UsageError("unknown option '" + flag + "'");
   }
+  if (!axes.scaleTris.empty() && !casesGiven) caseList = {std::string(kTempleDetailName) + "@hall"};
+  std::vector<BenchCase> named;
   for (const std::string& c : caseList) {
     size_t at = c.rfind('@');
-    plan.cases.push_back(at == std::string::npos ? BenchCase{c, ""} : BenchCase{c.substr(0, at), c.substr(at + 1)});
+    named.push_back(at == std::string::npos ? BenchCase{c, ""} : BenchCase{c.substr(0, at), c.substr(at + 1)});
   }
+  plan.cases = scaleCases(named, axes.scaleTris);
+  for (const BenchCase& c : plan.cases) checkCaseScene(c.scene);
   if (axes.strategies.size() == 1 && axes.strategies[0] == "all") {
     axes.strategies.clear();
     for (KeyStrategy s : allKeyStrategies())
@@ -114,9 +178,14 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
 
   const Settings& base = plan.common.settings;
   if (axes.tracers.empty()) axes.tracers = {toString(base.tracer)};
+  if (axes.bounces.empty()) axes.bounces = {std::to_string(base.bounces)};
   for (size_t ci = 0; ci < plan.cases.size(); ++ci) {
-    for (const std::string& tracer : axes.tracers) {
-      Settings caseBase = withFlag(base, "--tracer", tracer);
+    // One group of cells per bounce count and tracer; the runner renders a reference per bounce count.
+    std::vector<Settings> groups;
+    for (const std::string& bounces : axes.bounces)
+      for (const std::string& tracer : axes.tracers) groups.push_back(withFlag(withFlag(base, "--bounces", bounces), "--tracer", tracer));
+    for (const Settings& group : groups) {
+      Settings caseBase = group;
       caseBase.scene = plan.cases[ci].scene;
       caseBase.view = plan.cases[ci].view;
       caseBase.ser = Ser::Off;
@@ -148,8 +217,8 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
         for (const std::string& sort : axes.sorts) {
           Settings so = withFlag(st, "--sort", sort);
           std::vector<Settings> variants{so};
-          auto expand = [&](const std::vector<std::string>& values, const char* flag) {
-            if (values.empty() || !usesGrid(so.strategy)) return;
+          auto expand = [&](const std::vector<std::string>& values, const char* flag, bool gridOnly = true) {
+            if (values.empty() || (gridOnly && !usesGrid(so.strategy))) return;
             std::vector<Settings> next;
             for (const Settings& v : variants)
               for (const std::string& value : values) next.push_back(withFlag(v, flag, value));
@@ -159,6 +228,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
           expand(axes.clamps, "--clamp");
           if (so.strategy == KeyStrategy::Gaussian) expand(axes.resets, "--gauss-reset");
           if (so.strategy == KeyStrategy::Fixed || so.strategy == KeyStrategy::TwoPoint) expand(axes.factors, "--fixed-factor");
+          expand(axes.sortBits, "--sort-bits", /*gridOnly=*/false);
           std::vector<Settings> withPolicies;
           for (const Settings& v : variants)
             for (const std::string& policy : axes.policies) withPolicies.push_back(withFlag(v, "--sort-policy", policy));
@@ -173,6 +243,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
             if (!axes.factors.empty() && (v.strategy == KeyStrategy::Fixed || v.strategy == KeyStrategy::TwoPoint))
               label += " factor=" + shortNumber(v.fixedFactor);
             if (v.sortPolicy != SortPolicy::Always) label += " policy=" + toString(v.sortPolicy);
+            if (v.sortBits != 0) label += " bits=" + std::to_string(v.sortBits);
             plan.cells.push_back({ci, v, label});
           }
         }
@@ -185,9 +256,13 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
 std::string benchHelp() {
   return "usage: raylab bench [render flags] [sweep flags]\n"
          "  --cases SCENE@VIEW,...    default temple@alley,temple@hall,temple@openings\n"
+         "  --scale-tris 1e4,1e5,...  one case per size for every bare temple-detail case (default case\n"
+         "                            temple-detail@hall): the scene-scale sweep\n"
+         "  --bounces 2,4,8,16        path lengths to sweep (each case renders its reference per count)\n"
          "  --strategies all|a,b,...  key strategies besides the baselines (default all)\n"
          "  --sorts radix,bitonic     sorts to sweep (default radix)\n"
          "  --sort-policies always,auto  sort policies to sweep (default always)\n"
+         "  --sort-bits-list 0,8,16   sorted key bits to sweep (0: all; see --sort-bits)\n"
          "  --grids auto,32x8x32      grid settings to sweep\n"
          "  --clamps off,50           camera clamp distances to sweep\n"
          "  --gauss-resets 20,inf     Gaussian reset thresholds to sweep\n"

@@ -90,6 +90,7 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       {"--strategy", [&](const std::string& v) { s.strategy = parseEnum("--strategy", v, &parseKeyStrategy, keyStrategyNames()); }},
       {"--sort", [&](const std::string& v) { s.sort = parseEnum("--sort", v, &parseSortAlgorithm, "none|bitonic|radix"); }},
       {"--sort-policy", [&](const std::string& v) { s.sortPolicy = parseEnum("--sort-policy", v, &parseSortPolicy, "always|never|auto"); }},
+      {"--sort-bits", [&](const std::string& v) { s.sortBits = parseUint("--sort-bits", v, 0, 32); }},
       {"--grid", [&](const std::string& v) { parseGrid(v, s); }},
       {"--clamp", [&](const std::string& v) {
          s.clampToCamera = true;
@@ -134,7 +135,8 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
 }
 
 std::string commonOptionsHelp() {
-  return "  --scene temple|cornell|furnace|FILE.gltf|FILE.glb   scene (default temple)\n"
+  return "  --scene temple|cornell|furnace|temple-detail:N|FILE.gltf|FILE.glb   scene (default temple;\n"
+         "                         temple-detail:N is the temple with N triangles, 1e4 to 3e7)\n"
          "  --view NAME            viewpoint (default: the scene's first)\n"
          "  --size WxH             resolution, any size up to 8192x8192 (default 512x256)\n"
          "  --bounces N            path length in bounces, 1..32 (default 4)\n"
@@ -149,6 +151,8 @@ std::string commonOptionsHelp() {
          "  --sort none|bitonic|radix   sort used when a strategy is set (default radix)\n"
          "  --sort-policy always|never|auto  which bounces sort: all, none, or where earlier frames measured\n"
          "                         a saving (default always)\n"
+         "  --sort-bits N          order only the key's top N bits, 0..32 (default 0: all); 8 bits\n"
+         "                         fewer is one radix pass less\n"
          "  --grid auto|N|NXxNYxNZ  key grid (default auto, 64 cells on the largest axis)\n"
          "  --clamp D              clamp the key grid to camera +- D\n"
          "  --fixed-factor F       fixed length = F * largest extent (default 0.5; Meister et al. 0.25)\n"

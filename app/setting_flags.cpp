@@ -29,6 +29,7 @@ const std::map<std::string, Copy>& fieldsOfFlag() {
       {"strategy", [](Settings& t, const Settings& f) { t.strategy = f.strategy; }},
       {"sort", [](Settings& t, const Settings& f) { t.sort = f.sort; }},
       {"sort-policy", [](Settings& t, const Settings& f) { t.sortPolicy = f.sortPolicy; }},
+      {"sort-bits", [](Settings& t, const Settings& f) { t.sortBits = f.sortBits; }},
       {"grid", [](Settings& t, const Settings& f) { t.grid = f.grid; }},
       {"clamp", [](Settings& t, const Settings& f) { t.clampToCamera = f.clampToCamera, t.clampDistance = f.clampDistance; }},
       {"fixed-factor", [](Settings& t, const Settings& f) { t.fixedFactor = f.fixedFactor; }},

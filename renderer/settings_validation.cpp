@@ -60,6 +60,7 @@ std::optional<std::string> settingsError(const Settings& s) {
     f(R::emaAlpha, s.emaAlpha);
     f(R::gaussOutlier, s.gaussOutlier);
     if (!std::isinf(s.gaussReset) || s.gaussReset < 0) f(R::gaussReset, s.gaussReset);
+    u(R::sortBits, s.sortBits);
     u(R::heatmapBounce, s.heatmapBounce);
   } catch (const SettingsError& e) {
     return e.what();

@@ -38,6 +38,7 @@ inline constexpr NumberRange fixedFactor{"--fixed-factor", L::kMinFixedFactor, L
 inline constexpr NumberRange emaAlpha{"--ema-alpha", L::kMinEmaAlpha, L::kMaxEmaAlpha};
 inline constexpr NumberRange gaussOutlier{"--gauss-outlier", 0, L::kMaxGaussOutlier};
 inline constexpr NumberRange gaussReset{"--gauss-reset", 0, 3.0e38};
+inline constexpr NumberRange sortBits{"--sort-bits", 0, 32};
 inline constexpr NumberRange heatmapBounce{"--heatmap-bounce", 0, L::kMaxBounces - 1};
 }  // namespace ranges
 

@@ -26,6 +26,7 @@ json toJson(const Settings& s) {
       {"strategy", toString(s.strategy)},
       {"sort", toString(s.sort)},
       {"sort_policy", toString(s.sortPolicy)},
+      {"sort_bits", s.sortBits},
       {"grid", s.grid.automatic ? json("auto") : json::array({s.grid.cells.x, s.grid.cells.y, s.grid.cells.z})},
       {"grid_auto_cells", s.grid.autoCells},
       {"clamp_to_camera", s.clampToCamera},
@@ -88,6 +89,8 @@ Settings settingsFromJson(const json& j) {
       if (!policy) throw std::invalid_argument("settings: unknown sort policy");
       s.sortPolicy = *policy;
     }
+    // Older sidecars have no sort bits: they sorted all of them.
+    if (j.contains("sort_bits")) s.sortBits = uintField("sort_bits", R::sortBits);
     const json& grid = need("grid");
     if (grid.is_string() && grid.get<std::string>() != "auto")
       throw SettingsError("settings: 'grid' must be \"auto\" or [x, y, z], got " + grid.dump());

@@ -121,4 +121,40 @@ void MeshBuilder::cylinder(const glm::vec3& base, const glm::vec3& axis, float r
   windOutwards(first, base);
 }
 
+uint64_t MeshBuilder::latticeSolidTriangles(const glm::ivec3& cells) {
+  glm::u64vec3 n(glm::max(cells, glm::ivec3(1)));
+  return 4 * (n.x * n.y + n.y * n.z + n.z * n.x);
+}
+
+void MeshBuilder::latticeSolid(const glm::ivec3& cells, const LatticePoint& point, uint32_t mat) {
+  const glm::ivec3 n = glm::max(cells, glm::ivec3(1));
+  size_t first = scene_.triangles.size();
+  std::vector<glm::vec3> grid;
+  // The face at lattice coordinate a = 0 or n[a], spanned by the axes b and c; (b, c, a) is right-handed,
+  // so the quad (i, j), (i+1, j), (i+1, j+1), (i, j+1) faces +a. windOutwards settles maps that mirror.
+  for (int a = 0; a < 3; ++a) {
+    const int b = (a + 1) % 3, c = (a + 2) % 3;
+    const size_t rowLength = static_cast<size_t>(n[b]) + 1;
+    for (int side = 0; side < 2; ++side) {
+      grid.resize(rowLength * (static_cast<size_t>(n[c]) + 1));
+      glm::ivec3 p(0);
+      p[a] = side ? n[a] : 0;
+      for (p[c] = 0; p[c] <= n[c]; ++p[c])
+        for (p[b] = 0; p[b] <= n[b]; ++p[b]) grid[static_cast<size_t>(p[c]) * rowLength + static_cast<size_t>(p[b])] = point(p);
+      for (size_t j = 0; j < static_cast<size_t>(n[c]); ++j)
+        for (size_t i = 0; i < static_cast<size_t>(n[b]); ++i) {
+          const glm::vec3& v00 = grid[j * rowLength + i];
+          const glm::vec3& v10 = grid[j * rowLength + i + 1];
+          const glm::vec3& v11 = grid[(j + 1) * rowLength + i + 1];
+          const glm::vec3& v01 = grid[(j + 1) * rowLength + i];
+          if (side)
+            quad(v00, v10, v11, v01, mat);
+          else
+            quad(v00, v01, v11, v10, mat);
+        }
+    }
+  }
+  windOutwards(first, point(glm::ivec3(0)));
+}
+
 }  // namespace raylab

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -35,6 +36,15 @@ class MeshBuilder {
   void orientedBox(const glm::vec3& center, const glm::vec3& half, float yaw, float tilt, uint32_t mat);
   // Closed cylinder (prism with `segments` sides, at least 3) from `base` along `axis` (any length).
   void cylinder(const glm::vec3& base, const glm::vec3& axis, float radius, int segments, uint32_t mat);
+
+  // A closed solid made from the surface of a box lattice with `cells` quads along each axis (at least one),
+  // each lattice point placed by `point`: subdivided and displaced slabs, boulders, fluted shafts. Every
+  // point is computed from its integer lattice coordinates, so faces that share an edge share its corners
+  // bit for bit and the solid is closed exactly.
+  using LatticePoint = std::function<glm::vec3(const glm::ivec3& lattice)>;
+  void latticeSolid(const glm::ivec3& cells, const LatticePoint& point, uint32_t mat);
+  // Triangles latticeSolid emits for `cells` (when no sliver is skipped).
+  static uint64_t latticeSolidTriangles(const glm::ivec3& cells);
 
   size_t skipped() const { return skipped_; }
 

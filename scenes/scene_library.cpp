@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <iterator>
 #include <stdexcept>
 
 #include "scenes/gltf_loader.h"
 #include "scenes/procedural.h"
+#include "scenes/temple_detail.h"
 
 namespace raylab {
 
@@ -22,23 +24,38 @@ bool endsWithNoCase(const std::string& s, const std::string& suffix) {
 
 }  // namespace
 
-std::vector<std::string> builtinSceneNames() { return {"temple", "cornell", "furnace"}; }
+// The procedural scenes that take no parameter.
+const char* const kFixedScenes[] = {"temple", "cornell", "furnace"};
+
+std::vector<std::string> builtinSceneNames() {
+  std::vector<std::string> names(std::begin(kFixedScenes), std::end(kFixedScenes));
+  names.push_back(std::string(kTempleDetailName) + ":1e5");
+  return names;
+}
+
+void checkSceneName(const std::string& nameOrPath) {
+  if (std::find(std::begin(kFixedScenes), std::end(kFixedScenes), nameOrPath) != std::end(kFixedScenes)) return;
+  if (isTempleDetailName(nameOrPath)) {
+    parseTempleDetailTriangles(nameOrPath);
+    return;
+  }
+  if (endsWithNoCase(nameOrPath, ".gltf") || endsWithNoCase(nameOrPath, ".glb")) return;
+  std::string names;
+  for (const char* n : kFixedScenes) names += std::string(n) + ", ";
+  throw std::invalid_argument("unknown scene '" + nameOrPath + "': expected one of " + names + kTempleDetailName +
+                              ":N (N triangles, 1e4 to 3e7), or a path to a .gltf or .glb file");
+}
 
 Scene loadSceneByName(const std::string& nameOrPath) {
+  checkSceneName(nameOrPath);
   if (nameOrPath == "temple") return makeTemple();
   if (nameOrPath == "cornell") return makeCornell();
   if (nameOrPath == "furnace") return makeFurnace();
-  if (endsWithNoCase(nameOrPath, ".gltf") || endsWithNoCase(nameOrPath, ".glb")) {
-    // Checked here so the message is the same for both formats and does not depend on tinygltf's.
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(nameOrPath, ec))
-      throw SceneLoadError(nameOrPath + ": file not found");
-    return loadGltf(nameOrPath);
-  }
-  std::string names;
-  for (const std::string& n : builtinSceneNames()) names += n + ", ";
-  throw std::invalid_argument("unknown scene '" + nameOrPath + "': expected one of " + names +
-                              "or a path to a .gltf or .glb file");
+  if (isTempleDetailName(nameOrPath)) return makeTempleDetail(parseTempleDetailTriangles(nameOrPath));
+  // A glTF file. Checked here so the message is the same for both formats and does not depend on tinygltf's.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(nameOrPath, ec)) throw SceneLoadError(nameOrPath + ": file not found");
+  return loadGltf(nameOrPath);
 }
 
 }  // namespace raylab

@@ -9,12 +9,18 @@
 
 namespace raylab {
 
-// "temple", "cornell", "furnace" (default parameters), or a path ending in .gltf / .glb (any case).
-// Throws SceneLoadError for a file that is missing or unusable, std::invalid_argument for any other
-// name (the message lists the accepted names; the CLI turns it into a usage error).
+// "temple", "cornell", "furnace" (default parameters), "temple-detail:N" (scenes/temple_detail.h), or a
+// path ending in .gltf / .glb (any case). Throws SceneLoadError for a file that is missing or unusable,
+// std::invalid_argument for any other name or a bad size (the message lists the accepted names and
+// ranges; the CLI turns it into a usage error).
 Scene loadSceneByName(const std::string& nameOrPath);
 
-// The names loadSceneByName accepts besides file paths, default scene first.
+// What loadSceneByName checks before building or reading anything (the name and a family's size, not
+// whether a file exists), for plans that name many scenes: throws its std::invalid_argument.
+void checkSceneName(const std::string& nameOrPath);
+
+// Names of the built-in scenes for a scene picker, default scene first; the family temple-detail appears
+// at one size (any other size can be typed as a name).
 std::vector<std::string> builtinSceneNames();
 
 }  // namespace raylab

@@ -13,6 +13,8 @@
 
 #include "scenes/mesh_builder.h"
 #include "scenes/procedural.h"
+#include "scenes/splitmix_rng.h"
+#include "scenes/temple_layout.h"
 
 namespace raylab {
 
@@ -20,24 +22,7 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-// splitmix64: a tiny generator whose output is fixed by the seed on every platform and standard
-// library (std:: distributions are not), so a seed names the same temple everywhere.
-class Rng {
- public:
-  explicit Rng(uint64_t seed) : state_(seed * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull) {}
-  uint64_t next() {
-    uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  float uniform(float lo, float hi) {
-    return lo + (hi - lo) * static_cast<float>(next() >> 40) * (1.0f / 16777216.0f);
-  }
-
- private:
-  uint64_t state_;
-};
+using Rng = SplitMixRng;
 
 struct Materials {
   uint32_t stone, floor, marble, plaster, roof, bronze, lampWarm, lampCool;
@@ -127,9 +112,11 @@ void archRing(MeshBuilder& b, bool alongX, float u, float w, float springY, floa
 void column(MeshBuilder& b, float x, float z, float height, float radius, int segments, uint32_t base,
             uint32_t shaft) {
   float plinth = 1.4f * radius;
-  b.box({x - plinth, 0.0f - 0.1f, z - plinth}, {x + plinth, 0.6f, z + plinth}, base);
+  const float plinthTop = temple_layout::kPlinthTop, capital = temple_layout::kCapitalDepth;
+  b.box({x - plinth, 0.0f - 0.1f, z - plinth}, {x + plinth, plinthTop, z + plinth}, base);
+  // The shaft runs 0.05 into the plinth and 0.1 into the capital (height - 1.25 = height - capital - plinthTop + 0.1).
   b.cylinder({x, 0.55f, z}, {0.0f, height - 1.25f, 0.0f}, radius, segments, shaft);
-  b.box({x - plinth, height - 0.75f, z - plinth}, {x + plinth, height, z + plinth}, base);
+  b.box({x - plinth, height - capital, z - plinth}, {x + plinth, height, z + plinth}, base);
 }
 
 void lamp(MeshBuilder& b, const glm::vec3& c, float half, uint32_t mat) {
@@ -161,10 +148,11 @@ void addHall(MeshBuilder& b, const Materials& m, const Detail& d, Rng& rng) {
   b.box({-10, -0.1f, -68.05f}, {10, 1, -60}, m.marble);
   b.box({-2.5f, 0.9f, -66}, {2.5f, 2.6f, -63.5f}, m.stone);
   // Two rows of columns under architraves, with beams to the side walls: dense geometry to look at.
-  for (float x : {-11.0f, 11.0f}) {
+  namespace hall = temple_layout;
+  for (float x : {-hall::kHallColumnX, hall::kHallColumnX}) {
     for (int i = 0; i < d.columns; ++i) {
-      float z = -30.0f - 30.0f * static_cast<float>(i) / static_cast<float>(std::max(d.columns - 1, 1));
-      column(b, x, z, 16.3f, 0.9f, d.cylinder, m.stone, m.marble);
+      float z = hall::hallColumnZ(i, d.columns);
+      column(b, x, z, hall::kHallColumnHeight, hall::kHallShaftRadius, d.cylinder, m.stone, m.marble);
       float wall = x < 0 ? -34.5f : 34.5f;
       b.box({std::min(x, wall), 17.0f, z - 0.5f}, {std::max(x, wall), 18.05f, z + 0.5f}, m.roof);
     }

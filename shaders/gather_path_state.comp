@@ -4,12 +4,17 @@
 // the next bounce reads coherent memory (indexing through the permutation without moving the data made
 // the study's tracer slower). A gather (random reads, coalesced writes): the scatter through the inverse
 // permutation was measured slower on an H100 (2.81 against 1.49 ms a frame, hall, 2048x1024, two-point
-// keys). Only the live prefix (GpuFrame::live, after the sort) is moved; the slots
-// behind it are marked finished so no stale state from an earlier bounce looks alive to the key stage.
+// keys). Only the live prefix is moved; the slots behind it are marked finished so no stale state from an
+// earlier bounce looks alive to the stages that read every slot (learn, the detailed captures).
+// It also finds the live prefix's length (GpuFrame::live and the indirect dispatch size of the next trace
+// and shade): the sorted keys put every finished path (RL_DEAD_KEY) behind the live ones, so slot i is live
+// exactly when its sorted key is not dead. This was a pass of its own (live_count) before the gather read
+// the keys; folded in, the reorder is one dispatch and one barrier shorter.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
 #include "shared_types.h"
+#include "live_paths.glsl"
 #include "path_state.glsl"
 
 layout(local_size_x_id = 0) in;
@@ -20,7 +25,11 @@ void main() {
   if (i >= pc.count) return;
   GpuFrame f = pc.frame.f;
   GpuPathState dst = f.state[1u - pc.stateSet];
-  if (i >= f.live.v[RL_LIVE_COUNT]) {
+  bool live = pc.sortedKeys.v[i] != RL_DEAD_KEY;
+  // Exactly one thread sees the boundary between the last live and the first finished path (or that none lives).
+  if (i == 0u && !live) writeLivePaths(f.live, 0u);
+  if (live && (i + 1u == pc.count || pc.sortedKeys.v[i + 1u] == RL_DEAD_KEY)) writeLivePaths(f.live, i + 1u);
+  if (!live) {
     markPathFinished(dst, i);
     return;
   }

@@ -18,6 +18,13 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= pc.count) return;
   FrameBuf frame = FrameBuf(pc.frame);
+  // Slots past the live prefix of the last sort hold finished paths (gather_path_state.comp):
+  // their key is the dead key without reading their state, and the sort reads the same bound.
+  if (i >= frame.f.live.v[RL_LIVE_COUNT]) {
+    UintBuf(pc.keys).v[i] = RL_DEAD_KEY;
+    UintBuf(pc.values).v[i] = i;
+    return;
+  }
   GpuPathState state = frame.f.state[pc.stateSet];
   GpuKeyParams params = KeyParamsBuf(pc.params).p;
   KeyPath path;

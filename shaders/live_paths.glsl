@@ -1,5 +1,5 @@
 // The live-path count and its indirect dispatch size (GpuFrame::live, the RL_LIVE_* slots), written the
-// same way by generate.comp (every path) and live_count.comp (the live prefix after a sort).
+// same way by generate.comp (every path) and gather_path_state.comp (the live prefix after a sort).
 #ifndef RAYLAB_LIVE_PATHS_GLSL
 #define RAYLAB_LIVE_PATHS_GLSL
 

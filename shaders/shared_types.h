@@ -43,7 +43,7 @@ using uint = uint32_t;
 #define RL_MAX_BOUNCES 32u
 
 // GpuFrame::live: the live-path count and the indirect dispatch size for RL_PATH_GROUP_SIZE groups.
-// Written by generate.comp (all paths) and live_count.comp (after a sort); trace and shade dispatch
+// Written by generate.comp (all paths) and gather_path_state.comp (after a sort); trace and shade dispatch
 // indirectly from RL_LIVE_DISPATCH.
 #define RL_LIVE_COUNT 0u     // paths a stage must visit; paths at or past it count as finished
 #define RL_LIVE_DISPATCH 1u  // [1..3]: group counts x, y, z for vkCmdDispatchIndirect
@@ -211,18 +211,11 @@ struct PathStagePush {
   uint stateSet;
 };
 
-// Push constants of live_count.comp: after the sort, the length of the live prefix of the sorted keys.
-struct LiveCountPush {
-  RL_REF(UintBuf) sortedKeys;
-  RL_REF(UintBuf) live;  // GpuFrame::live
-  uint count;            // sorted elements
-  uint pad0;
-};
-
 // Push constants of gather_path_state.comp: every state array of the current set, gathered through the
 // sorted indices into the other set.
 struct GatherPush {
   RL_REF(FrameBuf) frame;
+  RL_REF(UintBuf) sortedKeys;  // dead keys (RL_DEAD_KEY) last: where the live prefix ends
   RL_REF(UintBuf) sortedIndices;
   uint stateSet;  // source set; the destination is the other one
   uint count;
@@ -236,8 +229,7 @@ static_assert(offsetof(GpuPathState, throughput) == RL_STATE_THROUGHPUT * sizeof
 static_assert(RL_STATE_BYTES_PER_PATH == RL_STATE_ARRAY_COUNT * 16);
 static_assert(sizeof(PathStagePush) == 16);
 static_assert(offsetof(GpuScene, tlas) % 8 == 0 && sizeof(GpuScene) == offsetof(GpuScene, tlas) + 8);
-static_assert(sizeof(LiveCountPush) == 24);
-static_assert(sizeof(GatherPush) == 24);
+static_assert(sizeof(GatherPush) == 32);
 static_assert(RL_COUNTER_SIMT_SLOTS < RL_COUNTER_STRIDE && RL_LIVE_DISPATCH + 3 == RL_LIVE_WORDS);
 }  // namespace raylab::gpu
 #endif

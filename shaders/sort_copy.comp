@@ -11,7 +11,8 @@ layout(push_constant, scalar) uniform Push { SortCopyPush pc; };
 
 void main() {
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
-  for (uint i = gl_GlobalInvocationID.x; i < pc.count; i += stride) {
+  uint count = sortLimitedCount(pc.count, pc.hasCountLimit, pc.countLimit);  // pairs past a limit stay put
+  for (uint i = gl_GlobalInvocationID.x; i < count; i += stride) {
     pc.keysOut.v[i] = pc.keysIn.v[i];
     pc.valuesOut.v[i] = pc.valuesIn.v[i];
   }

@@ -29,7 +29,7 @@ void main() {
   if (gl_LocalInvocationID.x == 0) sTile = atomicAdd(pc.state.v[SORT_ONESWEEP_COUNTERS + pc.pass], 1u);
   barrier();
   uint tile = sTile;
-  tileRank(tile);
+  tileRank(tile, pc.count);  // every tile of a OneSweep pass holds pairs: numTiles covers count exactly
 
   uint statusRow = SORT_ONESWEEP_STATUS + pc.pass * pc.numTiles * SORT_RADIX;
   uint totals[DIGITS_PER_THREAD];

@@ -21,11 +21,13 @@ void main() {
   uint group = gl_WorkGroupID.x + pc.groupOffset;
   for (uint d = t; d < SORT_RADIX; d += gl_WorkGroupSize.x) sHist[d] = 0;
 
+  // Tiles past a device-side count limit count nothing: their column of the table is zero.
+  uint count = sortLimitedCount(pc.count, pc.hasCountLimit, pc.countLimit);
   uint begin = group * gl_WorkGroupSize.x * KPT + t;
   uint digits[KPT];
   for (uint k = 0; k < KPT; ++k) {
     uint i = begin + k * gl_WorkGroupSize.x;
-    digits[k] = i < pc.count ? (sortEffectiveKey(pc.keysIn.v[i], pc.keyBits) >> pc.shift) & SORT_RADIX_MASK
+    digits[k] = i < count ? (sortEffectiveKey(pc.keysIn.v[i], pc.keyBits) >> pc.shift) & SORT_RADIX_MASK
                              : 0xFFFFFFFFu;
   }
   barrier();  // histogram cleared

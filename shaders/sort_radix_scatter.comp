@@ -22,7 +22,8 @@ layout(push_constant, scalar) uniform Push { SortRadixPush pc; };
 
 void main() {
   uint tile = gl_WorkGroupID.x + pc.groupOffset;
-  tileRank(tile);
+  // Tiles past a device-side count limit have nothing to place (their histogram column is zero).
+  if (!tileRank(tile, sortLimitedCount(pc.count, pc.hasCountLimit, pc.countLimit))) return;
   uint totalsBase = SORT_RADIX * pc.numGroups;
   uint totals[DIGITS_PER_THREAD];
   for (uint k = 0; k < DIGITS_PER_THREAD; ++k) totals[k] = pc.hist.v[totalsBase + firstOwnedDigit() + k];

@@ -8,7 +8,7 @@
 // sorted by digit; the tile is reordered in shared memory first so that the global writes of each digit's run
 // are contiguous (coalesced). Values are loaded only after ranking, which keeps register pressure down.
 //
-// The includer declares the push block `pc` (keysIn, valuesIn, keysOut, valuesOut, count, shift, keyBits),
+// The includer declares the push block `pc` (keysIn, valuesIn, keysOut, valuesOut, shift, keyBits),
 // the specialization constants SG_SIZE (id 1) and KPT (id 2), and includes sort_scan.glsl.
 #ifndef RAYLAB_SORT_RADIX_TILE_GLSL
 #define RAYLAB_SORT_RADIX_TILE_GLSL
@@ -25,6 +25,7 @@ shared uint sLocalStart[SORT_RADIX];   // first place of each digit in the tile
 shared uint sGlobalShift[SORT_RADIX];  // set by the includer: global place of tile element j is sGlobalShift[digit] + j
 
 uint tileBegin;
+uint tileLimit;                        // pairs sorted (pc.count, or the device-side limit)
 uint sliceBegin;                       // this subgroup's slice
 uint tileKeys[KPT];
 uint tilePlace[KPT];
@@ -32,10 +33,13 @@ uint tileDigitCount[DIGITS_PER_THREAD];  // this tile's count of each owned digi
 
 uint digitOf(uint key) { return (sortEffectiveKey(key, pc.keyBits) >> pc.shift) & SORT_RADIX_MASK; }
 uint firstOwnedDigit() { return gl_LocalInvocationID.x * DIGITS_PER_THREAD; }
-bool slotValid(uint k) { return sliceBegin + k * SG_SIZE + gl_SubgroupInvocationID < pc.count; }
+bool slotValid(uint k) { return sliceBegin + k * SG_SIZE + gl_SubgroupInvocationID < tileLimit; }
 
-// Ends with a barrier; afterwards sLocalStart and tileDigitCount are set.
-void tileRank(uint tile) {
+// Ends with a barrier; afterwards sLocalStart and tileDigitCount are set. `limit`: the pairs sorted; a tile
+// at or past it returns at once (the whole group: it is uniform), so call tileScatter only if this is true.
+bool tileRank(uint tile, uint limit) {
+  tileLimit = limit;
+  if (tile * TILE >= limit) return false;
   uint t = gl_LocalInvocationID.x;
   uint sg = gl_SubgroupID;
   uint lane = gl_SubgroupInvocationID;
@@ -89,6 +93,7 @@ void tileRank(uint tile) {
     localStart += tileDigitCount[k];
   }
   barrier();
+  return true;
 }
 
 // Exclusive scan over digits of per-digit totals (each invocation passes its owned digits' totals in
@@ -126,7 +131,7 @@ void tileScatter() {
     }
   }
   barrier();
-  uint tileCount = min(TILE, pc.count - tileBegin);
+  uint tileCount = min(TILE, tileLimit - tileBegin);
   for (uint k = 0; k < KPT; ++k) {
     uint j = k * GROUP + t;
     if (j < tileCount) {

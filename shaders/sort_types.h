@@ -42,7 +42,8 @@ struct SortRadixPush {
   uint keyBits;      // 1..32; keys >= 2^keyBits sort as 2^keyBits (after every real key)
   uint numGroups;    // tiles of the whole sort (the width of a hist row)
   uint groupOffset;  // first tile of this dispatch (dispatches are split at the device's group limit)
-  uint pad0;
+  uint hasCountLimit;  // 1: sort only min(count, countLimit.v[0]) pairs (GpuSorter::record's countLimit)
+  SORT_REF(SortUintBuf) countLimit;
 };
 
 // sort_radix_scan: each work group scans `rowsPerGroup` digits' rows of `hist` in place (1 on GPUs; more on
@@ -75,7 +76,8 @@ struct SortCopyPush {
   SORT_REF(SortUintBuf) keysOut;
   SORT_REF(SortUintBuf) valuesOut;
   uint count;
-  uint pad0;
+  uint hasCountLimit;  // as SortRadixPush
+  SORT_REF(SortUintBuf) countLimit;
 };
 
 // OneSweep variant (decoupled look-back; only on devices with forward progress between work groups): one
@@ -119,6 +121,10 @@ inline uint sortEffectiveKey(uint key, uint keyBits) {
 #else
 uint sortEffectiveKey(uint key, uint keyBits) {
   return keyBits >= 32 ? key : min(key, 1u << keyBits);
+}
+// The pairs a radix dispatch sorts: `count`, or fewer when the device holds a smaller bound (the live prefix).
+uint sortLimitedCount(uint count, uint hasCountLimit, SortUintBuf countLimit) {
+  return hasCountLimit != 0u ? min(count, countLimit.v[0]) : count;
 }
 #endif
 

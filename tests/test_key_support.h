@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -114,9 +115,12 @@ class FakeFrame {
     keys = GpuBuffer(ctx, capacity * sizeof(uint32_t));
     values = GpuBuffer(ctx, capacity * sizeof(uint32_t));
     frameBlock_ = GpuBuffer(ctx, sizeof(gpu::GpuFrame));
+    live_ = GpuBuffer(ctx, RL_LIVE_WORDS * sizeof(uint32_t));
   }
 
-  void upload(const HostPaths& p, uint32_t frameIndex = 3, uint32_t seed = 7, uint32_t stateSet = 0) {
+  // `liveCount`: the live prefix of the last sort (GpuFrame::live); every path when not given.
+  void upload(const HostPaths& p, uint32_t frameIndex = 3, uint32_t seed = 7, uint32_t stateSet = 0,
+              std::optional<uint32_t> liveCount = std::nullopt) {
     ASSERT_LE(p.size(), capacity_);
     // The path-state layout (shared_types.h, RL_STATE_*): the path id in direction.w (RL_DEAD_PATH when
     // finished), the predicted length in throughput.w.
@@ -138,6 +142,10 @@ class FakeFrame {
     s.direction = direction_.address();
     s.throughput = throughput_.address();
     f.hits.t = hitT_.address();
+    std::vector<uint32_t> live(RL_LIVE_WORDS, 0u);
+    live[RL_LIVE_COUNT] = liveCount.value_or(static_cast<uint32_t>(p.size()));
+    live_.uploadVector(live);
+    f.live = live_.address();
     f.pathCount = static_cast<uint32_t>(p.size());
     f.frameIndex = frameIndex;
     f.seed = seed;
@@ -162,7 +170,7 @@ class FakeFrame {
   const VulkanContext* ctx_;
   uint32_t capacity_;
   uint32_t frameIndex_ = 0, seed_ = 0;
-  GpuBuffer nodes_, triangles_, origin_, direction_, throughput_, hitT_, frameBlock_;
+  GpuBuffer nodes_, triangles_, origin_, direction_, throughput_, hitT_, live_, frameBlock_;
 };
 
 struct KeyOutput {

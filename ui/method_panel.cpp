@@ -39,6 +39,8 @@ void drawSortSection(Settings& s, const ViewOptions& view) {
   comboEnum("strategy", s.strategy, allKeyStrategies());
   comboEnum("sort", s.sort, {SortAlgorithm::None, SortAlgorithm::Bitonic, SortAlgorithm::Radix});
   comboEnum("sort policy", s.sortPolicy, {SortPolicy::Always, SortPolicy::Never, SortPolicy::Auto});
+  sliderU32("sorted key bits", s.sortBits, 0, 32);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("order only the key's top bits (0: all); 8 fewer is one radix pass less");
   comboEnum("kernel", s.kernel, {Kernel::Wavefront, Kernel::Megakernel});
   if (s.kernel == Kernel::Megakernel) ImGui::TextDisabled("the megakernel never sorts");
   // The rt tracer and SER need extensions the device may lack: greyed out with the reason.

@@ -117,7 +117,7 @@ uint32_t GpuSorter::radixPasses(uint32_t keyBits) {
 }
 
 void GpuSorter::record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                       uint32_t keyBits) {
+                       uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) {
   if (algorithm_ == SortAlgorithm::None) return;
   if (count > maxCount_)
     throw VulkanError("sort of " + std::to_string(count) + " pairs exceeds the sorter's capacity of " +
@@ -127,7 +127,7 @@ void GpuSorter::record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddres
     if (algorithm_ == SortAlgorithm::Radix && oneSweep_)
       recordOneSweep(cmd, keys, values, count, keyBits);
     else if (algorithm_ == SortAlgorithm::Radix)
-      recordRadix(cmd, keys, values, count, keyBits);
+      recordRadix(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits);
     else
       recordBitonic(cmd, keys, values, count, keyBits);
   }
@@ -135,8 +135,10 @@ void GpuSorter::record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddres
 }
 
 void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                            uint32_t keyBits) {
-  const uint32_t passes = radixPasses(keyBits);
+                            uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) {
+  const uint32_t sortedBits = keyBits >= 32 ? 32 : keyBits + 1;
+  ignoredLowBits = std::min(ignoredLowBits, sortedBits - 1);
+  const uint32_t passes = ceilDiv(sortedBits - ignoredLowBits, SORT_RADIX_BITS);
   const uint32_t numGroups = ceilDiv(count, radixTile_);
   const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
   // Ping-pong caller -> scratch -> caller ...: an even pass count ends in the caller's buffers, an odd one
@@ -151,9 +153,11 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
     push.valuesOut = toScratch ? scratchValues_.address() : values;
     push.hist = hist_.address();
     push.count = count;
-    push.shift = pass * SORT_RADIX_BITS;
+    push.shift = ignoredLowBits + pass * SORT_RADIX_BITS;
     push.keyBits = keyBits;
     push.numGroups = numGroups;
+    push.hasCountLimit = countLimit != 0 ? 1 : 0;
+    push.countLimit = countLimit;
     dispatchSplit(histogram_, cmd, push, numGroups, maxGroups);
     computeBarrier(cmd);
     // CPU devices pay per work group; 4 rows a group still spreads over the cores and keeps each invocation
@@ -167,12 +171,14 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
     srcKeys = push.keysOut;
     srcValues = push.valuesOut;
   }
-  if (passes % 2 == 1) recordCopyBack(cmd, keys, values, count);
+  if (passes % 2 == 1) recordCopyBack(cmd, keys, values, count, countLimit);
 }
 
-void GpuSorter::recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count) {
+void GpuSorter::recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
+                               VkDeviceAddress countLimit) {
   computeBarrier(cmd);
-  gpu::SortCopyPush push{scratchKeys_.address(), scratchValues_.address(), keys, values, count, 0};
+  gpu::SortCopyPush push{scratchKeys_.address(), scratchValues_.address(), keys, values, count,
+                         countLimit != 0 ? 1u : 0u, countLimit};
   const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
   copy_.dispatchGroups(cmd, push, std::min(maxGroups, ceilDiv(count, kCopyGroup * 4ull)));
 }
@@ -218,7 +224,7 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
     srcKeys = push.keysOut;
     srcValues = push.valuesOut;
   }
-  if (passes % 2 == 1) recordCopyBack(cmd, keys, values, count);
+  if (passes % 2 == 1) recordCopyBack(cmd, keys, values, count, 0);
 }
 
 void GpuSorter::recordBitonic(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,

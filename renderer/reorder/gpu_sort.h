@@ -52,7 +52,15 @@ class GpuSorter {
   // `values` (each at least count elements) by the low `keyBits` bits (1..32) of the key, in place, and a
   // barrier at the end so later stages may read the result. Radix: stable. Bitonic: keys sorted, values
   // carried with their keys. count <= maxCount. SortAlgorithm::None records nothing.
-  void record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count, uint32_t keyBits);
+  // `countLimit` (optional): the device address of a uint32 bound the device knows and the host does not
+  // (the live-path count after the last sort): the portable radix sort then sorts only the first
+  // min(count, *countLimit) pairs and leaves the rest where they are; its dispatches keep their sizes, and
+  // work groups past the bound return at once. OneSweep and bitonic ignore it and sort all `count` pairs,
+  // which gives the same order for a stable sort when the pairs past the bound are dead keys in index order.
+  // `ignoredLowBits` (portable radix only): the lowest bits of the compared key are not ordered (pairs that
+  // differ only there keep their input order), one pass less for each 8 bits: a coarser, cheaper order.
+  void record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count, uint32_t keyBits,
+              VkDeviceAddress countLimit = 0, uint32_t ignoredLowBits = 0);
 
   SortAlgorithm algorithm() const { return algorithm_; }
   uint64_t scratchBytes() const;  // memory the sorter owns (for the stats)
@@ -67,9 +75,10 @@ class GpuSorter {
 
  private:
   void recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                   uint32_t keyBits);
+                   uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits);
   // After an odd number of radix passes the result is in scratch: copy it to the caller's buffers.
-  void recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count);
+  void recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
+                      VkDeviceAddress countLimit);
   void recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                       uint32_t keyBits);
   void recordBitonic(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,

@@ -35,8 +35,7 @@ PathSorter::PathSorter(const VulkanContext& ctx, const Scene& scene, const Setti
     : ctx_(ctx),
       keys_(ctx, scene, cameraPos, settings, maxPaths),
       maxPaths_(maxPaths),
-      gather_(ctx, "gather_path_state", sizeof(gpu::GatherPush), RL_PATH_GROUP_SIZE),
-      liveCount_(ctx, "live_count", sizeof(gpu::LiveCountPush), RL_PATH_GROUP_SIZE) {
+      gather_(ctx, "gather_path_state", sizeof(gpu::GatherPush), RL_PATH_GROUP_SIZE) {
   makeSorter(settings);
 }
 
@@ -54,6 +53,7 @@ void PathSorter::apply(const Settings& settings, glm::vec3 cameraPos, uint32_t m
 }
 
 void PathSorter::makeSorter(const Settings& settings) {
+  sortBits_ = settings.sortBits;
   if (!settings.sorts()) return;  // the sorter's scratch is only paid for while sorting
   if (!sorter_ || sorter_->algorithm() != settings.sort || sorter_->maxCount() < maxPaths_)
     sorter_ = std::make_unique<GpuSorter>(ctx_, settings.sort, maxPaths_);
@@ -106,16 +106,19 @@ uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers&
     // Live keys are < 2^(keyBits-1) and the dead key is all ones (KeyStage::keyBits), so keyBits - 1 bits
     // plus the sorter's own clamp bit (min(key, 2^bits), gpu_sort.h) order them: passing keyBits sorted one
     // bit more than needed, a whole fourth radix pass for 24-bit two-point keys.
-    sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, std::max(1u, keys_.keyBits() - 1));
+    // Only the live prefix of the last sort (GpuFrame::live; every path before the first): the key stage
+    // gave every slot past it the dead key, so the pairs there are already in place.
+    // Settings::sortBits keeps only the top bits of what the sort compares (keyBits - 1 live bits and the
+    // dead bit): the bits below are ignored, a radix pass less for each 8.
+    const uint32_t bits = std::max(1u, keys_.keyBits() - 1), compared = bits + 1;
+    const uint32_t ignored = sortBits_ > 0 && sortBits_ < compared ? compared - sortBits_ : 0;
+    sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, bits,
+                    buffers.live.address() + RL_LIVE_COUNT * sizeof(uint32_t), ignored);
   }
-  // "reorder": the live prefix's length, then every state array gathered into the other set.
-  const gpu::LiveCountPush live{buffers.keys.address(), buffers.live.address(), n, 0};
-  const gpu::GatherPush gather{buffers.frameBlock.address(), buffers.values.address(), stateSet, n};
-  recordStage(cmd, timer, "reorder", [&] {
-    liveCount_.dispatchThreads(cmd, live, n);
-    computeBarrier(cmd);
-    gather_.dispatchThreads(cmd, gather, n);
-  });
+  // "reorder": every state array gathered into the other set, and the live prefix's new length.
+  const gpu::GatherPush gather{buffers.frameBlock.address(), buffers.keys.address(), buffers.values.address(),
+                               stateSet, n};
+  recordStage(cmd, timer, "reorder", [&] { gather_.dispatchThreads(cmd, gather, n); });
   return 1u - stateSet;
 }
 

@@ -63,7 +63,8 @@ class PathSorter {
   KeyStage keys_;
   std::unique_ptr<GpuSorter> sorter_;
   uint32_t maxPaths_;
-  ComputePipeline gather_, liveCount_;
+  uint32_t sortBits_ = 0;  // Settings::sortBits
+  ComputePipeline gather_;
   std::vector<std::unique_ptr<Capture>> captures_;
 };
 

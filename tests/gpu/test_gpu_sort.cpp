@@ -16,10 +16,10 @@
 namespace raylab {
 namespace {
 
-static_assert(sizeof(gpu::SortRadixPush) == 64);
+static_assert(sizeof(gpu::SortRadixPush) == 72);
 static_assert(sizeof(gpu::SortScanPush) == 16);
 static_assert(sizeof(gpu::SortBitonicPush) == 48);
-static_assert(sizeof(gpu::SortCopyPush) == 40);
+static_assert(sizeof(gpu::SortCopyPush) == 48);
 static_assert(sizeof(gpu::SortOneSweepPush) == 64);
 
 constexpr uint32_t kDead = 0xFFFFFFFFu;
@@ -243,6 +243,61 @@ TEST_F(GpuSortTest, RejectsCountOverCapacity) {
   GpuBuffer buf(ctx(), 1024);
   EXPECT_THROW(ctx().submitAndWait([&](VkCommandBuffer cmd) { small.record(cmd, buf.address(), buf.address(), 101, 8); }),
                std::exception);
+}
+
+// A device-side count limit (the live prefix): the portable radix sort orders only the first
+// min(count, limit) pairs, stably, and leaves every pair past it untouched; odd and even pass counts
+// (16 and 12 bits: 3 passes copied back, 2 passes), limits inside a tile, on a tile edge, 0, 1 and past count.
+TEST_F(GpuSortTest, RadixSortsOnlyUpToDeviceCountLimit) {
+  const uint32_t n = 70001;
+  const uint32_t tile = sorter(Variant::Radix).radixTile();
+  for (uint32_t bits : {12u, 16u}) {
+    for (uint32_t limit : {0u, 1u, 777u, 2 * tile, 2 * tile + 1, 50000u, n, n + 5}) {
+      const std::vector<uint32_t> keys = makeKeys(Dist::Dead12, n, limit + bits);
+      std::vector<uint32_t> values(n);
+      std::iota(values.begin(), values.end(), 0u);
+      GpuBuffer keyBuf = makeBufferFrom(ctx(), keys);
+      GpuBuffer valueBuf = makeBufferFrom(ctx(), values);
+      GpuBuffer limitBuf = makeBufferFrom(ctx(), std::vector<uint32_t>{limit});
+      ctx().submitAndWait([&](VkCommandBuffer cmd) {
+        sorter(Variant::Radix).record(cmd, keyBuf.address(), valueBuf.address(), n, bits, limitBuf.address());
+      });
+      const uint32_t sorted = std::min(n, limit);
+      std::vector<uint32_t> wantKeys = keys, wantValues = values;
+      const std::vector<uint32_t> order =
+          stableOrder(std::vector<uint32_t>(keys.begin(), keys.begin() + sorted), bits);
+      for (uint32_t i = 0; i < sorted; ++i) {
+        wantKeys[i] = keys[order[i]];
+        wantValues[i] = order[i];
+      }
+      SCOPED_TRACE("bits " + std::to_string(bits) + ", limit " + std::to_string(limit));
+      EXPECT_EQ(keyBuf.downloadVector<uint32_t>(n), wantKeys);
+      EXPECT_EQ(valueBuf.downloadVector<uint32_t>(n), wantValues);
+    }
+  }
+}
+
+// Ignoring the low bits: the radix sort orders pairs by the compared key's bits above `ignored` only
+// (stable: pairs equal there keep their input order), with dead keys still last, in 1 to 3 passes.
+TEST_F(GpuSortTest, RadixIgnoresTheLowBitsItIsTold) {
+  const uint32_t n = 20011, bits = 23;  // the two-point strategy's width: 24 compared bits
+  for (uint32_t ignored : {1u, 8u, 9u, 16u, 23u}) {
+    const std::vector<uint32_t> keys = makeKeys(Dist::Dead12, n, ignored);
+    std::vector<uint32_t> masked(n), values(n);
+    for (uint32_t i = 0; i < n; ++i) masked[i] = keys[i] == kDead ? kDead : keys[i] & ((1u << bits) - 1u);
+    std::iota(values.begin(), values.end(), 0u);
+    GpuBuffer keyBuf = makeBufferFrom(ctx(), masked);
+    GpuBuffer valueBuf = makeBufferFrom(ctx(), values);
+    ctx().submitAndWait([&](VkCommandBuffer cmd) {
+      sorter(Variant::Radix).record(cmd, keyBuf.address(), valueBuf.address(), n, bits, 0, ignored);
+    });
+    std::vector<uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+      return (gpu::sortEffectiveKey(masked[a], bits) >> ignored) < (gpu::sortEffectiveKey(masked[b], bits) >> ignored);
+    });
+    EXPECT_EQ(valueBuf.downloadVector<uint32_t>(n), order) << "ignored " << ignored;
+  }
 }
 
 // The lab never runs OneSweep on a CPU device unless forced.

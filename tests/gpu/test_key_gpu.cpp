@@ -74,6 +74,36 @@ TEST_F(KeyGpu, KeysEqualTwinForEveryStrategyAndGrid) {
   }
 }
 
+// Slots past the live prefix of the last sort (GpuFrame::live) get the dead key and their own index whatever
+// their state holds (stale rays of an earlier bounce may look alive), and their predicted length is not
+// written; slots before it equal the twin as ever.
+TEST_F(KeyGpu, SlotsPastTheLivePrefixGetTheDeadKey) {
+  Scene scene = boxScene();
+  const uint32_t n = 1000, live = 613;
+  HostPaths paths = randomPaths(scene, n, 5);
+  FakeFrame frame(ctx(), scene, n);
+  Settings s;
+  s.strategy = KeyStrategy::Fixed;
+  KeyStage stage(ctx(), scene, {5, 2, 3}, s, n);
+  frame.upload(paths);
+  const KeyOutput all = runKeys(ctx(), stage, frame, n);
+  frame.upload(paths, 3, 7, 0, live);
+  const KeyOutput prefix = runKeys(ctx(), stage, frame, n);
+  uint32_t liveBehind = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    EXPECT_EQ(prefix.values[i], i);
+    if (i < live) {
+      EXPECT_EQ(prefix.keys[i], all.keys[i]) << i;
+      EXPECT_EQ(prefix.predicted[i], all.predicted[i]) << i;
+    } else {
+      EXPECT_EQ(prefix.keys[i], RL_DEAD_KEY) << i;
+      EXPECT_EQ(prefix.predicted[i], -1.0f) << i;  // as uploaded: not written
+      liveBehind += paths.alive[i];
+    }
+  }
+  EXPECT_GT(liveBehind, (n - live) / 2);  // the paths behind the prefix were alive in their state
+}
+
 TEST_F(KeyGpu, NoneRecordsNothingAndKeyBitsMatchStrategy) {
   Scene scene = boxScene();
   const uint32_t n = 100;

@@ -88,6 +88,29 @@ TEST_P(SortInvariant, EverySortPolicyRendersTheUnsortedImage) {
   }
 }
 
+// Ordering only the key's top bits (Settings::sortBits: 1, 8 and 9 bits, one and two radix passes for
+// keys of 13 to 24 bits) is a coarser order, never another image.
+TEST_P(SortInvariant, SortingFewerKeyBitsRendersTheUnsortedImage) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("alley");
+  Settings base;
+  base.width = 35;
+  base.height = 18;
+  base.bounces = 4;
+  std::vector<glm::vec3> unsorted = renderRadiance(ctx(), scene, base, view);
+  for (uint32_t sortBits : {1u, 8u, 9u}) {
+    for (KeyStrategy strategy : {KeyStrategy::Fixed, KeyStrategy::TwoPoint, KeyStrategy::Ema}) {
+      Settings s = base;
+      s.strategy = strategy;
+      s.sort = GetParam();
+      s.sortBits = sortBits;
+      std::vector<glm::vec3> sorted = renderRadiance(ctx(), scene, s, view);
+      EXPECT_EQ(0, std::memcmp(sorted.data(), unsorted.data(), sorted.size() * sizeof(glm::vec3)))
+          << toString(strategy) << " sorting " << sortBits << " key bits changed the image";
+    }
+  }
+}
+
 // A frame rendered in slices (PathTracer::recordSlice, what the window does to stay live) is the whole-frame
 // render bit for bit: uneven slice sizes (one path, a part of a work group, several groups, then the rest),
 // each slice sorted on its own, over two frames (the second uses what the caches learned in the first), for

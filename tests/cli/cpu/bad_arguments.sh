@@ -26,6 +26,8 @@ expect 2 render --kernel gpu
 expect 2 render --strategy fastest
 expect 2 render --sort quick
 expect 2 render --grid 0
+expect 2 render --sort-bits 33
+expect 2 render --sort-bits -1
 expect 2 render --grid 4x4
 expect 2 render --grid 5000
 expect 2 render --clamp nan
@@ -35,6 +37,17 @@ expect 2 render --ema-alpha 0
 expect 2 render --exposure
 expect 2 render --no-such-flag
 expect 2 render --scene nonsense
+# The scene-scale family refuses sizes outside 1e4..3e7 and sizes that are not numbers, from the command
+# line and from the bench's --cases and --scale-tris, before anything is built.
+expect 2 render --scene temple-detail:abc
+expect 2 render --scene temple-detail:9999
+expect 2 render --scene temple-detail:1e9
+expect 2 render --scene temple-detail:
+expect 2 bench --cases temple-detail:-5@hall
+expect 2 bench --scale-tris 1e4,5e7
+expect 2 bench --scale-tris 1e4 --cases temple@hall
+expect 2 bench --bounces 2,0
+expect 2 bench --bounces 2,,x
 expect 2 render --view nowhere
 expect 2 frobnicate
 expect 3 render --scene /nonexistent/missing.gltf

@@ -1,21 +1,25 @@
 #!/usr/bin/env bash
 # `raylab bench` runs a tiny sweep end to end: baselines plus the asked strategies, every cell in the CSV and
 # the JSONL, one identical final image error for every wavefront cell (sorting never changes the image),
-# and a usage error (exit 2) for a bad sweep value.
+# and a usage error (exit 2) for a bad sweep value. Then the scene-scale sweep at tiny sizes: a case per
+# --scale-tris size and a group per --bounces count, rows that carry the triangle count and BVH bytes, and
+# the crossover charts drawn from them.
 set -eu
 raylab="$1"
+source_dir="$2"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 RAYLAB_VALIDATE=1 "$raylab" bench --cases cornell@front --strategies dead-last,gaussian --sorts radix,bitonic \
-  --gauss-resets 20,inf --size 24x16 --timed-frames 2 --warmup 0 --reference-spp 2 --out-dir "$dir" > "$dir/log" 2>&1
+  --gauss-resets 20,inf --sort-bits-list 0,8 --size 24x16 --timed-frames 2 --warmup 0 --reference-spp 2 --out-dir "$dir" > "$dir/log" 2>&1
 python3 - "$dir" <<'PY'
 import csv, json, sys
 rows = list(csv.DictReader(open(sys.argv[1] + '/results.csv')))
 labels = [r['label'] for r in rows]
-# megakernel, none, dead-last x 2 sorts, gaussian x 2 sorts x 2 resets
+# megakernel, none, dead-last x 2 sorts x 2 sorted key bits, gaussian x 2 sorts x 2 resets x 2 sorted key bits
 assert labels[:2] == ['megakernel', 'none'], labels
-assert len(rows) == 2 + 2 + 4, labels
+assert len(rows) == 2 + 4 + 8, labels
 assert any('reset=inf' in l for l in labels), labels
+assert sum(r['sort_bits'] == '8' and 'bits=8' in r['label'] for r in rows) == 6, labels
 jsonl = [json.loads(l) for l in open(sys.argv[1] + '/results.jsonl')]
 assert len(jsonl) == len(rows)
 errors = {r['final_rel_mse'] for r in rows if r['kernel'] == 'wavefront'}
@@ -27,3 +31,38 @@ PY
 set +e
 "$raylab" bench --sorts quick > /dev/null 2>&1
 [ $? -eq 2 ] || { echo "FAIL: bad --sorts did not exit 2"; exit 1; }
+set -e
+
+RAYLAB_VALIDATE=1 "$raylab" bench --scale-tris 1e4,2e4 --bounces 1,2 --strategies two-point --size 16x8 \
+  --timed-frames 1 --warmup 0 --reference-spp 1 --no-detail --out-dir "$dir/scale" > "$dir/scale.log" 2>&1 ||
+  { cat "$dir/scale.log"; exit 1; }
+python3 - "$dir/scale" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1] + '/results.csv')))
+# 2 sizes x 2 bounce counts x (megakernel, none, two-point), size-major, then bounce count
+assert len(rows) == 12, [(r['scene'], r['bounces'], r['label']) for r in rows]
+assert [r['scene'] for r in rows] == ['temple-detail:1e4'] * 6 + ['temple-detail:2e4'] * 6, [r['scene'] for r in rows]
+assert [r['bounces'] for r in rows] == (['1'] * 3 + ['2'] * 3) * 2, [r['bounces'] for r in rows]
+assert {r['view'] for r in rows} == {'hall'}
+facts = {}
+for r in rows:
+    facts.setdefault(r['scene'], set()).add((int(r['triangles']), int(r['bvh_nodes']), int(r['bvh_bytes'])))
+small, large = facts['temple-detail:1e4'], facts['temple-detail:2e4']
+assert len(small) == 1 and len(large) == 1, facts  # one scene per case
+(t1, n1, b1), (t2, n2, b2) = small.pop(), large.pop()
+assert abs(t1 - 1e4) <= 100 and abs(t2 - 2e4) <= 200, (t1, t2)
+assert n1 > 0 and b1 > 48 * t1 and b2 > b1 and n2 > n1, (n1, b1, n2, b2)
+for scene in facts:
+    for bounces in ('1', '2'):
+        errors = {r['final_rel_mse'] for r in rows if r['scene'] == scene and r['bounces'] == bounces and r['kernel'] == 'wavefront'}
+        assert len(errors) == 1, (scene, bounces, errors)  # sorted renders the unsorted image
+print('ok: scale sweep', t1, t2, 'triangles, BVH', b1, b2, 'bytes')
+PY
+if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
+  /usr/bin/python3 "$source_dir/app/bench_charts.py" "$dir/scale" > /dev/null
+  for chart in crossover_triangles_hall.png crossover_bounces_hall.png stages_temple-detail-1e4-hall-b2.png; do
+    [ -s "$dir/scale/$chart" ] || { echo "FAIL: bench_charts.py drew no $chart"; ls "$dir/scale"; exit 1; }
+  done
+else
+  echo "matplotlib missing: the crossover charts are not checked"
+fi
