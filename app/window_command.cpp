@@ -1,8 +1,10 @@
 #include "app/window_command.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 #include "app/command_errors.h"
 #include "app/config_dir.h"
@@ -28,7 +30,26 @@ const char* const kWindowHelp =
     "  --screenshot-dir DIR   where F12 / Shift+F12 and scripts save (default CONFIG/screenshots)\n"
     "  --ini FILE             layout and last settings (default CONFIG/imgui.ini; none for scripts)\n"
     "  CONFIG is $XDG_CONFIG_HOME/raylab or ~/.config/raylab\n"
-    "  --reset                start with the default layout and settings\n";
+    "  --reset                start with the default layout and settings\n"
+    "  --frame-log FILE       write one JSON line per UI frame: ui_ms, render_ms, frame_done, preview, ...\n"
+    "                         (python3 app/frame_log_report.py FILE reports p50/p95 and time to preview)\n"
+    "  --render-budget-ms MS  render work per UI frame, 1..1000 (default 40): a frame that takes longer\n"
+    "                         renders in slices over several UI frames, after a coarse preview\n";
+
+// The window's own flags that take a value; everything else is a render flag.
+bool isWindowValueFlag(const std::string& a) {
+  for (const char* flag : {"--script", "--screenshot-dir", "--ini", "--scale", "--frame-log", "--render-budget-ms"})
+    if (a == flag) return true;
+  return false;
+}
+
+// The frame log is opened here once, so a file that cannot be written is a usage error before any window.
+std::string checkedFrameLog(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw UsageError("--frame-log: cannot write " + path + ": " + std::strerror(errno));
+  std::fclose(f);
+  return path;
+}
 
 void printUsage(const std::string& error) {
   std::fprintf(stderr, "raylab: %s\n\nusage: raylab [options]\n%s%s", error.c_str(), kWindowHelp,
@@ -57,6 +78,8 @@ WindowOptions parseWindowOptions(const std::vector<std::string>& args) {
     else if (a == "--ini") o.iniPath = valueOf(rest, i), iniGiven = true;
     else if (a == "--reset") o.reset = true;
     else if (a == "--scale") o.scale = parseFloat("--scale", valueOf(rest, i), 0.05f, 2.0f);
+    else if (a == "--frame-log") o.frameLog = checkedFrameLog(valueOf(rest, i));
+    else if (a == "--render-budget-ms") o.renderBudgetMs = parseFloat("--render-budget-ms", valueOf(rest, i), 1.0f, 1000.0f);
     else throw UsageError("unknown option '" + a + "'");
   }
   for (size_t i = 0; i < args.size(); ++i) {
@@ -65,8 +88,7 @@ WindowOptions parseWindowOptions(const std::vector<std::string>& args) {
       o.sidecar->camera = camera;  // cleared by parseOptionsWithSettingsFile when --view overrides it
       continue;
     }
-    bool windowFlag = args[i] == "--script" || args[i] == "--screenshot-dir" || args[i] == "--ini" || args[i] == "--scale";
-    if (windowFlag) ++i;
+    if (isWindowValueFlag(args[i])) ++i;
     else if (args[i] != "--reset") o.renderArgs.push_back(args[i]);
     if (args[i] == "--size") o.width = int(o.common.settings.width), o.height = int(o.common.settings.height);
   }
@@ -80,7 +102,7 @@ std::vector<std::string> renderArgsOf(const std::vector<std::string>& args) {
   std::vector<std::string> out;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if (a == "--script" || a == "--screenshot-dir" || a == "--ini" || a == "--scale") ++i;
+    if (isWindowValueFlag(a)) ++i;
     else if (a != "--reset") out.push_back(a);
   }
   return out;

@@ -40,10 +40,18 @@ gpu::GpuCamera makeGpuCamera(const Viewpoint& v, uint32_t width, uint32_t height
 }
 
 PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera)
+    : PathTracer(ctx, scene, std::make_shared<GpuSceneData>(ctx, scene), settings, camera) {}
+
+PathTracer::PathTracer(const PathTracer& sameScene, const Scene& scene, const Settings& settings,
+                       const Viewpoint& camera)
+    : PathTracer(sameScene.ctx_, scene, sameScene.scene_, settings, camera) {}
+
+PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared_ptr<GpuSceneData> gpuScene,
+                       const Settings& settings, const Viewpoint& camera)
     : ctx_(ctx),
       settings_(settings),
       camera_(camera),
-      scene_(std::make_unique<GpuSceneData>(ctx, scene)),
+      scene_(std::move(gpuScene)),
       generate_(ctx, "generate", sizeof(gpu::PathStagePush), kGroup),
       trace_(ctx, "trace", sizeof(gpu::PathStagePush), kGroup, {0}),
       traceCounting_(ctx, "trace", sizeof(gpu::PathStagePush), kGroup, {1}),
@@ -70,6 +78,7 @@ void PathTracer::allocate() {
 
 void PathTracer::restartAccumulation() {
   frameIndex_ = 0;
+  sliceNext_ = sliceEnd_ = 0;
   ctx_.submitAndWait([&](VkCommandBuffer cmd) { buffers_->accumulation.recordFill(cmd, 0); });
 }
 
@@ -81,6 +90,7 @@ void PathTracer::checkSupported(const Settings& settings) const {
 
 // The one place a change of settings or camera is acted on; every part gets the same SettingsChange.
 void PathTracer::apply(const SettingsChange& change) {
+  sliceNext_ = sliceEnd_ = 0;  // a partial frame was made with the old settings or camera: start it again
   if (change.reallocate) allocate();
   if (usesRt() && !rt_) rt_ = std::make_unique<RtTracer>(ctx_, *scene_);
   pathSorter_->apply(settings_, camera_.position, buffers_->pathCount, change);
@@ -102,30 +112,59 @@ void PathTracer::setCamera(const Viewpoint& camera) {
   apply(SettingsChange::cameraMove(settings_));
 }
 
+bool PathTracer::needsWholeFrames() const { return heatmapShown(settings_) != HeatmapView::None; }
+
+void PathTracer::setDetailedStats(bool on) {
+  if (on != detailedStats_) sliceNext_ = sliceEnd_ = 0;
+  detailedStats_ = on;
+}
+
 // One frame: generate, the bounces, accumulate, then tonemap (or the heatmap instead).
 void PathTracer::recordFrame(VkCommandBuffer cmd) {
+  sliceNext_ = 0;  // a partial frame, if any, is abandoned
+  recordSlice(cmd, buffers_->pathCount);
+}
+
+uint32_t PathTracer::recordSlice(VkCommandBuffer cmd, uint32_t paths) {
+  const uint32_t total = buffers_->pathCount;
+  if (needsWholeFrames()) sliceNext_ = 0, paths = total;
+  const uint32_t first = sliceNext_;
+  const uint32_t count = std::clamp(paths, 1u, total - first);
+  const bool starts = first == 0, ends = first + count == total;
+  if (starts) {
+    framePlan_ = settings_.sorts() ? sortPolicy_.plan(settings_.sortPolicy, settings_.bounces) : SortPlan{};
+    sliceStages_.clear();
+    sliceGpuMs_ = sliceWallMs_ = 0.0;
+  }
   timer_.reset(cmd);
-  framePlan_ = settings_.sorts() ? sortPolicy_.plan(settings_.sortPolicy, settings_.bounces) : SortPlan{};
-  // Every command of the frame is inside a timed stage, so the stages account for the frame's GPU time.
+  // Every command of the slice is inside a timed stage, so the stages account for the frame's GPU time.
   recordStage(cmd, &timer_, "setup", [&] {
-    recordFrameBlock(cmd);
-    const bool sorting = settings_.sorts();
-    heatmap_->beginFrame(cmd, settings_, sorting ? pathSorter_->keys().paramsAddress() : 0,
-                         sorting ? &pathSorter_->keys().grid().gpu : nullptr, sorting && pathSorter_->keys().hasCache());
+    recordFrameBlock(cmd, first, count);
+    if (starts) {
+      buffers_->counters.recordFill(cmd, 0);  // the frame's counters sum over its slices
+      computeBarrier(cmd);
+      const bool sorting = settings_.sorts();
+      heatmap_->beginFrame(cmd, settings_, sorting ? pathSorter_->keys().paramsAddress() : 0,
+                           sorting ? &pathSorter_->keys().grid().gpu : nullptr, sorting && pathSorter_->keys().hasCache());
+    }
   });
   const gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0};
   if (settings_.kernel == Kernel::Megakernel)
-    recordMegakernel(cmd, push);
+    recordMegakernel(cmd, push, {first, count});
   else
-    recordWavefront(cmd, push);
-  recordStage(cmd, &timer_, "accumulate", [&] { accumulate_.dispatchThreads(cmd, push, buffers_->pixelCount); });
-  if (!heatmap_->colorize(cmd, *buffers_, &timer_))
-    recordStage(cmd, &timer_, "tonemap", [&] { tonemap_.dispatchThreads(cmd, push, buffers_->pixelCount); });
-  recordCountersToHost(cmd);
+    recordWavefront(cmd, push, {first, count});
+  if (ends) {
+    recordStage(cmd, &timer_, "accumulate", [&] { accumulate_.dispatchThreads(cmd, push, buffers_->pixelCount); });
+    if (!heatmap_->colorize(cmd, *buffers_, &timer_))
+      recordStage(cmd, &timer_, "tonemap", [&] { tonemap_.dispatchThreads(cmd, push, buffers_->pixelCount); });
+    recordCountersToHost(cmd);
+  }
+  sliceEnd_ = first + count;
+  return count;
 }
 
-// The GpuFrame block every stage reads (addresses, camera, frame parameters), and cleared counters.
-void PathTracer::recordFrameBlock(VkCommandBuffer cmd) {
+// The GpuFrame block every stage reads (addresses, camera, frame parameters, the slice's paths).
+void PathTracer::recordFrameBlock(VkCommandBuffer cmd, uint32_t firstPath, uint32_t paths) {
   gpu::GpuFrame frame = buffers_->addresses();
   frame.camera = makeGpuCamera(camera_, settings_.width, settings_.height);
   frame.scene = scene_->block();
@@ -133,17 +172,18 @@ void PathTracer::recordFrameBlock(VkCommandBuffer cmd) {
   frame.width = settings_.width;
   frame.height = settings_.height;
   frame.sppPerFrame = settings_.sppPerFrame;
+  frame.pathCount = paths;
+  frame.firstPath = firstPath;
   frame.frameIndex = frameIndex_;
   frame.bounceCount = settings_.bounces;
   frame.seed = settings_.seed;
   frame.exposure = settings_.exposure;
   vkCmdUpdateBuffer(cmd, buffers_->frameBlock.handle(), 0, sizeof(frame), &frame);
-  buffers_->counters.recordFill(cmd, 0);
   computeBarrier(cmd);
 }
 
-void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push) {
-  const uint32_t n = buffers_->pathCount;
+void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push, PathRange slice) {
+  const uint32_t n = slice.count;
   const ComputePipeline& megakernel = settings_.countSimt ? megakernelCounting_ : megakernel_;
   recordStage(cmd, &timer_, "megakernel", [&] {
     if (!usesRt()) {
@@ -159,7 +199,7 @@ void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush&
       rt_->serMegakernel(cmd, ser, hint, n);
     }
   });
-  if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, 0);
+  if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, 0, slice);
   heatmap_->afterMegakernel(cmd, *buffers_, &timer_);
 }
 
@@ -167,8 +207,8 @@ void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush&
 // policy's plan says so (learn only for rays that were sorted). Trace and shade are dispatched indirectly
 // over the live paths: all of them until a sort has moved the finished paths behind the live ones
 // (GpuFrame::live); a bounce that does not sort keeps the last sort's order and live count.
-void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
-  const uint32_t n = buffers_->pathCount;
+void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, PathRange slice) {
+  const uint32_t n = slice.count;
   const bool sorting = settings_.sorts();
   const ComputePipeline& trace = settings_.countSimt ? traceCounting_ : trace_;
   const VkBuffer live = buffers_->live.handle();
@@ -183,10 +223,10 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
       else
         trace.dispatchIndirect(cmd, push, live, liveDispatch);
     });
-    if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, b);
+    if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, b, slice);
     const bool sortedBefore = sorting && b > 0 && framePlan_.sortAfter[b - 1];
     if (sorting)
-      pathSorter_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, sortedBefore, detailedStats_, &timer_);
+      pathSorter_->recordAfterTrace(cmd, *buffers_, slice, push.stateSet, b, sortedBefore, detailedStats_, &timer_);
     heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, &timer_);
     recordStage(cmd, &timer_, "shade", [&] {
       if (usesRt())
@@ -195,9 +235,9 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
         shade_.dispatchIndirect(cmd, push, live, liveDispatch);
     });
     if (sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b]) {
-      pathSorter_->recordKeys(cmd, *buffers_, push.stateSet, b, detailedStats_, &timer_);
+      pathSorter_->recordKeys(cmd, *buffers_, slice, push.stateSet, b, detailedStats_, &timer_);
       heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, &timer_);
-      push.stateSet = pathSorter_->recordSortAndGather(cmd, *buffers_, push.stateSet, &timer_);
+      push.stateSet = pathSorter_->recordSortAndGather(cmd, *buffers_, n, push.stateSet, &timer_);
       heatmap_->afterSort(cmd, *buffers_, push.stateSet, b, &timer_);
     }
   }
@@ -205,12 +245,15 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push) {
 }
 
 // Detailed mode: keeps this trace's per-path traversal steps (the next trace overwrites them) for the
-// virtual warp efficiency. Released again by gatherCounters(): only the frame that asked holds them.
-void PathTracer::recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce) {
+// virtual warp efficiency, in dispatch order: a slice's slots go to its part of the frame's readback, so the
+// warps are those of the whole frame where slices are whole warps (LiveRender's are whole work groups).
+// Released again by gatherCounters(): only the frame that asked holds them.
+void PathTracer::recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce, PathRange slice) {
   ScopedStage s(&timer_, cmd, "counters");
   if (stepsReadback_.size() <= bounce) stepsReadback_.resize(bounce + 1);
-  stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
-  VkBufferCopy steps{0, 0, VkDeviceSize(buffers_->pathCount) * 4};
+  if (stepsReadback_[bounce].size() != buffers_->hitSteps.size())
+    stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
+  VkBufferCopy steps{0, VkDeviceSize(slice.first) * 4, VkDeviceSize(slice.count) * 4};
   vkCmdCopyBuffer(cmd, buffers_->hitSteps.handle(), stepsReadback_[bounce].handle(), 1, &steps);
   computeBarrier(cmd);
 }
@@ -238,11 +281,44 @@ const FrameStats& PathTracer::renderFrame() {
 }
 
 const FrameStats& PathTracer::finishFrame(double wallMs) {
+  const FrameStats* whole = finishSlice(wallMs);
+  if (!whole) throw VulkanError("finishFrame after a slice that did not end the frame");
+  return *whole;
+}
+
+const FrameStats* PathTracer::finishSlice(double wallMs) {
+  addSliceStages(timer_.collect());
+  sliceGpuMs_ += timer_.spanMs();
+  sliceWallMs_ += wallMs;
+  const bool ends = sliceEnd_ == buffers_->pathCount;
+  sliceNext_ = ends ? 0 : sliceEnd_;
+  return ends ? &completeFrame() : nullptr;
+}
+
+// A slice's stage times join the frame's: the same (stage, bounce) adds up, so a frame in slices reports the
+// stages a whole frame would, and their sum still matches the GPU time (the sum of the slices' spans).
+void PathTracer::addSliceStages(const std::vector<StageTime>& slice) {
+  if (sliceStages_.empty()) {
+    sliceStages_ = slice;
+    return;
+  }
+  for (const StageTime& t : slice) {
+    auto same = std::find_if(sliceStages_.begin(), sliceStages_.end(),
+                             [&](const StageTime& s) { return s.stage == t.stage && s.bounce == t.bounce; });
+    if (same != sliceStages_.end())
+      same->ms += t.ms;
+    else
+      sliceStages_.push_back(t);
+  }
+}
+
+const FrameStats& PathTracer::completeFrame() {
   stats_ = FrameStats{};
   stats_.frameIndex = frameIndex_;
-  stats_.wallMs = wallMs;
-  stats_.stages = timer_.collect();
-  stats_.frameMs = timer_.spanMs();
+  stats_.wallMs = sliceWallMs_;
+  stats_.stages = std::move(sliceStages_);
+  sliceStages_.clear();
+  stats_.frameMs = sliceGpuMs_;
   gatherCounters();
   if (settings_.sorts()) {
     pathSorter_->finishFrame(stats_, detailedStats_);
@@ -264,7 +340,7 @@ const FrameStats& PathTracer::finishFrame(double wallMs) {
     if (settings_.heatmap == HeatmapView::TraversalSteps || settings_.heatmap == HeatmapView::WarpEfficiency)
       stats_.heatmap.emptyReason = "traversal steps: not available with the rt tracer";
   }
-  double seconds = (stats_.frameMs > 0.0 ? stats_.frameMs : wallMs) * 1e-3;
+  double seconds = (stats_.frameMs > 0.0 ? stats_.frameMs : stats_.wallMs) * 1e-3;
   stats_.raysPerSecond = seconds > 0.0 ? static_cast<double>(stats_.raysTraced) / seconds : 0.0;
   ++frameIndex_;
   stats_.samplesPerPixel = frameIndex_ * settings_.sppPerFrame;

@@ -25,6 +25,9 @@ class RtTracer;
 class PathTracer {
  public:
   PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera);
+  // A second tracer of the same scene (the window's coarse preview): shares `sameScene`'s GPU scene (no second
+  // BVH build or upload); `scene` must be the one `sameScene` was made from.
+  PathTracer(const PathTracer& sameScene, const Scene& scene, const Settings& settings, const Viewpoint& camera);
   ~PathTracer();
 
   // Applies new settings: reallocates, restarts accumulation, resets caches and uploads key parameters
@@ -41,8 +44,27 @@ class PathTracer {
   const FrameStats& finishFrame(double wallMs);
   // Records, submits and waits for one frame.
   const FrameStats& renderFrame();
+
+  // A frame in slices, one submission each, so a window can stay live while a frame renders: a slice is the
+  // next `paths` path ids (clamped to what is left of the frame), generated, traced through every bounce
+  // (sorted within the slice, which the invariant allows: a path's id, not its slot, picks its pixel, random
+  // numbers and results entry) and shaded into results. The first slice clears the frame's counters; the
+  // last one accumulates, tonemaps and copies the counters out, so the image after the last slice is bit for
+  // bit the whole-frame render's. finishSlice() after each slice completed: it adds the slice's stage times
+  // and wall time to the frame's, and returns the whole frame's stats after the last slice (else nullptr).
+  // Any change of settings or camera abandons a partial frame (its paths are rendered again).
+  // Returns the paths the slice holds.
+  uint32_t recordSlice(VkCommandBuffer cmd, uint32_t paths);
+  const FrameStats* finishSlice(double wallMs);
+  // Paths of a whole frame, and the first path id of the next slice (0: the next slice starts a frame).
+  uint32_t framePaths() const { return buffers_->pathCount; }
+  uint32_t nextSlicePath() const { return sliceNext_; }
+  // Heatmaps read every path of a frame at once: such frames render in one slice (recordSlice records the
+  // whole frame whatever it is asked for). Detailed statistics read each slice's part back.
+  bool needsWholeFrames() const;
+
   // Detailed statistics (per-path steps, prediction accuracy) cost readbacks; off for timed runs.
-  void setDetailedStats(bool on) { detailedStats_ = on; }
+  void setDetailedStats(bool on);
 
   const FrameStats& stats() const { return stats_; }
   // The sort policy's model (stage times it learned) and the plan of the last recorded frame.
@@ -64,14 +86,18 @@ class PathTracer {
   std::vector<glm::vec3> readRadiance() const;      // accumulated mean radiance per pixel (linear)
 
  private:
+  PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared_ptr<GpuSceneData> gpuScene,
+             const Settings& settings, const Viewpoint& camera);
   void allocate();
   void apply(const SettingsChange& change);
   void checkSupported(const Settings& settings) const;
   bool usesRt() const { return settings_.tracer == Tracer::Rt; }
-  void recordFrameBlock(VkCommandBuffer cmd);
-  void recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push);
-  void recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push);
-  void recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce);
+  void recordFrameBlock(VkCommandBuffer cmd, uint32_t firstPath, uint32_t paths);
+  void recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push, PathRange slice);
+  void recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, PathRange slice);
+  void addSliceStages(const std::vector<StageTime>& slice);
+  const FrameStats& completeFrame();
+  void recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce, PathRange slice);
   void recordCountersToHost(VkCommandBuffer cmd);
   void gatherCounters();
   uint32_t countedBounces() const;
@@ -79,7 +105,7 @@ class PathTracer {
   const VulkanContext& ctx_;
   Settings settings_;
   Viewpoint camera_;
-  std::unique_ptr<GpuSceneData> scene_;
+  std::shared_ptr<GpuSceneData> scene_;
   std::unique_ptr<PathBuffers> buffers_;
   std::unique_ptr<PathSorter> pathSorter_;
   std::unique_ptr<HeatmapPass> heatmap_;
@@ -91,6 +117,11 @@ class PathTracer {
   SortPlan framePlan_;  // which bounces the frame being recorded sorts after
   FrameStats stats_;
   uint32_t frameIndex_ = 0;
+  // The frame being rendered in slices: the next slice's first path, the one recorded last (its end), and
+  // the stage times and wall time summed over the slices completed so far.
+  uint32_t sliceNext_ = 0, sliceEnd_ = 0;
+  std::vector<StageTime> sliceStages_;
+  double sliceGpuMs_ = 0.0, sliceWallMs_ = 0.0;
   bool detailedStats_ = false;
   std::vector<std::vector<uint32_t>> stepsPerBounce_;
   std::vector<GpuBuffer> stepsReadback_;

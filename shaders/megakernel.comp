@@ -13,8 +13,8 @@ void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   gCounters = f.counters;
   gCounterBase = 0u;  // every bounce counts in bounce 0's slots
-  uint id = gl_GlobalInvocationID.x;
-  if (id >= f.pathCount) {
+  uint id = f.firstPath + gl_GlobalInvocationID.x;  // this slice's paths (GpuFrame::pathCount)
+  if (gl_GlobalInvocationID.x >= f.pathCount) {
     countRays(0u);
     return;
   }
@@ -31,7 +31,7 @@ void main() {
     shadePath(f.scene, p, hit, b, f.bounceCount, rng);
     radiance = addBounceRadiance(radiance, b, p.radiance);
   }
-  f.hits.steps.v[id] = steps;
+  f.hits.steps.v[gl_GlobalInvocationID.x] = steps;  // by slot, in dispatch order like the wavefront's
   f.results.v[id] = vec4(radiance, 1.0);
   countRays(rays);
 }

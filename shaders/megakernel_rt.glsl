@@ -5,8 +5,8 @@
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
-  uint id = gl_LaunchIDEXT.x;
-  if (id >= f.pathCount) return;
+  if (gl_LaunchIDEXT.x >= f.pathCount) return;
+  uint id = f.firstPath + gl_LaunchIDEXT.x;  // this slice's paths (GpuFrame::pathCount)
   uint rng = rngSeed(id, f.frameIndex, 0u, f.seed, RL_RNG_CAMERA);
   PathVars p = cameraPath(f.camera, id / f.sppPerFrame, f.width, f.height, rng);
   uint rays = 0u;
@@ -19,7 +19,7 @@ void main() {
     shadePath(f.scene, p, hit, b, f.bounceCount, rng);
     radiance = addBounceRadiance(radiance, b, p.radiance);
   }
-  f.hits.steps.v[id] = 0u;
+  f.hits.steps.v[gl_LaunchIDEXT.x] = 0u;
   f.results.v[id] = vec4(radiance, 1.0);
   rtCountRays(f.counters, 0u, rays);
 }

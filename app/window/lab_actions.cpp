@@ -59,6 +59,8 @@ void LabWindow::loadSceneOrThrow(const std::string& nameOrPath) {
   auto tracer = std::make_unique<PathTracer>(*ctx_, loaded.scene, start, loaded.view);
   vkDeviceWaitIdle(ctx_->device());
   tracer_ = std::move(tracer);
+  live_->sceneChanged();
+  live_->restarted();
   scene_ = std::move(loaded);
   settings_.scene = nameOrPath;
   settings_.view = scene_.view.name;
@@ -96,8 +98,10 @@ bool LabWindow::applyCameraText(const std::string& text, std::string* error) {
   return true;
 }
 
-// Runs the script's actions due now. A screenshot ends the turn: it is taken of the frame rendered next.
+// Runs the script's actions due now. A screenshot ends the turn: it is taken of the render frame completed
+// next (several UI frames later when the frame renders in slices), and the script waits for it.
 bool LabWindow::runScript() {
+  if (!pendingRenderShot_.empty() || !pendingWindowShot_.empty()) return true;
   if (script_->finished()) return false;
   while (const ScriptAction* a = script_->next()) {
     try {

@@ -15,11 +15,27 @@ LabInput::LabInput(GLFWwindow* window) : window_(window) {
   glfwSetKeyCallback(window, onKey);
   glfwSetScrollCallback(window, onScroll);
   glfwSetMouseButtonCallback(window, onMouseButton);
+  glfwSetCursorPosCallback(window, onCursor);
+  glfwSetCharCallback(window, onChar);
+  glfwSetWindowFocusCallback(window, onFocus);
+  glfwSetCursorEnterCallback(window, onEnter);
 }
 
+bool LabInput::takeActivity() {
+  const bool any = activity_;
+  activity_ = false;
+  return any;
+}
+
+void LabInput::onCursor(GLFWwindow* window, double, double) { self(window)->activity_ = true; }
+void LabInput::onChar(GLFWwindow* window, unsigned int) { self(window)->activity_ = true; }
+void LabInput::onFocus(GLFWwindow* window, int) { self(window)->activity_ = true; }
+void LabInput::onEnter(GLFWwindow* window, int) { self(window)->activity_ = true; }
+
 void LabInput::onKey(GLFWwindow* window, int key, int, int action, int mods) {
-  if (action != GLFW_PRESS) return;
   LabInput* in = self(window);
+  in->activity_ = true;
+  if (action != GLFW_PRESS) return;
   // Function keys work even while a text field has focus; letters belong to the field then.
   const bool typing = ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput;
   switch (key) {
@@ -42,12 +58,14 @@ void LabInput::onKey(GLFWwindow* window, int key, int, int action, int mods) {
 }
 
 void LabInput::onScroll(GLFWwindow* window, double, double dy) {
+  self(window)->activity_ = true;
   if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) return;
   self(window)->scroll_ += static_cast<float>(dy);
 }
 
 // Looking starts only when the right button goes down over the render, not over a panel.
 void LabInput::onMouseButton(GLFWwindow* window, int button, int action, int) {
+  self(window)->activity_ = true;
   if (button != GLFW_MOUSE_BUTTON_RIGHT) return;
   LabInput* in = self(window);
   if (action == GLFW_PRESS && !(ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse)) {

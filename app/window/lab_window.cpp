@@ -9,8 +9,11 @@
 #include <imgui.h>
 
 #include "app/setting_flags.h"
+#include "app/window/frame_log.h"
 #include "app/window/lab_input.h"
 #include "app/window/heatmap_hover.h"
+#include "app/window/live_render.h"
+#include "app/window/wall_clock.h"
 #include "app/window/presenter.h"
 #include "app/window/swapchain.h"
 #include "renderer/heatmap_rules.h"
@@ -46,12 +49,14 @@ LabWindow::LabWindow(const WindowOptions& options)
   loadStartScene();
   if (options_.sidecar && options_.sidecar->camera) scene_.view = *options_.sidecar->camera;
   if (!options_.script.empty()) script_.emplace(loadScript(options_.script));
+  if (!options_.frameLog.empty()) frameLog_ = std::make_unique<FrameLog>(options_.frameLog);
   openWindow();
 }
 
 LabWindow::~LabWindow() {
   if (ctx_) vkDeviceWaitIdle(ctx_->device());
   tracer_.reset();
+  live_.reset();
   presenter_.reset();
   layer_.reset();
   input_.reset();
@@ -122,9 +127,13 @@ void LabWindow::openWindow() {
   input_ = std::make_unique<LabInput>(window_->handle());
   layer_ = std::make_unique<ImGuiLayer>(*ctx_, window_->handle(), *swapchain_);
   presenter_ = std::make_unique<Presenter>(*ctx_, *swapchain_, *layer_);
+  live_ = std::make_unique<LiveRender>(*ctx_, options_.renderBudgetMs);
 
   resetCamera(scene_.view);
   syncTracer();
+  // The first UI frame previews: the window shows the scene at once, and the preview tracer's pipelines
+  // are built now rather than at the first camera move (their first build took ~0.5 s on lavapipe).
+  live_->restarted();
   cameraModel_.builtinScenes = builtinSceneNames();
   cameraModel_.screenshotDir = options_.screenshotDir;
   cameraModel_.deviceName = ctx_->info().name + " (" + ctx_->info().driver + ")";
@@ -149,7 +158,7 @@ int LabWindow::run() {
   }
   std::signal(SIGINT, oldInt);
   std::signal(SIGTERM, oldTerm);
-  loopMsTotal_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  loopMsTotal_ = msSince(started);
   vkDeviceWaitIdle(ctx_->device());
   printSummary();
   if (ctx_->validationErrors() > 0) {
@@ -161,6 +170,8 @@ int LabWindow::run() {
 
 // One turn of the loop; false ends it. Minimised, it waits for events instead of rendering.
 bool LabWindow::frame() {
+  const auto start = std::chrono::steady_clock::now();
+  const Settings before = settings_;
   glfwPollEvents();
   if (window_->shouldClose() || quit_) return false;
   if (window_->minimized()) {
@@ -173,33 +184,76 @@ bool LabWindow::frame() {
   window_->framebufferSize(&fbw, &fbh);
   if (recreate_ || fbw != framebufferWidth_ || fbh != framebufferHeight_) recreateSwapchain();
 
-  auto now = std::chrono::steady_clock::now();
+  const auto now = std::chrono::steady_clock::now();
   float seconds = std::min(std::chrono::duration<float>(now - lastFrame_).count(), 0.25f);
   lastFrame_ = now;
-  layer_->newFrame();
-  handleHotkeys();
-  fillCameraModel();
-  UiRequests requests = ui_.draw(settings_, view_, cameraModel_);
-  ImGui::Render();
-  handleRequests(requests);
+  // The panels are rebuilt and the window presented only when something on it may have changed: input
+  // within the last kPanelSettleSeconds (ImGui's hover delays and animations play out in it), a script or
+  // panel change of settings, a preview or restart in the last UI frame, or completed render frames not yet
+  // shown, at most every kImageRefreshSeconds. Other UI frames only render their slice: on lavapipe a
+  // presented window costs tens of milliseconds whether or not the panels are rebuilt (docs/lab-window.md),
+  // which the UI frames of a live render cannot afford each time.
+  if (input_->takeActivity()) lastInput_ = now;
+  const bool refresh = imagePending_ && std::chrono::duration<double>(now - lastPresent_).count() >= kImageRefreshSeconds;
+  const bool drawPanels = panelsDirty_ || refresh || !(settings_ == before) ||
+                          std::chrono::duration<double>(now - lastInput_).count() < kPanelSettleSeconds;
+  panelsDirty_ = false;
+  const auto panelsStart = std::chrono::steady_clock::now();
+  if (drawPanels) {
+    layer_->newFrame();
+    handleHotkeys();
+    fillCameraModel();
+    UiRequests requests = ui_.draw(settings_, view_, cameraModel_);
+    ImGui::Render();
+    handleRequests(requests);
+  }
   updateCamera(seconds);
-  syncTracer();
+  const bool restarted = syncTracer();
+  if (restarted) live_->restarted();
   updateHeatmapHover(*tracer_, heatmapShown(settings_) != HeatmapView::None);
 
-  PresentedFrame shown = presenter_->drawFrame(*tracer_, ImGui::GetDrawData(), !pendingWindowShot_.empty(),
-                                               heatmapShown(settings_) != HeatmapView::None);
-  recreate_ = shown.recreateSwapchain;
-  if (!shown.rendered) return true;
-  ui_.onFrame(tracer_->settings(), tracer_->finishFrame(shown.wallMs));
+  // This UI frame's share of the render (a slice or a preview), then the panels over what is shown. A
+  // window screenshot waits for a UI frame that completed a render frame, so it shows that frame.
+  // A UI frame that presents spends the panels' time and a present besides its slice: the slice gets less.
+  const RenderTurn turn = live_->turn(*tracer_, scene_.scene, drawPanels ? msSince(panelsStart) + presentMs_ : 0.0);
+  const bool capture = turn.frameDone && !pendingWindowShot_.empty();
+  // A restart or preview changes what the panels show: they are rebuilt next UI frame. A completed frame's
+  // image and statistics are shown by the next refresh.
+  panelsDirty_ = restarted || turn.preview;
+  imagePending_ = imagePending_ || turn.frameDone;
+  PresentedFrame shown;
+  if (drawPanels || turn.preview || capture) {
+    const auto presentStart = std::chrono::steady_clock::now();
+    shown = presenter_->drawFrame(live_->shown(*tracer_), ImGui::GetDrawData(), capture,
+                                  heatmapShown(settings_) != HeatmapView::None);
+    presentMs_ += 0.5 * (msSince(presentStart) - presentMs_);  // smoothed: one slow present does not starve slices
+    recreate_ = shown.recreateSwapchain;
+    panelsDirty_ = panelsDirty_ || recreate_;
+    lastPresent_ = now;
+    imagePending_ = imagePending_ && !drawPanels;  // a preview alone leaves the render's frame unshown
+  }
+  ++uiFrames_;
+  if (frameLog_) {
+    UiFrameRecord r;
+    r.uiMs = msSince(start);
+    r.panels = drawPanels;
+    r.presented = shown.rendered;
+    r.restarted = restarted;
+    r.framePaths = tracer_->framePaths();
+    frameLog_->write(r, turn);
+  }
+  if (!turn.frameDone) return true;
+  // Statistics, screenshots and the script's frame count follow whole render frames only.
+  ui_.onFrame(tracer_->settings(), *turn.frameDone);
   ++frames_;
-  wallMsTotal_ += shown.wallMs;
+  wallMsTotal_ += turn.frameDone->wallMs;
   saveScreenshots(shown);
   if (script_) script_->frameDone();
   return true;
 }
 
 // The render is the window's size times the resolution scale; the renderer restarts only what must.
-void LabWindow::syncTracer() {
+bool LabWindow::syncTracer() {
   const VkExtent2D extent = swapchain_->extent();
   Settings want = settings_;
   auto scaled = [&](uint32_t size) {
@@ -209,16 +263,19 @@ void LabWindow::syncTracer() {
   want.width = scaled(extent.width);
   want.height = scaled(extent.height);
   settings_.width = want.width, settings_.height = want.height;
+  bool changed = false;
   if (!tracer_) {
     tracer_ = std::make_unique<PathTracer>(*ctx_, scene_.scene, want, camera_.viewpoint());
+    changed = true;
   } else {
-    if (!(want == tracer_->settings())) tracer_->applySettings(want);
-    if (!sameCamera(camera_.viewpoint(), tracer_->camera())) tracer_->setCamera(camera_.viewpoint());
+    if (!(want == tracer_->settings())) tracer_->applySettings(want), changed = true;
+    if (!sameCamera(camera_.viewpoint(), tracer_->camera())) tracer_->setCamera(camera_.viewpoint()), changed = true;
   }
   tracer_->setDetailedStats(view_.detailedStats);
   int w = 0, h = 0;
   window_->windowSize(&w, &h);
   ini_.width = w, ini_.height = h;
+  return changed && tracer_->accumulatedFrames() == 0;  // a change that kept the image needs no preview
 }
 
 void LabWindow::updateCamera(float seconds) { camera_.update(input_->cameraInput(seconds)); }
@@ -241,13 +298,13 @@ void LabWindow::resetCamera(const Viewpoint& view) {
 }
 
 void LabWindow::printSummary() const {
-  if (frames_ == 0) return;
+  if (frames_ == 0 || uiFrames_ == 0) return;
   std::fprintf(stderr,
-               "raylab: %llu frames at %ux%u (render %ux%u): %.1f ms per frame submitted (render + panels), "
-               "%.1f ms per loop turn (%.1f fps)\n",
+               "raylab: %llu render frames at %ux%u (render %ux%u): %.1f ms of render work each; %llu UI frames, "
+               "%.1f ms per UI frame (%.1f fps)\n",
                static_cast<unsigned long long>(frames_), swapchain_->extent().width, swapchain_->extent().height,
-               settings_.width, settings_.height, wallMsTotal_ / frames_, loopMsTotal_ / frames_,
-               1000.0 * frames_ / loopMsTotal_);
+               settings_.width, settings_.height, wallMsTotal_ / frames_, static_cast<unsigned long long>(uiFrames_),
+               loopMsTotal_ / uiFrames_, 1000.0 * uiFrames_ / loopMsTotal_);
 }
 
 }  // namespace raylab

@@ -26,6 +26,8 @@ class Swapchain;
 class Presenter;
 class PathTracer;
 class LabInput;
+class FrameLog;
+class LiveRender;
 struct PresentedFrame;
 
 class LabWindow {
@@ -42,7 +44,7 @@ class LabWindow {
   void openWindow();
   bool frame();
   void recreateSwapchain();
-  void syncTracer();
+  bool syncTracer();  // true when the render restarted its accumulation
   void updateCamera(float seconds);
   void fillCameraModel();
   void printSummary() const;
@@ -80,13 +82,20 @@ class LabWindow {
   std::unique_ptr<ImGuiLayer> layer_;
   std::unique_ptr<Presenter> presenter_;
   std::unique_ptr<PathTracer> tracer_;
+  std::unique_ptr<LiveRender> live_;
+  std::unique_ptr<FrameLog> frameLog_;
 
   bool quit_ = false;
   bool recreate_ = false;
   int framebufferWidth_ = 0, framebufferHeight_ = 0;  // what the swapchain was made for
   std::string pendingRenderShot_, pendingWindowShot_;  // names of screenshots due after this frame
-  std::chrono::steady_clock::time_point lastFrame_;
+  std::chrono::steady_clock::time_point lastFrame_, lastInput_, lastPresent_;
+  static constexpr double kPanelSettleSeconds = 1.0, kImageRefreshSeconds = 0.1;
+  bool panelsDirty_ = true;
+  bool imagePending_ = false;
+  double presentMs_ = 0.0;  // what presenting the window took, smoothed (LiveRender leaves it room)  // a render frame completed since the window was last presented
   uint64_t frames_ = 0;
+  uint64_t uiFrames_ = 0;
   double wallMsTotal_ = 0.0, loopMsTotal_ = 0.0;
 };
 

@@ -5,8 +5,7 @@
 #include "app/window/imgui_layer.h"
 #include "app/window/render_image.h"
 #include "app/window/swapchain.h"
-#include "app/window/tiny_pass.h"
-#include "renderer/path_tracer.h"
+#include "app/window/wall_clock.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
 
@@ -37,7 +36,6 @@ VkSemaphore makeSemaphore(VkDevice device) {
 
 Presenter::Presenter(const VulkanContext& ctx, Swapchain& swapchain, ImGuiLayer& layer)
     : ctx_(ctx), swapchain_(swapchain), layer_(layer) {
-  tinyPass_ = std::make_unique<TinyPass>(ctx);
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   poolInfo.queueFamilyIndex = ctx.queueFamily();
@@ -67,7 +65,7 @@ void Presenter::onSwapchainRecreated() {
   for (uint32_t i = 0; i < swapchain_.imageCount(); ++i) rendered_.push_back(makeSemaphore(ctx_.device()));
 }
 
-PresentedFrame Presenter::drawFrame(PathTracer& tracer, ImDrawData* ui, bool captureWindow, bool nearest) {
+PresentedFrame Presenter::drawFrame(const ShownImage& shown, ImDrawData* ui, bool captureWindow, bool nearest) {
   PresentedFrame out;
   uint32_t index = 0;
   VkResult acquired = swapchain_.acquire(acquired_, &index);
@@ -76,8 +74,10 @@ PresentedFrame Presenter::drawFrame(PathTracer& tracer, ImDrawData* ui, bool cap
     return out;
   }
   captureWindow = captureWindow && swapchain_.readable();
-  if (!image_ || image_->width() != tracer.width() || image_->height() != tracer.height())
-    image_ = std::make_unique<RenderImage>(ctx_, tracer.width(), tracer.height());
+  if (!image_ || image_->width() != shown.width || image_->height() != shown.height) {
+    image_ = std::make_unique<RenderImage>(ctx_, shown.width, shown.height);
+    imageVersion_ = 0;
+  }
   const VkExtent2D extent = swapchain_.extent();
   if (captureWindow && capture_.size() < VkDeviceSize(extent.width) * extent.height * 4)
     capture_ = GpuBuffer(ctx_, VkDeviceSize(extent.width) * extent.height * 4, MemoryKind::HostVisible);
@@ -87,7 +87,7 @@ PresentedFrame Presenter::drawFrame(PathTracer& tracer, ImDrawData* ui, bool cap
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   VK_CHECK(vkBeginCommandBuffer(cmd_, &begin));
-  record(cmd_, tracer, ui, index, captureWindow, nearest);
+  record(cmd_, shown, ui, index, captureWindow, nearest);
   VK_CHECK(vkEndCommandBuffer(cmd_));
 
   VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_TRANSFER_BIT;  // the first use of the image is the blit
@@ -102,7 +102,7 @@ PresentedFrame Presenter::drawFrame(PathTracer& tracer, ImDrawData* ui, bool cap
   VK_CHECK(vkResetFences(ctx_.device(), 1, &fence_));
   VK_CHECK(vkQueueSubmit(ctx_.queue(), 1, &submit, fence_));
   VK_CHECK(vkWaitForFences(ctx_.device(), 1, &fence_, VK_TRUE, UINT64_MAX));
-  out.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  out.wallMs = msSince(start);
   out.rendered = true;
   if (captureWindow) {
     out.window = readCapture();
@@ -113,11 +113,13 @@ PresentedFrame Presenter::drawFrame(PathTracer& tracer, ImDrawData* ui, bool cap
   return out;
 }
 
-void Presenter::record(VkCommandBuffer cmd, PathTracer& tracer, ImDrawData* ui, uint32_t index, bool capture,
+void Presenter::record(VkCommandBuffer cmd, const ShownImage& shown, ImDrawData* ui, uint32_t index, bool capture,
                        bool nearest) {
-  tinyPass_->record(cmd);
-  tracer.recordFrame(cmd);
-  recordBlit(cmd, tracer, index, nearest);
+  // The render image changes only when a render frame completes or a preview is made; most UI frames of a
+  // sliced render only blit it again.
+  if (shown.version != imageVersion_) recordCopy(cmd, shown);
+  imageVersion_ = shown.version;
+  recordBlit(cmd, index, nearest);
   const VkImage target = swapchain_.image(index);
   imageBarrier(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
@@ -130,33 +132,37 @@ void Presenter::record(VkCommandBuffer cmd, PathTracer& tracer, ImDrawData* ui, 
                capture ? 0 : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
 }
 
-// Render buffer -> render image -> swapchain image (scaled to the window), leaving the swapchain image in
-// TRANSFER_DST layout.
-void Presenter::recordBlit(VkCommandBuffer cmd, PathTracer& tracer, uint32_t index, bool nearest) {
+// Render buffer -> render image, left in TRANSFER_SRC layout for the blits of this and later UI frames.
+void Presenter::recordCopy(VkCommandBuffer cmd, const ShownImage& shown) {
   VkBufferMemoryBarrier written{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
   written.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   written.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
   written.srcQueueFamilyIndex = written.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  written.buffer = tracer.imageBuffer().handle();
+  written.buffer = shown.pixels->handle();
   written.size = VK_WHOLE_SIZE;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 1,
                        &written, 0, nullptr);
-  const VkImage render = image_->handle(), target = swapchain_.image(index);
+  const VkImage render = image_->handle();
   imageBarrier(cmd, render, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
   VkBufferImageCopy copy{};
   copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  copy.imageExtent = {tracer.width(), tracer.height(), 1};
-  vkCmdCopyBufferToImage(cmd, tracer.imageBuffer().handle(), render, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+  copy.imageExtent = {shown.width, shown.height, 1};
+  vkCmdCopyBufferToImage(cmd, shown.pixels->handle(), render, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
   imageBarrier(cmd, render, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                VK_ACCESS_TRANSFER_READ_BIT);
+}
+
+// Render image -> swapchain image (scaled to the window), leaving the swapchain image in TRANSFER_DST layout.
+void Presenter::recordBlit(VkCommandBuffer cmd, uint32_t index, bool nearest) {
+  const VkImage render = image_->handle(), target = swapchain_.image(index);
   imageBarrier(cmd, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
   const VkExtent2D extent = swapchain_.extent();
   VkImageBlit blit{};
   blit.srcSubresource = blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  blit.srcOffsets[1] = {int32_t(tracer.width()), int32_t(tracer.height()), 1};
+  blit.srcOffsets[1] = {int32_t(image_->width()), int32_t(image_->height()), 1};
   blit.dstOffsets[1] = {int32_t(extent.width), int32_t(extent.height), 1};
   vkCmdBlitImage(cmd, render, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
                  nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);

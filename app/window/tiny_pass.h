@@ -1,4 +1,4 @@
-// An empty render pass on a 1x1 image, recorded before the path tracer's frame in the window. lavapipe
+// An empty render pass on a 1x1 image, recorded before each render submission of the window (LiveRender). lavapipe
 // runs a raster scene over the bound framebuffer at every timestamp (GpuTimer's flushes); after the UI
 // pass that framebuffer is the whole window, and those scenes took 5-11% of the frame between the stage
 // scopes. Binding a 1x1 framebuffer first makes them nearly free. Other devices ignore an empty pass.

@@ -20,6 +20,8 @@ struct WindowOptions {
   bool reset = false;                  // --reset: ignore imgui.ini (it is rewritten on exit)
   int width = 0, height = 0;           // --size: the window's size; 0: remembered or default
   std::optional<float> scale;          // --scale: render size / window size
+  std::string frameLog;                // --frame-log FILE: one JSON line per UI frame (frame_log.h)
+  double renderBudgetMs = 40.0;        // --render-budget-ms: render work per UI frame (live_render.h)
 };
 
 // Opens the window and runs until it is closed or the script quits. Returns an exit code; throws

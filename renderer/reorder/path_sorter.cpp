@@ -11,8 +11,9 @@
 namespace raylab {
 namespace {
 
-void copyInto(VkCommandBuffer cmd, const GpuBuffer& from, const GpuBuffer& to, VkDeviceSize bytes) {
-  VkBufferCopy region{0, 0, bytes};
+// The first `bytes` of `from` to `to` at `offset`.
+void copyInto(VkCommandBuffer cmd, const GpuBuffer& from, const GpuBuffer& to, VkDeviceSize bytes, VkDeviceSize offset) {
+  VkBufferCopy region{0, offset, bytes};
   vkCmdCopyBuffer(cmd, from.handle(), to.handle(), 1, &region);
 }
 
@@ -58,42 +59,48 @@ void PathSorter::makeSorter(const Settings& settings) {
     sorter_ = std::make_unique<GpuSorter>(ctx_, settings.sort, maxPaths_);
 }
 
-void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
-                                    uint32_t bounce, bool learn, bool detailed, StageTimer* timer) {
-  const uint32_t n = buffers.pathCount;
+// The readbacks of `bounce`, room for a whole frame's paths.
+PathSorter::Capture& PathSorter::captureOf(uint32_t bounce, uint32_t framePaths) {
+  if (captures_.size() <= bounce) captures_.resize(bounce + 1);
+  if (!captures_[bounce] || captures_[bounce]->hitT.size() != VkDeviceSize(framePaths) * 4)
+    captures_[bounce] = std::make_unique<Capture>(ctx_, framePaths);
+  return *captures_[bounce];
+}
+
+void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, PathRange slice,
+                                    uint32_t stateSet, uint32_t bounce, bool learn, bool detailed, StageTimer* timer) {
+  const uint32_t n = slice.count;
+  const VkDeviceSize at = slice.first;
   if (bounce > 0 && learn) keys_.recordLearn(cmd, buffers.frameBlock.address(), stateSet, bounce, n, timer);
   if (!detailed || bounce == 0) return;
   // The rays of this bounce with the predictions made for them, before shading overwrites them.
-  if (captures_.size() <= bounce) captures_.resize(bounce + 1);
-  if (!captures_[bounce]) captures_[bounce] = std::make_unique<Capture>(ctx_, n);
-  Capture& c = *captures_[bounce];
+  Capture& c = captureOf(bounce, buffers.pathCount);
   const GpuBuffer* state = buffers.state[stateSet];
-  copyInto(cmd, state[RL_STATE_ORIGIN], c.origin, VkDeviceSize(n) * 16);
-  copyInto(cmd, state[RL_STATE_DIRECTION], c.direction, VkDeviceSize(n) * 16);
-  copyInto(cmd, state[RL_STATE_THROUGHPUT], c.throughput, VkDeviceSize(n) * 16);
-  copyInto(cmd, buffers.hitT, c.hitT, VkDeviceSize(n) * 4);
+  copyInto(cmd, state[RL_STATE_ORIGIN], c.origin, VkDeviceSize(n) * 16, at * 16);
+  copyInto(cmd, state[RL_STATE_DIRECTION], c.direction, VkDeviceSize(n) * 16, at * 16);
+  copyInto(cmd, state[RL_STATE_THROUGHPUT], c.throughput, VkDeviceSize(n) * 16, at * 16);
+  copyInto(cmd, buffers.hitT, c.hitT, VkDeviceSize(n) * 4, at * 4);
   c.haveRays = true;
   computeBarrier(cmd);
 }
 
-void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
-                              bool detailed, StageTimer* timer) {
-  const uint32_t n = buffers.pathCount;
+void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, PathRange slice, uint32_t stateSet,
+                              uint32_t bounce, bool detailed, StageTimer* timer) {
+  const uint32_t n = slice.count;
   keys_.recordKeys(cmd, buffers.frameBlock.address(), stateSet, bounce, buffers.keys.address(),
                    buffers.values.address(), n, timer);
   if (detailed) {
     // Keys made now sort the rays of the next bounce.
-    if (captures_.size() <= bounce + 1) captures_.resize(bounce + 2);
-    if (!captures_[bounce + 1]) captures_[bounce + 1] = std::make_unique<Capture>(ctx_, n);
-    copyInto(cmd, buffers.keys, captures_[bounce + 1]->keys, VkDeviceSize(n) * 4);
-    captures_[bounce + 1]->haveKeys = true;
+    Capture& c = captureOf(bounce + 1, buffers.pathCount);
+    copyInto(cmd, buffers.keys, c.keys, VkDeviceSize(n) * 4, VkDeviceSize(slice.first) * 4);
+    c.haveKeys = true;
     computeBarrier(cmd);
   }
 }
 
-uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
-                                           StageTimer* timer) {
-  const uint32_t n = buffers.pathCount;
+uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t paths,
+                                           uint32_t stateSet, StageTimer* timer) {
+  const uint32_t n = paths;
   {
     ScopedStage s(timer, cmd, "sort");  // the sorter fences its own passes
     // Live keys are < 2^(keyBits-1) and the dead key is all ones (KeyStage::keyBits), so keyBits - 1 bits

@@ -13,6 +13,7 @@
 
 #include "renderer/vk/compute_pipeline.h"
 #include "renderer/frame_stats.h"
+#include "renderer/path_buffers.h"
 #include "renderer/vk/gpu_buffer.h"
 #include "renderer/reorder/gpu_sort.h"
 #include "renderer/reorder/key_stage.h"
@@ -35,15 +36,18 @@ class PathSorter {
   // the sorter the settings ask for; the sorter's scratch is only held while sorting.
   void apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths, const SettingsChange& change);
 
+  // Every call works on the paths of `slice` (the whole frame, or the slice PathTracer::recordSlice records:
+  // a slice sorts only its own paths); detailed readbacks go to the slice's part of the frame's.
   // After the trace of `bounce`: the learn stage (when `learn`: these rays were keyed and sorted), and in
   // detailed mode the accuracy readbacks.
-  void recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
-                        bool learn, bool detailed, StageTimer* timer);
+  void recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, PathRange slice, uint32_t stateSet,
+                        uint32_t bounce, bool learn, bool detailed, StageTimer* timer);
   // After shading `bounce`: the keys of the next rays (in buffers.keys, current set order).
-  void recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
-                  bool detailed, StageTimer* timer);
+  void recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, PathRange slice, uint32_t stateSet,
+                  uint32_t bounce, bool detailed, StageTimer* timer);
   // Sort, live count and gather; returns the state set that holds the reordered paths.
-  uint32_t recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, StageTimer* timer);
+  uint32_t recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t paths, uint32_t stateSet,
+                               StageTimer* timer);
   // Adds key width, cache and sort memory and, in detailed mode, prediction accuracy to the stats.
   void finishFrame(FrameStats& stats, bool detailed);
 
@@ -53,6 +57,7 @@ class PathSorter {
   struct Capture;  // host-visible copies of one bounce's rays, predictions, hits and keys
 
   void makeSorter(const Settings& settings);
+  Capture& captureOf(uint32_t bounce, uint32_t framePaths);
 
   const VulkanContext& ctx_;
   KeyStage keys_;

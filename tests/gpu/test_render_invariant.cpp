@@ -1,7 +1,9 @@
 // The central invariant: sorting never changes the image. Each path's random stream depends on its id,
 // not on its thread, and finished radiance is summed per pixel in sample order, so for every key
 // strategy and sort the accumulated image must equal the unsorted one bit for bit (no tolerance).
+#include <algorithm>
 #include <cstring>
+#include <iterator>
 
 #include <gtest/gtest.h>
 
@@ -105,6 +107,129 @@ TEST_P(SortInvariant, SortingFewerKeyBitsRendersTheUnsortedImage) {
       std::vector<glm::vec3> sorted = renderRadiance(ctx(), scene, s, view);
       EXPECT_EQ(0, std::memcmp(sorted.data(), unsorted.data(), sorted.size() * sizeof(glm::vec3)))
           << toString(strategy) << " sorting " << sortBits << " key bits changed the image";
+    }
+  }
+}
+
+// A frame rendered in slices (PathTracer::recordSlice, what the window does to stay live) is the whole-frame
+// render bit for bit: uneven slice sizes (one path, a part of a work group, several groups, then the rest),
+// each slice sorted on its own, over two frames (the second uses what the caches learned in the first), for
+// the unsorted wavefront, every sort policy's sorted wavefront and the megakernel. Rays and stage names of a
+// sliced frame are those of the whole frame, so its statistics describe whole frames.
+std::vector<glm::vec3> renderSlicedRadiance(const VulkanContext& ctx, const Scene& scene, const Settings& settings,
+                                            const Viewpoint& view, std::vector<FrameStats>* frames,
+                                            bool detailed = false) {
+  const uint32_t sizes[] = {1, 37, 300, 64, 1000};
+  PathTracer tracer(ctx, scene, settings, view);
+  tracer.setDetailedStats(detailed);
+  size_t next = 0;
+  for (uint32_t f = 0; f < settings.frames; ++f) {
+    const FrameStats* done = nullptr;
+    uint32_t slices = 0;
+    while (!done) {
+      const uint32_t first = tracer.nextSlicePath();
+      EXPECT_EQ(first == 0, slices == 0) << "a frame starts with its first slice";
+      ctx.submitAndWait([&](VkCommandBuffer cmd) { tracer.recordSlice(cmd, sizes[next++ % std::size(sizes)]); });
+      done = tracer.finishSlice(1.0);
+      ++slices;
+    }
+    EXPECT_GT(slices, 2u);
+    EXPECT_EQ(done->wallMs, double(slices)) << "wall time sums over the slices";
+    frames->push_back(*done);
+  }
+  return tracer.readRadiance();
+}
+
+std::vector<std::pair<std::string, int>> stageNames(const FrameStats& s) {
+  std::vector<std::pair<std::string, int>> names;
+  for (const StageTime& t : s.stages) names.emplace_back(t.stage, t.bounce);
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+TEST_P(SortInvariant, SlicedFramesRenderTheWholeFrameImage) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("hall");
+  Settings base;
+  base.width = 37;
+  base.height = 19;
+  base.bounces = 4;
+  base.sppPerFrame = 2;
+  base.frames = 2;
+  std::vector<Settings> cases;
+  cases.push_back(base);
+  for (SortPolicy policy : {SortPolicy::Always, SortPolicy::Auto}) {
+    Settings s = base;
+    s.strategy = KeyStrategy::Gaussian;
+    s.sort = GetParam();
+    s.sortPolicy = policy;
+    cases.push_back(s);
+  }
+  Settings mega = base;
+  mega.kernel = Kernel::Megakernel;
+  cases.push_back(mega);
+  for (const Settings& s : cases) {
+    PathTracer whole(ctx(), scene, s, view);
+    FrameStats wholeStats;
+    for (uint32_t f = 0; f < s.frames; ++f) wholeStats = whole.renderFrame();
+    std::vector<FrameStats> sliced;
+    std::vector<glm::vec3> radiance = renderSlicedRadiance(ctx(), scene, s, view, &sliced);
+    std::vector<glm::vec3> expected = whole.readRadiance();
+    const std::string what = toString(s.kernel) + " " + toString(s.strategy) + " " + toString(s.sortPolicy);
+    ASSERT_EQ(radiance.size(), expected.size());
+    EXPECT_EQ(0, std::memcmp(radiance.data(), expected.data(), radiance.size() * sizeof(glm::vec3)))
+        << what << ": the sliced frames changed the image";
+    ASSERT_EQ(sliced.size(), s.frames);
+    EXPECT_EQ(sliced.back().raysTraced, wholeStats.raysTraced) << what;
+    EXPECT_EQ(sliced.back().samplesPerPixel, wholeStats.samplesPerPixel) << what;
+    if (s.sortPolicy != SortPolicy::Auto) {  // auto's second frame sorts where its (timed) costs say
+      EXPECT_EQ(stageNames(sliced.back()), stageNames(wholeStats)) << what;
+    }
+  }
+}
+
+// Detailed statistics of a sliced frame are read back slice by slice into the whole frame's readbacks:
+// unsorted, slot order is path order, so the per-bounce warp efficiency and traversal steps equal the whole
+// frame's exactly (wavefront and megakernel); sorted with a key that learns nothing (fixed), the cell-hit
+// rate and distinct keys do too (prediction is per path; only the sort order within a slice differs).
+TEST_P(SortInvariant, SlicedFramesKeepDetailedStatistics) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("hall");
+  Settings base;
+  base.width = 37;
+  base.height = 19;
+  base.bounces = 3;
+  base.frames = 1;
+  Settings sorted = base;
+  sorted.strategy = KeyStrategy::Fixed;
+  sorted.sort = GetParam();
+  Settings mega = base;
+  mega.kernel = Kernel::Megakernel;
+  for (const Settings& s : {base, sorted, mega}) {
+    PathTracer whole(ctx(), scene, s, view);
+    whole.setDetailedStats(true);
+    const FrameStats expected = whole.renderFrame();
+    std::vector<FrameStats> sliced;
+    renderSlicedRadiance(ctx(), scene, s, view, &sliced, true);
+    const FrameStats& got = sliced.back();
+    const std::string what = toString(s.kernel) + " " + toString(s.strategy);
+    ASSERT_EQ(got.bounces.size(), expected.bounces.size()) << what;
+    for (size_t b = 0; b < got.bounces.size(); ++b) {
+      const BounceStats &g = got.bounces[b], &e = expected.bounces[b];
+      EXPECT_EQ(g.rays, e.rays) << what << " bounce " << b;
+      if (s.sorts()) {
+        if (b > 0) {
+          EXPECT_GE(e.cellHitRate, 0.0) << what << " bounce " << b << ": measured";
+        }
+        EXPECT_EQ(g.cellHitRate, e.cellHitRate) << what << " bounce " << b;
+        EXPECT_EQ(g.distinctKeys, e.distinctKeys) << what << " bounce " << b;
+        EXPECT_EQ(g.predictionErrorMedian, e.predictionErrorMedian) << what << " bounce " << b;
+      } else {
+        EXPECT_GT(e.virtualWarpEfficiency, 0.0) << what << " bounce " << b;
+        EXPECT_EQ(g.virtualWarpEfficiency, e.virtualWarpEfficiency) << what << " bounce " << b;
+        EXPECT_EQ(g.meanTraversalSteps, e.meanTraversalSteps) << what << " bounce " << b;
+      }
     }
   }
 }

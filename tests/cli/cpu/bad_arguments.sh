@@ -54,6 +54,10 @@ expect 3 render --scene /nonexistent/missing.gltf
 expect 2 render --device no-such-device --size 8x4
 expect 2 render --size 8192x8192 --spp 64
 expect 2 render --strategy fixed --heatmap cache-mean
+expect 2 --frame-log
+expect 2 --frame-log /nonexistent/folder/log.jsonl
+expect 2 --render-budget-ms 0
+expect 2 --render-budget-ms soon
 expect 0 bench --help
 expect 0 render --help
 # (That the documented limits themselves are accepted needs a render: tests/cli/gpu/accepted_limits.sh.)

@@ -1,0 +1,39 @@
+// `raylab --frame-log FILE`: one JSON object per line and UI frame, so a benchmark (app/frame_log_report.py)
+// can report how live the window stays (p50/p95 of the UI frame time, time to a preview after a change)
+// from a real run. Speed claims come from such logs, never from timed tests.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+#include "app/window/live_render.h"
+
+namespace raylab {
+
+// What one turn of the window's loop did besides its render work (RenderTurn: render_ms, frame_done,
+// preview, slice_paths, preview_width/height).
+struct UiFrameRecord {
+  double uiMs = 0.0;          // the turn's wall time: events, panels, render work, blit, present
+  bool restarted = false;     // a change of camera or settings restarted the accumulation in it
+  bool panels = false;        // the panels were rebuilt in it (after input, or when what they show changed)
+  bool presented = false;     // the window was drawn and presented in it
+  uint32_t framePaths = 0;    // paths of a whole render frame
+};
+
+class FrameLog {
+ public:
+  // Opens (truncates) `path`; throws std::runtime_error naming the file and the reason when it cannot.
+  explicit FrameLog(const std::string& path);
+  ~FrameLog();
+  FrameLog(const FrameLog&) = delete;
+  FrameLog& operator=(const FrameLog&) = delete;
+
+  void write(const UiFrameRecord& r, const RenderTurn& turn);
+
+ private:
+  std::FILE* file_ = nullptr;
+  uint64_t frames_ = 0;
+};
+
+}  // namespace raylab
