@@ -109,6 +109,7 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       {"--sort", [&](const std::string& v) { s.sort = parseEnum("--sort", v, &parseSortAlgorithm, "none|bitonic|radix"); }},
       {"--sort-policy", [&](const std::string& v) { s.sortPolicy = parseEnum("--sort-policy", v, &parseSortPolicy, "always|never|auto"); }},
       {"--sort-bits", [&](const std::string& v) { s.sortBits = parseUint("--sort-bits", v, 0, 32); }},
+      {"--learn-every", [&](const std::string& v) { s.learnEvery = parseUint("--learn-every", v, 1, 64); }},
       {"--grid", [&](const std::string& v) { parseGrid(v, s); }},
       {"--clamp", [&](const std::string& v) {
          s.clampToCamera = true;
@@ -182,6 +183,7 @@ std::string commonOptionsHelp() {
          "  --ema-alpha A          EMA weight of a new length (default 0.2)\n"
          "  --gauss-outlier S      reject lengths beyond S sigmas (default 3)\n"
          "  --gauss-reset V        reset a cell when its variance exceeds V (default 20, 'inf' never)\n"
+         "  --learn-every N        length caches learn from every N-th sorted ray, 1..64 (default 1)\n"
          "  --exposure E           display exposure (default 1)\n"
          "  --heatmap VIEW         show sort-key|cell-hit|traversal-steps|warp-efficiency|cache-mean|\n"
          "                         cache-variance per pixel instead of the render\n"

@@ -36,6 +36,7 @@ const std::map<std::string, Copy>& fieldsOfFlag() {
       {"ema-alpha", [](Settings& t, const Settings& f) { t.emaAlpha = f.emaAlpha; }},
       {"gauss-outlier", [](Settings& t, const Settings& f) { t.gaussOutlier = f.gaussOutlier; }},
       {"gauss-reset", [](Settings& t, const Settings& f) { t.gaussReset = f.gaussReset; }},
+      {"learn-every", [](Settings& t, const Settings& f) { t.learnEvery = f.learnEvery; }},
       {"count-simt", [](Settings& t, const Settings& f) { t.countSimt = f.countSimt; }},
       {"heatmap", [](Settings& t, const Settings& f) { t.heatmap = f.heatmap; }},
       {"heatmap-bounce", [](Settings& t, const Settings& f) { t.heatmapBounce = f.heatmapBounce; }},

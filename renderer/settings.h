@@ -144,6 +144,9 @@ struct Settings {
   float emaAlpha = 0.2f;
   float gaussOutlier = 3.0f;  // sigmas beyond which a sample is an outlier
   float gaussReset = 20.0f;   // variance above which a cell restarts (the study's tuned value)
+  // Length-cache learning reads every learnEvery-th slot of the sorted rays (1: all of them): a stratified
+  // sample of the key order, so each cell still learns; cheaper learning, a noisier mean. 1..64.
+  uint32_t learnEvery = 1;
 
   // Measurement and display
   bool countSimt = false;  // subgroup-ballot counting in the traversal loop (not for timed runs)

@@ -68,6 +68,7 @@ std::optional<std::string> settingsError(const Settings& s) {
     f(R::gaussOutlier, s.gaussOutlier);
     if (!std::isinf(s.gaussReset) || s.gaussReset < 0) f(R::gaussReset, s.gaussReset);
     u(R::sortBits, s.sortBits);
+    u(R::learnEvery, s.learnEvery);
     u(R::heatmapBounce, s.heatmapBounce);
     // An unlocked range is not used (the frame's own is), but it is still a range a lock would use.
     checkHeatmapRange(s.heatmapRange);

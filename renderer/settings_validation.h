@@ -39,6 +39,7 @@ inline constexpr NumberRange emaAlpha{"--ema-alpha", L::kMinEmaAlpha, L::kMaxEma
 inline constexpr NumberRange gaussOutlier{"--gauss-outlier", 0, L::kMaxGaussOutlier};
 inline constexpr NumberRange gaussReset{"--gauss-reset", 0, 3.0e38};
 inline constexpr NumberRange sortBits{"--sort-bits", 0, 32};
+inline constexpr NumberRange learnEvery{"--learn-every", 1, 64};
 inline constexpr NumberRange heatmapBounce{"--heatmap-bounce", 0, L::kMaxBounces - 1};
 inline constexpr NumberRange heatmapRangeMin{"--heatmap-range min", 0, L::kMaxHeatmapValue};
 inline constexpr NumberRange heatmapRangeMax{"--heatmap-range max", 0, L::kMaxHeatmapValue};

@@ -36,6 +36,7 @@ json toJson(const Settings& s) {
       {"gauss_outlier", s.gaussOutlier},
       // JSON has no infinity: an unbounded reset threshold is written as null.
       {"gauss_reset", std::isfinite(s.gaussReset) ? json(s.gaussReset) : json(nullptr)},
+      {"learn_every", s.learnEvery},
       {"count_simt", s.countSimt},
       {"heatmap", toString(s.heatmap)},
       {"heatmap_bounce", s.heatmapBounce},
@@ -110,6 +111,8 @@ Settings settingsFromJson(const json& j) {
     s.emaAlpha = floatField("ema_alpha", R::emaAlpha);
     s.gaussOutlier = floatField("gauss_outlier", R::gaussOutlier);
     s.gaussReset = need("gauss_reset").is_null() ? INFINITY : floatField("gauss_reset", R::gaussReset);
+    // Older sidecars have no learning stride: they learned from every path.
+    if (j.contains("learn_every")) s.learnEvery = uintField("learn_every", R::learnEvery);
     s.countSimt = need("count_simt").get<bool>();
     // Older sidecars have no tracer or SER: they used the compute tracer.
     if (j.contains("tracer")) {

@@ -10,6 +10,10 @@
 // order threads add in. key_merge.comp then folds each touched batch into its entry.
 // Lanes that share an entry (the usual case once rays are sorted) first sum their samples across the
 // subgroup and one lane adds the sums: far fewer atomics on hot entries, and the same integer totals.
+// Sampled learning (Settings::learnEvery = k > 1): only every k-th slot learns, the phase moving with frame
+// and bounce. The rays are in sort order here (learning follows sorted bounces only), so the sample is
+// stratified along the keys: every region keeps learning, from k times fewer rays. Slots past the live
+// prefix hold finished paths and are not read.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
@@ -45,8 +49,9 @@ void main() {
   int e = -1;
   int64_t q = 0l;
   bool outlier = false;
-  if (i < pc.count) {
-    FrameBuf frame = FrameBuf(pc.frame);
+  FrameBuf frame = FrameBuf(pc.frame);
+  bool sampled = (i + frame.f.frameIndex + pc.bounce) % pc.learnEvery == 0u;
+  if (i < pc.count && sampled && i < frame.f.live.v[RL_LIVE_COUNT]) {
     GpuPathState state = frame.f.state[pc.stateSet];
     float t = frame.f.hits.t.v[i];
     vec3 origin, dir;

@@ -140,7 +140,7 @@ struct KeyLearnPush {
   uint stateSet;
   uint bounce;
   uint count;
-  uint pad0;
+  uint learnEvery;  // Settings::learnEvery: slots i with (i + frameIndex + bounce) % learnEvery == 0 learn
 };
 
 #ifdef __cplusplus

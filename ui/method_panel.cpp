@@ -92,6 +92,9 @@ void drawLengthSection(Settings& s) {
   ImGui::EndDisabled();
   ImGui::SliderFloat("outlier sigmas", &s.gaussOutlier, 0.0f, L::kMaxGaussOutlier, "%.2f", kClamp);
   ImGui::EndDisabled();
+  ImGui::BeginDisabled(k != KeyStrategy::Average && k != KeyStrategy::Ema && k != KeyStrategy::Gaussian);
+  sliderU32("learn from 1 ray in", s.learnEvery, 1, 64);
+  ImGui::EndDisabled();
 }
 
 // Views these settings cannot show are greyed out with the reason as tooltip (heatmap_rules.h).

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "renderer/reorder/key_functions.h"
+
 namespace raylab {
 namespace {
 
@@ -56,6 +58,8 @@ MethodKey methodKeyOf(const Settings& s) {
   if (readsFixedLength(s.strategy)) k.fixedFactor = s.fixedFactor;
   if (s.strategy == KeyStrategy::Ema) k.emaAlpha = s.emaAlpha;
   if (s.strategy == KeyStrategy::Gaussian) k.gaussOutlier = s.gaussOutlier, k.gaussReset = s.gaussReset;
+  k.sortBits = s.sortBits;
+  if (usesLengthCache(s.strategy)) k.learnEvery = s.learnEvery;
   return k;
 }
 
@@ -80,6 +84,8 @@ std::string describe(const MethodKey& k) {
   if (readsFixedLength(k.strategy)) text += " |" + number("f", k.fixedFactor);
   if (k.strategy == KeyStrategy::Ema) text += number("a", k.emaAlpha);
   if (k.strategy == KeyStrategy::Gaussian) text += number("out", k.gaussOutlier) + number("reset", k.gaussReset);
+  if (k.sortBits != 0) text += " | bits " + std::to_string(k.sortBits);
+  if (k.learnEvery > 1) text += " | learn 1/" + std::to_string(k.learnEvery);
   return text;
 }
 

@@ -35,6 +35,8 @@ struct MethodKey {
   float emaAlpha = 0.0f;
   float gaussOutlier = 0.0f;
   float gaussReset = 0.0f;
+  uint32_t sortBits = 0;    // Settings::sortBits (0: all)
+  uint32_t learnEvery = 0;  // Settings::learnEvery of a length-cache strategy; 0 without a cache
   bool operator==(const MethodKey&) const = default;
 };
 

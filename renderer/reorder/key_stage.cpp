@@ -116,7 +116,8 @@ void KeyStage::recordLearn(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint
   KeyStrategy s = settings_.strategy;
   if (!cache_ || !usesLengthCache(s) || bounce == 0 || count == 0) return;
   if (count > maxPaths_) throw std::invalid_argument("KeyStage::recordLearn: more paths than maxPaths");
-  gpu::KeyLearnPush push{frameBlock, paramsBuffer_.address(), stateSet, bounce, count, 0};
+  const uint32_t every = std::max(1u, settings_.learnEvery);
+  gpu::KeyLearnPush push{frameBlock, paramsBuffer_.address(), stateSet, bounce, count, every};
   const ComputePipeline& learn = pipeline("key_learn", s, sizeof(gpu::KeyLearnPush));
   const ComputePipeline& merge = pipeline("key_merge", s, sizeof(gpu::KeyLearnPush));
   recordStage(cmd, timer, "learn", [&] {
@@ -124,7 +125,8 @@ void KeyStage::recordLearn(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint
     computeBarrier(cmd);
     learn.dispatchThreads(cmd, push, count);
     computeBarrier(cmd);
-    merge.dispatchThreads(cmd, push, count);  // one thread per touched entry, at most one per path
+    // One thread per touched entry: at most one per sampled path.
+    merge.dispatchThreads(cmd, push, (count + every - 1) / every);
   });
 }
 

@@ -68,6 +68,8 @@ TEST(SpeedAccuracyBook, ParameterChangeStartsANewUnsmoothedPoint) {
       {"Gaussian outlier", KeyStrategy::Gaussian, [](Settings& s) { s.gaussOutlier = 2.0f; }},
       {"sort", KeyStrategy::Gaussian, [](Settings& s) { s.sort = SortAlgorithm::Bitonic; }},
       {"policy", KeyStrategy::Fixed, [](Settings& s) { s.sortPolicy = SortPolicy::Auto; }},
+      {"sorted key bits", KeyStrategy::Fixed, [](Settings& s) { s.sortBits = 8; }},
+      {"learning stride", KeyStrategy::Average, [](Settings& s) { s.learnEvery = 4; }},
       {"strategy", KeyStrategy::Fixed, [](Settings& s) { s.strategy = KeyStrategy::Average; }},
   };
   for (const Case& c : cases) {
@@ -104,6 +106,7 @@ TEST(SpeedAccuracyBook, UnusedParametersDoNotSplitAPoint) {
   mega.kernel = Kernel::Megakernel;
   const Case cases[] = {
       {"EMA alpha under fixed", sorted(KeyStrategy::Fixed), [](Settings& s) { s.emaAlpha = 0.9f; }},
+      {"learning stride under fixed", sorted(KeyStrategy::Fixed), [](Settings& s) { s.learnEvery = 8; }},
       {"Gaussian reset under EMA", sorted(KeyStrategy::Ema), [](Settings& s) { s.gaussReset = 2.0f; }},
       {"factor under origin", sorted(KeyStrategy::Origin), [](Settings& s) { s.fixedFactor = 1.0f; }},
       {"grid under dead-last", sorted(KeyStrategy::DeadLast), [](Settings& s) { s.grid.autoCells = 8; }},

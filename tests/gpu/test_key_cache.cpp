@@ -40,7 +40,9 @@ struct Reference {
   double count = 0, mean = 0, m2 = 0;
 };
 
-void learnAndCompare(const VulkanContext& ctx, KeyStrategy strategy) {
+// learnEvery > 1: only slots i with (i + frameIndex + bounce) % learnEvery == 0 learn (Settings::learnEvery),
+// the frame index moving each round so the sampled slots change; the reference takes the same slots.
+void learnAndCompare(const VulkanContext& ctx, KeyStrategy strategy, uint32_t learnEvery = 1) {
   Scene scene = boxScene();
   const uint32_t per = 300;
   Groups g = threeGroups(per);
@@ -51,15 +53,18 @@ void learnAndCompare(const VulkanContext& ctx, KeyStrategy strategy) {
   s.gaussOutlier = 100.0f;  // no outliers, no resets: the plain statistics
   s.gaussReset = INFINITY;
   s.emaAlpha = 0.01f;
+  s.learnEvery = learnEvery;
   KeyStage stage(ctx, scene, {5, 2, 3}, s, n);
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   Reference ref[3];
   for (int round = 0; round < 4; ++round) {
     double bsum[3] = {}, bsq[3] = {}, bn[3] = {};
+    const uint32_t frameIndex = 3 + round, bounce = 1;
     for (uint32_t i = 0; i < n; ++i) {
       float t = 1.0f + 2.0f * g.group[i] + (0.5f + round * 0.1f) * u(rng);
       g.paths.hitT[i] = t;
+      if ((i + frameIndex + bounce) % learnEvery != 0) continue;
       bsum[g.group[i]] += t, bsq[g.group[i]] += double(t) * t, bn[g.group[i]] += 1;
     }
     for (int k = 0; k < 3; ++k) {
@@ -77,8 +82,8 @@ void learnAndCompare(const VulkanContext& ctx, KeyStrategy strategy) {
         r.count = nn;
       }
     }
-    frame.upload(g.paths);
-    runLearn(ctx, stage, frame, n);
+    frame.upload(g.paths, frameIndex);
+    runLearn(ctx, stage, frame, n, bounce);
   }
   LengthCache::Contents c = stage.downloadCache();
   KeyEnv env;
@@ -105,6 +110,8 @@ void learnAndCompare(const VulkanContext& ctx, KeyStrategy strategy) {
 TEST_F(LengthCacheGpu, AverageMatchesReference) { learnAndCompare(ctx(), KeyStrategy::Average); }
 TEST_F(LengthCacheGpu, EmaMatchesReference) { learnAndCompare(ctx(), KeyStrategy::Ema); }
 TEST_F(LengthCacheGpu, GaussianMatchesReference) { learnAndCompare(ctx(), KeyStrategy::Gaussian); }
+TEST_F(LengthCacheGpu, SampledAverageMatchesReference) { learnAndCompare(ctx(), KeyStrategy::Average, 3); }
+TEST_F(LengthCacheGpu, SampledGaussianMatchesReference) { learnAndCompare(ctx(), KeyStrategy::Gaussian, 7); }
 
 TEST_F(LengthCacheGpu, LearningIsDeterministicAndSkipsMissesAndDeadPaths) {
   Scene scene = boxScene();
