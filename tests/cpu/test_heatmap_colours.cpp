@@ -74,7 +74,9 @@ TEST(HeatmapColours, KeyCellDecodesWhatEachKeyFunctionEncoded) {
             EXPECT_EQ(topBits(got[a], p.grid.bits[a], lost), topBits(end[a], p.grid.bits[a], lost)) << what << " axis " << a;
           }
         } else if (k == KeyStrategy::OriginDirection) {
-          if (p.grid.gridBits + 2 * p.grid.maxAxisBits <= RL_KEY_MAX_SPATIAL_BITS) EXPECT_EQ(got, cellOf(p.grid, o)) << what;
+          if (p.grid.gridBits + 2 * p.grid.maxAxisBits <= RL_KEY_MAX_SPATIAL_BITS) {
+            EXPECT_EQ(got, cellOf(p.grid, o)) << what;
+          }
         } else {
           const glm::vec3 point = k == KeyStrategy::Origin ? o : endPoint(path, len);
           EXPECT_EQ(got, cellOf(p.grid, point)) << what;

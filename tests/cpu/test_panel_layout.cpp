@@ -17,7 +17,9 @@ TEST(PanelLayout, DefaultsAreInsideAndApartAtCommonSizes) {
       EXPECT_TRUE(b.inside(display(w, h))) << panelTitle(a) << " at " << w << "x" << h;
       EXPECT_GE(b.y1 - b.y0, 100.0f) << panelTitle(a) << " at " << w << "x" << h;  // more than a title bar
       for (Panel other : kAllPanels)
-        if (other != a) EXPECT_FALSE(b.overlaps(defaultPanelBox(other, w, h))) << panelTitle(a) << "/" << panelTitle(other);
+        if (other != a) {
+          EXPECT_FALSE(b.overlaps(defaultPanelBox(other, w, h))) << panelTitle(a) << "/" << panelTitle(other);
+        }
     }
   }
 }
@@ -37,7 +39,9 @@ TEST(PanelLayout, ShrinkKeepsPanelsInsideAndGrowingBringsThemBack) {
   for (Panel p : kAllPanels) at[p] = layout.keepInside(p, at[p], false, 800, 500);
   for (Panel p : kAllPanels)
     for (Panel q : kAllPanels)
-      if (p != q) EXPECT_FALSE(at[p].overlaps(at[q])) << panelTitle(p) << "/" << panelTitle(q);
+      if (p != q) {
+        EXPECT_FALSE(at[p].overlaps(at[q])) << panelTitle(p) << "/" << panelTitle(q);
+      }
   for (Panel p : kAllPanels) at[p] = layout.keepInside(p, at[p], false, 1280, 720);
   for (Panel p : kAllPanels) {
     Box want = defaultPanelBox(p, 1280, 720);
@@ -92,7 +96,9 @@ void expectApartAndInside(const std::vector<LabelPlacement>& placed, const std::
   for (size_t i = 0; i < placed.size(); ++i) {
     EXPECT_TRUE(placed[i].box.inside(area)) << i;
     for (size_t j = 0; j < placed.size(); ++j) {
-      if (j != i) EXPECT_FALSE(placed[i].box.overlaps(placed[j].box)) << i << " and " << j;
+      if (j != i) {
+        EXPECT_FALSE(placed[i].box.overlaps(placed[j].box)) << i << " and " << j;
+      }
       Box marker{requests[j].x - radius, requests[j].y - radius, requests[j].x + radius, requests[j].y + radius};
       EXPECT_FALSE(placed[i].box.overlaps(marker)) << "label " << i << " on marker " << j;
     }
