@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstring>
 #include <iterator>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,12 @@
 namespace raylab::test {
 
 class SortInvariant : public GpuTest, public ::testing::WithParamInterface<SortAlgorithm> {};
+
+// Bit for bit: no tolerance. `what` names the variant in the failure message.
+void expectSameImage(const std::vector<glm::vec3>& got, const std::vector<glm::vec3>& want, const std::string& what) {
+  ASSERT_EQ(got.size(), want.size()) << what;
+  EXPECT_EQ(0, std::memcmp(got.data(), want.data(), got.size() * sizeof(glm::vec3))) << what << " changed the image";
+}
 
 TEST_P(SortInvariant, EveryStrategyRendersTheUnsortedImage) {
   Scene scene = makeTemple();
@@ -32,10 +39,7 @@ TEST_P(SortInvariant, EveryStrategyRendersTheUnsortedImage) {
     s.strategy = strategy;
     s.sort = GetParam();
     ASSERT_TRUE(s.sorts());
-    std::vector<glm::vec3> sorted = renderRadiance(ctx(), scene, s, view);
-    ASSERT_EQ(sorted.size(), unsorted.size());
-    EXPECT_EQ(0, std::memcmp(sorted.data(), unsorted.data(), sorted.size() * sizeof(glm::vec3)))
-        << toString(strategy) << " with " << toString(GetParam()) << " changed the image";
+    expectSameImage(renderRadiance(ctx(), scene, s, view), unsorted, toString(strategy) + " with " + toString(GetParam()));
   }
 }
 
@@ -57,9 +61,7 @@ TEST_P(SortInvariant, ClampedGridOnOpenView) {
     s.clampDistance = 20.0f;
     s.grid.automatic = false;
     s.grid.cells = {7, 3, 100};
-    std::vector<glm::vec3> sorted = renderRadiance(ctx(), scene, s, view);
-    EXPECT_EQ(0, std::memcmp(sorted.data(), unsorted.data(), sorted.size() * sizeof(glm::vec3)))
-        << toString(strategy) << " changed the image";
+    expectSameImage(renderRadiance(ctx(), scene, s, view), unsorted, toString(strategy));
   }
 }
 
@@ -81,9 +83,7 @@ TEST_P(SortInvariant, EverySortPolicyRendersTheUnsortedImage) {
       s.strategy = strategy;
       s.sort = GetParam();
       s.sortPolicy = policy;
-      std::vector<glm::vec3> sorted = renderRadiance(ctx(), scene, s, view);
-      EXPECT_EQ(0, std::memcmp(sorted.data(), unsorted.data(), sorted.size() * sizeof(glm::vec3)))
-          << toString(strategy) << " with policy " << toString(policy) << " changed the image";
+      expectSameImage(renderRadiance(ctx(), scene, s, view), unsorted, toString(strategy) + " with policy " + toString(policy));
     }
   }
 }
@@ -106,9 +106,8 @@ TEST_P(SortInvariant, SortingFewerKeyBitsRendersTheUnsortedImage) {
       s.sort = GetParam();
       s.sortBits = sortBits;
       s.learnEvery = sortBits;  // sampled learning changes what the cache holds, so the keys, never the image
-      std::vector<glm::vec3> sorted = renderRadiance(ctx(), scene, s, view);
-      EXPECT_EQ(0, std::memcmp(sorted.data(), unsorted.data(), sorted.size() * sizeof(glm::vec3)))
-          << toString(strategy) << " sorting " << sortBits << " key bits changed the image";
+      expectSameImage(renderRadiance(ctx(), scene, s, view), unsorted,
+                      toString(strategy) + " sorting " + std::to_string(sortBits) + " key bits");
     }
   }
 }
@@ -179,9 +178,7 @@ TEST_P(SortInvariant, SlicedFramesRenderTheWholeFrameImage) {
     std::vector<glm::vec3> radiance = renderSlicedRadiance(ctx(), scene, s, view, &sliced);
     std::vector<glm::vec3> expected = whole.readRadiance();
     const std::string what = toString(s.kernel) + " " + toString(s.strategy) + " " + toString(s.sortPolicy);
-    ASSERT_EQ(radiance.size(), expected.size());
-    EXPECT_EQ(0, std::memcmp(radiance.data(), expected.data(), radiance.size() * sizeof(glm::vec3)))
-        << what << ": the sliced frames changed the image";
+    expectSameImage(radiance, expected, what + ", in slices,");
     ASSERT_EQ(sliced.size(), s.frames);
     EXPECT_EQ(sliced.back().raysTraced, wholeStats.raysTraced) << what;
     EXPECT_EQ(sliced.back().samplesPerPixel, wholeStats.samplesPerPixel) << what;
