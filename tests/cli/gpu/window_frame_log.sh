@@ -7,19 +7,7 @@
 set -eu
 raylab="$1"
 repo="$2"
-if ! command -v xvfb-run >/dev/null; then
-  echo "skip: xvfb-run is not installed (apt-get install xvfb)"
-  exit 0
-fi
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir"
-export RAYLAB_VALIDATE=1
-printf 'quit\n' >quit.txt
-if env -u DISPLAY -u WAYLAND_DISPLAY "$raylab" --script quit.txt 2>&1 | grep -q "has no window"; then
-  echo "skip: this raylab was built without the window (RAYLAB_HEADLESS_ONLY)"
-  exit 0
-fi
+source "$(dirname "$0")/../window_test_setup.sh"  # skips without a window; temporary folder; validation on
 cat >script.txt <<'SCRIPT'
 set bounces 3
 wait 2

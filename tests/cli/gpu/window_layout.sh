@@ -6,15 +6,7 @@
 # after reset-layout. A second run starts from an imgui.ini made on a larger screen (panels off-window).
 set -eu
 raylab="$1"
-command -v xvfb-run >/dev/null || { echo "skip: xvfb-run is not installed (apt-get install xvfb)"; exit 0; }
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir"
-printf 'quit\n' >quit.txt
-if env -u DISPLAY -u WAYLAND_DISPLAY "$raylab" --script quit.txt 2>&1 | grep -q "has no window"; then
-  echo "skip: this raylab was built without the window"; exit 0
-fi
-export RAYLAB_VALIDATE=1
+source "$(dirname "$0")/../window_test_setup.sh"  # skips without a window; temporary folder; validation on
 # The smallest render scale: this test is about the panels, not the image.
 xvfb() { timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$raylab" --scale 0.05 --screenshot-dir shots "$@"; }
 

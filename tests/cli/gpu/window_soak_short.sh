@@ -5,15 +5,8 @@
 set -eu
 raylab="$1"
 repo="$2"
-command -v xvfb-run >/dev/null || { echo "skip: xvfb-run is not installed (apt-get install xvfb)"; exit 0; }
-printf 'quit\n' >/tmp/raylab-soak-quit.$$
-if env -u DISPLAY -u WAYLAND_DISPLAY "$raylab" --script /tmp/raylab-soak-quit.$$ 2>&1 | grep -q "has no window"; then
-  rm -f /tmp/raylab-soak-quit.$$; echo "skip: this raylab was built without the window"; exit 0
-fi
-rm -f /tmp/raylab-soak-quit.$$
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-RAYLAB_VALIDATE=1 timeout 800 bash "$repo/tests/soak/window_soak.sh" "$raylab" 300 "$dir" | tee "$dir/summary.txt"
+source "$(dirname "$0")/../window_test_setup.sh"  # skips without a window; temporary folder; validation on
+timeout 800 bash "$repo/tests/soak/window_soak.sh" "$raylab" 300 "$dir" | tee "$dir/summary.txt"
 python3 - "$dir" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1] + '/soak.json'))

@@ -6,23 +6,11 @@
 set -eu
 raylab="$1"
 repo="$2"
-if ! command -v xvfb-run >/dev/null; then
-  echo "skip: xvfb-run is not installed (apt-get install xvfb)"
-  exit 0
-fi
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir"
-export RAYLAB_VALIDATE=1
+source "$(dirname "$0")/../window_test_setup.sh"  # skips without a window; temporary folder; validation on
 # Generous: the scripted run walks every setting combination (about 500 frames) and shares two cores with
 # the other tests.
 xvfb() { timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$raylab" "$@"; }
 
-printf 'quit\n' >quit.txt
-if env -u DISPLAY -u WAYLAND_DISPLAY "$raylab" --script quit.txt 2>&1 | grep -q "has no window"; then
-  echo "skip: this raylab was built without the window (RAYLAB_HEADLESS_ONLY)"
-  exit 0
-fi
 # The names come from the program itself: the render help lists the strategies, and a script with a wrong
 # heatmap is rejected with the list of views (before any window opens).
 strategies=$("$raylab" render --help | sed -n 's/.*--strategy \([a-z|-]*\).*/\1/p' | tr '|' ' ')
