@@ -112,7 +112,15 @@ void PathTracer::setCamera(const Viewpoint& camera) {
   apply(SettingsChange::cameraMove(settings_));
 }
 
-bool PathTracer::needsWholeFrames() const { return heatmapShown(settings_) != HeatmapView::None; }
+// A heatmap gathers each slice's paths into their own pixels (the value range and counts add up over the
+// slices), so most views render in slices like the image. Two depend on the whole frame's order: sort-key
+// ranks (a key's place among all of the bounce's sorted keys) and warp efficiency (the 32 slots a path
+// shares a warp with).
+bool PathTracer::needsWholeFrames() const {
+  const HeatmapView view = heatmapShown(settings_);
+  return (view == HeatmapView::SortKey && settings_.heatmapKeyColour == HeatmapKeyColour::Rank) ||
+         view == HeatmapView::WarpEfficiency;
+}
 
 void PathTracer::setDetailedStats(bool on) {
   if (on != detailedStats_) sliceNext_ = sliceEnd_ = 0;

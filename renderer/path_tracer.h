@@ -59,8 +59,9 @@ class PathTracer {
   // Paths of a whole frame, and the first path id of the next slice (0: the next slice starts a frame).
   uint32_t framePaths() const { return buffers_->pathCount; }
   uint32_t nextSlicePath() const { return sliceNext_; }
-  // Heatmaps read every path of a frame at once: such frames render in one slice (recordSlice records the
-  // whole frame whatever it is asked for). Detailed statistics read each slice's part back.
+  // Heatmap views that depend on the whole frame's path order (sort-key ranks, warp efficiency) render in
+  // one slice (recordSlice records the whole frame whatever it is asked for); other views and detailed
+  // statistics gather each slice's part.
   bool needsWholeFrames() const;
 
   // Detailed statistics (per-path steps, prediction accuracy) cost readbacks; off for timed runs.

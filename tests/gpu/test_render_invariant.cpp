@@ -188,6 +188,53 @@ TEST_P(SortInvariant, SlicedFramesRenderTheWholeFrameImage) {
   }
 }
 
+// Heatmaps in slices: a view that does not depend on the whole frame's path order gathers each slice's paths
+// into their own pixels (the value range and pixel counts add up over the slices), so the sliced frame's
+// heatmap image is the whole frame's bit for bit, for the wavefront and the megakernel; the two that do
+// depend on it (sort-key ranks, warp efficiency) render the whole frame whatever slice is asked for. Fixed
+// keys: a key that learns would learn between slices.
+TEST_P(SortInvariant, SlicedHeatmapsAreTheWholeFrameHeatmap) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("hall");
+  Settings base;
+  base.width = 37;
+  base.height = 19;
+  base.bounces = 3;
+  base.strategy = KeyStrategy::Fixed;
+  base.sort = GetParam();
+  base.heatmapBounce = 1;
+  const std::pair<HeatmapView, Kernel> sliced[] = {{HeatmapView::TraversalSteps, Kernel::Wavefront},
+                                                   {HeatmapView::SortKey, Kernel::Wavefront},
+                                                   {HeatmapView::CellHit, Kernel::Wavefront},
+                                                   {HeatmapView::TraversalSteps, Kernel::Megakernel}};
+  for (auto [heatmap, kernel] : sliced) {
+    Settings s = base;
+    s.heatmap = heatmap;
+    s.kernel = kernel;
+    const std::string what = toString(heatmap) + " " + toString(kernel);
+    PathTracer whole(ctx(), scene, s, view);
+    whole.renderFrame();
+    PathTracer parts(ctx(), scene, s, view);
+    ASSERT_FALSE(parts.needsWholeFrames()) << what;
+    uint32_t slices = 0;
+    for (const FrameStats* done = nullptr; !done; ++slices) {
+      ctx().submitAndWait([&](VkCommandBuffer cmd) { parts.recordSlice(cmd, 100); });
+      done = parts.finishSlice(1.0);
+    }
+    EXPECT_GT(slices, 2u) << what;
+    EXPECT_EQ(parts.readImage(), whole.readImage()) << what << ": the sliced heatmap differs";
+  }
+  for (HeatmapView heatmap : {HeatmapView::SortKey, HeatmapView::WarpEfficiency}) {
+    Settings s = base;
+    s.heatmap = heatmap;
+    s.heatmapKeyColour = HeatmapKeyColour::Rank;
+    PathTracer tracer(ctx(), scene, s, view);
+    EXPECT_TRUE(tracer.needsWholeFrames()) << toString(heatmap);
+    ctx().submitAndWait([&](VkCommandBuffer cmd) { tracer.recordSlice(cmd, 100); });
+    EXPECT_NE(tracer.finishSlice(1.0), nullptr) << toString(heatmap) << ": one slice is the whole frame";
+  }
+}
+
 // Detailed statistics of a sliced frame are read back slice by slice into the whole frame's readbacks:
 // unsorted, slot order is path order, so the per-bounce warp efficiency and traversal steps equal the whole
 // frame's exactly (wavefront and megakernel); sorted with a key that learns nothing (fixed), the cell-hit
