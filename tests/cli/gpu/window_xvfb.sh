@@ -82,10 +82,18 @@ assert json.load(open('shots/remembered.json'))['settings']['strategy'] == 'none
 # a factor of 260). What time stays outside the stages is shown as its own bar; it must stay under 5%.
 # On a loaded CPU the gaps between stages (the driver's thread waiting for a core) can pass 5% for a while:
 # up to three tries, each with the window and then headless, and one must meet it. The original fault read 4%.
+# The whole frame in one slice (--render-budget-ms 1000, as on a fast device): a window that renders in slices
+# keeps drawing its panels between them, and on two loaded cores that thread's time shows up as gaps inside
+# the slices' GPU spans (stage sums over slices are tested in tests/gpu/test_render_invariant.cpp and
+# window_frame_log.sh). Under AddressSanitizer the host side runs several times slower while the driver's
+# threads do not, so there the figures are printed, not judged.
 printf 'set bounces 4\nwait 3\nscreenshot timing\nquit\n' >timing.txt
+sanitized=0
+ldd "$raylab" | grep -q libasan && sanitized=1
 timing_ok=0
 for attempt in 1 2 3; do
-  xvfb --size 320x180 --scale 1 --screenshot-dir shots --script timing.txt >timing.log 2>&1 || { echo "FAIL: timing run"; tail timing.log; exit 1; }
+  xvfb --size 320x180 --scale 1 --render-budget-ms 1000 --screenshot-dir shots --script timing.txt >timing.log 2>&1 ||
+    { echo "FAIL: timing run"; tail timing.log; exit 1; }
   "$raylab" render --settings shots/timing.json --stats timing-headless.json --out timing-headless.png >>timing.log 2>&1 ||
     { echo "FAIL: headless timing run"; tail timing.log; exit 1; }
   if python3 - <<'PY'
@@ -103,6 +111,7 @@ ratio = w['rays_per_second'] / h['rays_per_second']
 sys.exit(0 if ok and 0.25 < ratio < 4 else 1)
 PY
   then timing_ok=1; break; fi
+  [ $sanitized -eq 0 ] || { echo "sanitizer build: timing figures above not judged"; timing_ok=1; break; }
   echo "timing attempt $attempt missed (stages under 95% of the frame, or rays/s apart)"
 done
 [ $timing_ok -eq 1 ] || { echo "FAIL: the window's stages do not account for its frame time"; exit 1; }
