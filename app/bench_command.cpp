@@ -1,5 +1,6 @@
 #include "app/bench_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>

@@ -1,6 +1,7 @@
 // The heatmap's colour mappings on the host (renderer/heatmap_colours.h, twins of heatmap_colours.glsl):
 // a key decodes to the cell the key function encoded, cell colours follow position, the log scale spreads
 // decades evenly, and the legend burned into saved PNGs has its bar, labels and swatches.
+#include <algorithm>
 #include <random>
 
 #include <gtest/gtest.h>

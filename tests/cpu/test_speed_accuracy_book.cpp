@@ -1,5 +1,6 @@
 // The speed-accuracy book (ui/speed_accuracy_book.h) and the baseline run (ui/baseline_run.h): one point per
 // method and parameter set, never mixed across parameter changes; baselines; the bench's accuracy figures.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>

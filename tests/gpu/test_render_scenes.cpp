@@ -4,6 +4,7 @@
 // opening, may legitimately be near black at a few samples, so they are checked for finiteness only.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "tests/gpu_test.h"
