@@ -10,6 +10,15 @@
 
 namespace raylab::test {
 
+// Default settings at a small size (tests pick sizes that are no multiple of a group or warp size).
+inline Settings smallFrame(uint32_t width, uint32_t height, uint32_t bounces) {
+  Settings s;
+  s.width = width;
+  s.height = height;
+  s.bounces = bounces;
+  return s;
+}
+
 // Renders settings.frames frames and returns the accumulated mean radiance per pixel.
 inline std::vector<glm::vec3> renderRadiance(const VulkanContext& ctx, const Scene& scene, const Settings& settings,
                                              const Viewpoint& view) {

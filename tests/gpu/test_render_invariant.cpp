@@ -25,10 +25,7 @@ void expectSameImage(const std::vector<glm::vec3>& got, const std::vector<glm::v
 TEST_P(SortInvariant, EveryStrategyRendersTheUnsortedImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
-  Settings base;
-  base.width = 37;  // not a multiple of any group or warp size
-  base.height = 19;
-  base.bounces = 4;
+  Settings base = smallFrame(37, 19, 4);
   base.sppPerFrame = 2;
   base.frames = 2;  // the second frame uses what adaptive caches learned in the first
   std::vector<glm::vec3> unsorted = renderRadiance(ctx(), scene, base, view);
@@ -48,10 +45,7 @@ TEST_P(SortInvariant, EveryStrategyRendersTheUnsortedImage) {
 TEST_P(SortInvariant, ClampedGridOnOpenView) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("openings");
-  Settings base;
-  base.width = 33;
-  base.height = 17;
-  base.bounces = 5;
+  Settings base = smallFrame(33, 17, 5);
   std::vector<glm::vec3> unsorted = renderRadiance(ctx(), scene, base, view);
   for (KeyStrategy strategy : {KeyStrategy::Gaussian, KeyStrategy::TwoPoint, KeyStrategy::DeadLast}) {
     Settings s = base;
@@ -71,10 +65,7 @@ TEST_P(SortInvariant, ClampedGridOnOpenView) {
 TEST_P(SortInvariant, EverySortPolicyRendersTheUnsortedImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
-  Settings base;
-  base.width = 37;
-  base.height = 19;
-  base.bounces = 5;
+  Settings base = smallFrame(37, 19, 5);
   base.frames = 5;
   std::vector<glm::vec3> unsorted = renderRadiance(ctx(), scene, base, view);
   for (SortPolicy policy : {SortPolicy::Never, SortPolicy::Auto, SortPolicy::Always}) {
@@ -94,10 +85,7 @@ TEST_P(SortInvariant, EverySortPolicyRendersTheUnsortedImage) {
 TEST_P(SortInvariant, SortingFewerKeyBitsRendersTheUnsortedImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("alley");
-  Settings base;
-  base.width = 35;
-  base.height = 18;
-  base.bounces = 4;
+  Settings base = smallFrame(35, 18, 4);
   std::vector<glm::vec3> unsorted = renderRadiance(ctx(), scene, base, view);
   for (uint32_t sortBits : {1u, 8u, 9u}) {
     for (KeyStrategy strategy : {KeyStrategy::Fixed, KeyStrategy::TwoPoint, KeyStrategy::Ema}) {
@@ -152,10 +140,7 @@ std::vector<std::pair<std::string, int>> stageNames(const FrameStats& s) {
 TEST_P(SortInvariant, SlicedFramesRenderTheWholeFrameImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
-  Settings base;
-  base.width = 37;
-  base.height = 19;
-  base.bounces = 4;
+  Settings base = smallFrame(37, 19, 4);
   base.sppPerFrame = 2;
   base.frames = 2;
   std::vector<Settings> cases;
@@ -196,10 +181,7 @@ TEST_P(SortInvariant, SlicedFramesRenderTheWholeFrameImage) {
 TEST_P(SortInvariant, SlicedHeatmapsAreTheWholeFrameHeatmap) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
-  Settings base;
-  base.width = 37;
-  base.height = 19;
-  base.bounces = 3;
+  Settings base = smallFrame(37, 19, 3);
   base.strategy = KeyStrategy::Fixed;
   base.sort = GetParam();
   base.heatmapBounce = 1;
@@ -242,10 +224,7 @@ TEST_P(SortInvariant, SlicedHeatmapsAreTheWholeFrameHeatmap) {
 TEST_P(SortInvariant, SlicedFramesKeepDetailedStatistics) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
-  Settings base;
-  base.width = 37;
-  base.height = 19;
-  base.bounces = 3;
+  Settings base = smallFrame(37, 19, 3);
   base.frames = 1;
   Settings sorted = base;
   sorted.strategy = KeyStrategy::Fixed;

@@ -7,6 +7,7 @@
 #include "renderer/path_tracer.h"
 #include "scenes/procedural.h"
 #include "tests/gpu_test.h"
+#include "tests/render_helpers.h"
 
 namespace raylab::test {
 
@@ -14,10 +15,7 @@ class SortPolicyRender : public GpuTest {};
 
 TEST_F(SortPolicyRender, StatsReportThePlanEachFrameFollowed) {
   Scene scene = makeTemple();
-  Settings s;
-  s.width = 40;
-  s.height = 20;
-  s.bounces = 4;
+  Settings s = smallFrame(40, 20, 4);
   s.strategy = KeyStrategy::TwoPoint;
   s.sortPolicy = SortPolicy::Auto;
   PathTracer tracer(ctx(), scene, s, *scene.findViewpoint("hall"));
@@ -54,10 +52,7 @@ TEST_F(SortPolicyRender, StatsReportThePlanEachFrameFollowed) {
 
 TEST_F(SortPolicyRender, NeverSortsNothingAndAlwaysEveryBounceButTheLast) {
   Scene scene = makeTemple();
-  Settings s;
-  s.width = 24;
-  s.height = 12;
-  s.bounces = 3;
+  Settings s = smallFrame(24, 12, 3);
   s.strategy = KeyStrategy::Fixed;
   s.sortPolicy = SortPolicy::Never;
   PathTracer tracer(ctx(), scene, s, *scene.findViewpoint("hall"));
