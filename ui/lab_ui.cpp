@@ -20,17 +20,19 @@ UiRequests LabUi::draw(Settings& settings, ViewOptions& view, const CameraModel&
   view.resetLayout = false;
   if (reset) layout_.forget();
   layout_.startFrame();
+  bool corrected = false;
   if (view.showPanels) {
     auto panel = [&](Panel p, auto&& drawPanel) {
       placeNextPanel(p, reset);
       drawPanel();
-      keepPanelInside(p, layout_);
+      corrected = keepPanelInside(p, layout_) || corrected;
     };
     panel(Panel::Method, [&] { drawMethodPanel(settings, view); });
     panel(Panel::Timing, [&] { drawTimingPanel(timing_, last_, settings, view); });
     panel(Panel::SpeedAccuracy, [&] { drawSpeedAccuracyPanel(book_, baselines_, speedView_, settings); });
     panel(Panel::SceneCamera, [&] { requests = drawCameraScenePanel(camera); });
   }
+  requests.redrawPanels = corrected;
   if (requests.resetLayout) view.resetLayout = true;
   drawHeatmapLegend(settings, last_);
   drawHelpOverlay(&view.showHelp);

@@ -14,16 +14,18 @@ void placeNextPanel(Panel panel, bool reset) {
   ImGui::SetNextWindowCollapsed(false, when);
 }
 
-void keepPanelInside(Panel panel, PanelLayout& layout) {
+bool keepPanelInside(Panel panel, PanelLayout& layout) {
   ImGuiWindow* window = ImGui::FindWindowByName(panelTitle(panel));
-  if (!window) return;
+  if (!window) return false;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const Box actual{window->Pos.x, window->Pos.y, window->Pos.x + window->Size.x, window->Pos.y + window->Size.y};
   const Box placed = layout.keepInside(panel, actual, window->Collapsed, display.x, display.y);
   if (placed.x0 != actual.x0 || placed.y0 != actual.y0) ImGui::SetWindowPos(panelTitle(panel), ImVec2(placed.x0, placed.y0));
   const bool resized = placed.x1 - placed.x0 != actual.x1 - actual.x0 || placed.y1 - placed.y0 != actual.y1 - actual.y0;
+  const bool moved = placed.x0 != actual.x0 || placed.y0 != actual.y0;
   if (resized && !window->Collapsed)
     ImGui::SetWindowSize(panelTitle(panel), ImVec2(placed.x1 - placed.x0, placed.y1 - placed.y0));
+  return moved || (resized && !window->Collapsed);
 }
 
 }  // namespace raylab

@@ -8,7 +8,8 @@ namespace raylab {
 
 // Before the panel's Begin: its default place and size on first use, or now (expanded) on a reset.
 void placeNextPanel(Panel panel, bool reset);
-// After the panel's End: moves or resizes its window where PanelLayout says.
-void keepPanelInside(Panel panel, PanelLayout& layout);
+// After the panel's End: moves or resizes its window where PanelLayout says; true when it did, so the
+// panels must be drawn again to show the correction (this frame's draw data still has the old place).
+bool keepPanelInside(Panel panel, PanelLayout& layout);
 
 }  // namespace raylab

@@ -49,6 +49,7 @@ struct UiRequests {
   bool screenshotRender = false;
   bool screenshotWindow = false;
   bool resetLayout = false;  // the panels go back to their default places (LabUi does it, next frame)
+  bool redrawPanels = false; // a panel was moved inside the window after it was drawn: draw them again
 };
 
 }  // namespace raylab

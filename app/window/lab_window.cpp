@@ -195,10 +195,12 @@ bool LabWindow::frame() {
   // which the UI frames of a live render cannot afford each time.
   if (input_->takeActivity()) lastInput_ = now;
   const bool refresh = imagePending_ && std::chrono::duration<double>(now - lastPresent_).count() >= kImageRefreshSeconds;
-  const bool drawPanels = panelsDirty_ || refresh || !(settings_ == before) ||
+  // A pending window screenshot draws the panels every UI frame, so the shot shows them as they are now.
+  const bool drawPanels = panelsDirty_ || refresh || !(settings_ == before) || !pendingWindowShot_.empty() ||
                           std::chrono::duration<double>(now - lastInput_).count() < kPanelSettleSeconds;
   panelsDirty_ = false;
   const auto panelsStart = std::chrono::steady_clock::now();
+  bool panelsDirtyNext = false;
   if (drawPanels) {
     layer_->newFrame();
     handleHotkeys();
@@ -206,6 +208,7 @@ bool LabWindow::frame() {
     UiRequests requests = ui_.draw(settings_, view_, cameraModel_);
     ImGui::Render();
     handleRequests(requests);
+    panelsDirtyNext = requests.redrawPanels;  // the correction shows in the next build
   }
   updateCamera(seconds);
   const bool restarted = syncTracer();
@@ -219,7 +222,7 @@ bool LabWindow::frame() {
   const bool capture = turn.frameDone && !pendingWindowShot_.empty();
   // A restart or preview changes what the panels show: they are rebuilt next UI frame. A completed frame's
   // image and statistics are shown by the next refresh.
-  panelsDirty_ = restarted || turn.preview;
+  panelsDirty_ = panelsDirtyNext || restarted || turn.preview;
   imagePending_ = imagePending_ || turn.frameDone;
   PresentedFrame shown;
   if (drawPanels || turn.preview || capture) {
