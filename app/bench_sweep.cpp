@@ -47,6 +47,7 @@ struct Axes {
   std::vector<std::string> tracers{}, sers{}, serHints{"two-point"};
   std::vector<std::string> policies{"always"};
   std::vector<std::string> sortBits{};    // --sort-bits-list: empty keeps the render flag's (all bits)
+  std::vector<std::string> fusions{};     // --fusions: empty keeps the render flag's (none)
   std::vector<std::string> learnEvery{};  // --learn-every-list: strategies with a length cache only
   std::vector<std::string> bounces{};     // --bounces with a list: one group of cells per count
   std::vector<std::string> scaleTris{};   // --scale-tris: the sizes of every bare temple-detail case
@@ -151,6 +152,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
     else if (flag == "--sorts") axes.sorts = splitList(v);
     else if (flag == "--sort-policies") axes.policies = splitList(v);
     else if (flag == "--sort-bits-list") axes.sortBits = splitList(v);
+    else if (flag == "--fusions") axes.fusions = splitList(v);
     else if (flag == "--learn-every-list") axes.learnEvery = splitList(v);
     else if (flag == "--grids") axes.grids = splitList(v);
     else if (flag == "--clamps") axes.clamps = splitList(v);
@@ -232,6 +234,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
           if (so.strategy == KeyStrategy::Gaussian) expand(axes.resets, "--gauss-reset");
           if (so.strategy == KeyStrategy::Fixed || so.strategy == KeyStrategy::TwoPoint) expand(axes.factors, "--fixed-factor");
           expand(axes.sortBits, "--sort-bits", /*gridOnly=*/false);
+          expand(axes.fusions, "--fusion", /*gridOnly=*/false);
           if (usesLengthCache(so.strategy)) expand(axes.learnEvery, "--learn-every");
           std::vector<Settings> withPolicies;
           for (const Settings& v : variants)
@@ -248,6 +251,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
               label += " factor=" + shortNumber(v.fixedFactor);
             if (v.sortPolicy != SortPolicy::Always) label += " policy=" + toString(v.sortPolicy);
             if (v.sortBits != 0) label += " bits=" + std::to_string(v.sortBits);
+            if (v.fusion != Fusion::None) label += " fusion=" + toString(v.fusion);
             if (v.learnEvery != 1) label += " learn=1/" + std::to_string(v.learnEvery);
             plan.cells.push_back({ci, v, label});
           }
@@ -268,6 +272,7 @@ std::string benchHelp() {
          "  --sorts radix,bitonic     sorts to sweep (default radix)\n"
          "  --sort-policies always,auto  sort policies to sweep (default always)\n"
          "  --sort-bits-list 0,8,16   sorted key bits to sweep (0: all; see --sort-bits)\n"
+         "  --fusions none,both       reorder stage fusions to sweep (see --fusion)\n"
          "  --learn-every-list 1,4,16 learning strides of the length-cache strategies to sweep\n"
          "  --grids auto,32x8x32      grid settings to sweep\n"
          "  --clamps off,50           camera clamp distances to sweep\n"

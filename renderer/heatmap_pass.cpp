@@ -134,10 +134,13 @@ void HeatmapPass::afterKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uin
     gather(cmd, buffers, stateSet, RL_HEAT_GATHER_VALUE, false, timer);
 }
 
+bool HeatmapPass::readsAfterSort(uint32_t bounce) const {
+  return view_ == HeatmapView::SortKey && colouring_.keyColour == HeatmapKeyColour::Rank && bounce + 1 == bounce_;
+}
+
 void HeatmapPass::afterSort(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t sortedSet, uint32_t bounce,
                             StageTimer* timer) {
-  if (view_ == HeatmapView::SortKey && colouring_.keyColour == HeatmapKeyColour::Rank && bounce + 1 == bounce_)
-    gather(cmd, buffers, sortedSet, RL_HEAT_GATHER_RANK, false, timer);
+  if (readsAfterSort(bounce)) gather(cmd, buffers, sortedSet, RL_HEAT_GATHER_RANK, false, timer);
 }
 
 void HeatmapPass::afterMegakernel(VkCommandBuffer cmd, const PathBuffers& buffers, StageTimer* timer) {

@@ -38,6 +38,8 @@ class HeatmapPass {
   void afterKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
                  StageTimer* timer);
   // After those keys were sorted into `sortedSet` (sort keys coloured by rank: slot order is key order).
+  // Whether afterSort of `bounce` reads anything (the sort-key rank view of the next bounce).
+  bool readsAfterSort(uint32_t bounce) const;
   void afterSort(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t sortedSet, uint32_t bounce,
                  StageTimer* timer);
   void afterMegakernel(VkCommandBuffer cmd, const PathBuffers& buffers, StageTimer* timer);

@@ -43,6 +43,8 @@ gpu::GpuFrame PathBuffers::addresses() const {
   f.image = image.address();
   f.counters = counters.address();
   f.live = live.address();
+  f.sortKeys = keys.address();
+  f.sortValues = values.address();
   f.pathCount = pathCount;
   return f;
 }

@@ -177,6 +177,7 @@ void PathTracer::recordFrameBlock(VkCommandBuffer cmd, uint32_t firstPath, uint3
   frame.camera = makeGpuCamera(camera_, settings_.width, settings_.height);
   frame.scene = scene_->block();
   frame.scene.tlas = usesRt() ? rt_->tlasAddress() : 0;
+  frame.keyParams = settings_.sorts() ? pathSorter_->keys().paramsAddress() : 0;
   frame.width = settings_.width;
   frame.height = settings_.height;
   frame.sppPerFrame = settings_.sppPerFrame;
@@ -211,16 +212,25 @@ void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush&
   heatmap_->afterMegakernel(cmd, *buffers_, &timer_);
 }
 
+const ComputePipeline& PathTracer::gatheringTrace(bool counting) {
+  std::optional<ComputePipeline>& p = gatheringTrace_[counting ? 1 : 0];
+  if (!p) p.emplace(ctx_, "trace", sizeof(gpu::PathStagePush), kGroup, std::vector<uint32_t>{counting ? 1u : 0u, 1u});
+  return *p;
+}
+
 // The bounce loop: trace, learn, shade, then keys, sort and reorder before the next bounce where the sort
 // policy's plan says so (learn only for rays that were sorted). Trace and shade are dispatched indirectly
 // over the live paths: all of them until a sort has moved the finished paths behind the live ones
 // (GpuFrame::live); a bounce that does not sort keeps the last sort's order and live count.
+// Settings::fusion folds the keys into shade and the reorder into the next trace: the stage times then
+// report them as part of "shade" and "trace", since they are no longer passes of their own.
 void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, PathRange slice) {
   const uint32_t n = slice.count;
   const bool sorting = settings_.sorts();
   const ComputePipeline& trace = settings_.countSimt ? traceCounting_ : trace_;
   const VkBuffer live = buffers_->live.handle();
   const VkDeviceSize liveDispatch = PathBuffers::kLiveDispatchOffset;
+  bool gatherInTrace = false;  // the last sort's reorder is left to this bounce's trace
   recordStage(cmd, &timer_, "generate", [&] { generate_.dispatchThreads(cmd, push, n); });
   for (uint32_t b = 0; b < settings_.bounces; ++b) {
     timer_.setBounce(static_cast<int>(b));
@@ -228,25 +238,35 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, P
     recordStage(cmd, &timer_, "trace", [&] {
       if (usesRt())
         rt_->traceRays(cmd, push, n);  // every path; the shader skips those past the live count
+      else if (gatherInTrace)
+        gatheringTrace(settings_.countSimt).dispatchThreads(cmd, push, n);  // every slot: it finds the live count
       else
         trace.dispatchIndirect(cmd, push, live, liveDispatch);
     });
+    if (gatherInTrace) push.stateSet = 1u - push.stateSet, gatherInTrace = false;
     if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, b, slice);
     const bool sortedBefore = sorting && b > 0 && framePlan_.sortAfter[b - 1];
     if (sorting)
       pathSorter_->recordAfterTrace(cmd, *buffers_, slice, push.stateSet, b, sortedBefore, detailedStats_, &timer_);
     heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, &timer_);
+    const bool sortAfter = sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b];
+    const bool keysInShade = sortAfter && settings_.fusesKeys();
     recordStage(cmd, &timer_, "shade", [&] {
       if (usesRt())
         rt_->shade(cmd, push, n);
       else
-        shade_.dispatchIndirect(cmd, push, live, liveDispatch);
+        (keysInShade ? pathSorter_->shadeWithKeys() : shade_).dispatchIndirect(cmd, push, live, liveDispatch);
     });
-    if (sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b]) {
-      pathSorter_->recordKeys(cmd, *buffers_, slice, push.stateSet, b, detailedStats_, &timer_);
+    if (sortAfter) {
+      pathSorter_->recordKeys(cmd, *buffers_, slice, push.stateSet, b, keysInShade, detailedStats_, &timer_);
       heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, &timer_);
-      push.stateSet = pathSorter_->recordSortAndGather(cmd, *buffers_, n, push.stateSet, &timer_);
-      heatmap_->afterSort(cmd, *buffers_, push.stateSet, b, &timer_);
+      pathSorter_->recordSort(cmd, *buffers_, n, &timer_);
+      // The sort-rank heatmap reads the reordered set right after the sort: that bounce gathers on its own.
+      gatherInTrace = settings_.fusesGather() && !heatmap_->readsAfterSort(b);
+      if (!gatherInTrace) {
+        push.stateSet = pathSorter_->recordGather(cmd, *buffers_, n, push.stateSet, &timer_);
+        heatmap_->afterSort(cmd, *buffers_, push.stateSet, b, &timer_);
+      }
     }
   }
   timer_.setBounce(-1);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "renderer/reorder/sort_policy.h"
@@ -113,6 +114,9 @@ class PathTracer {
   std::unique_ptr<RtTracer> rt_;  // acceleration structures and rt pipelines, made when the rt tracer is first used
   ComputePipeline generate_, trace_, traceCounting_, shade_, accumulate_, tonemap_, megakernel_,
       megakernelCounting_;
+  // trace.comp's gathering variants (Settings::fusesGather), plain and counting, built on first use.
+  std::optional<ComputePipeline> gatheringTrace_[2];
+  const ComputePipeline& gatheringTrace(bool counting);
   GpuTimer timer_;
   SortPolicyModel sortPolicy_;
   SortPlan framePlan_;  // which bounces the frame being recorded sorts after

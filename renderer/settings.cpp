@@ -28,6 +28,8 @@ const std::pair<HeatmapView, const char*> kHeatmapNames[] = {
 const std::pair<HeatmapKeyColour, const char*> kKeyColourNames[] = {
     {HeatmapKeyColour::Cell, "cell"}, {HeatmapKeyColour::Rank, "rank"}, {HeatmapKeyColour::Hash, "hash"}};
 const std::pair<HeatmapScale, const char*> kScaleNames[] = {{HeatmapScale::Linear, "linear"}, {HeatmapScale::Log, "log"}};
+const std::pair<Fusion, const char*> kFusionNames[] = {
+    {Fusion::None, "none"}, {Fusion::Keys, "keys"}, {Fusion::Gather, "gather"}, {Fusion::Both, "both"}};
 const std::pair<SortPolicy, const char*> kPolicyNames[] = {
     {SortPolicy::Always, "always"}, {SortPolicy::Never, "never"}, {SortPolicy::Auto, "auto"}};
 const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},
@@ -86,6 +88,8 @@ std::optional<Tracer> parseTracer(const std::string& n) { return parse(kTracerNa
 std::optional<Ser> parseSer(const std::string& n) { return parse(kSerNames, n); }
 std::string toString(SortPolicy p) { return nameOf(kPolicyNames, p); }
 std::optional<SortPolicy> parseSortPolicy(const std::string& n) { return parse(kPolicyNames, n); }
+std::string toString(Fusion f) { return nameOf(kFusionNames, f); }
+std::optional<Fusion> parseFusion(const std::string& n) { return parse(kFusionNames, n); }
 
 std::string keyStrategyNames() {
   std::string s;
@@ -116,7 +120,7 @@ SettingsChange SettingsChange::between(const Settings& p, const Settings& n) {
   c.keyParameters = c.resetCache || c.reallocate || n.emaAlpha != p.emaAlpha || n.gaussOutlier != p.gaussOutlier ||
                     n.gaussReset != p.gaussReset;
   c.resetSortCosts = c.reallocate || c.resetAccumulation || c.resetCache || c.keyParameters || n.sort != p.sort ||
-                     n.sortPolicy != p.sortPolicy || n.sortBits != p.sortBits || n.learnEvery != p.learnEvery ||
+                     n.sortPolicy != p.sortPolicy || n.sortBits != p.sortBits || n.learnEvery != p.learnEvery || n.fusion != p.fusion ||
                      n.kernel != p.kernel;
   return c;
 }

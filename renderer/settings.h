@@ -63,6 +63,14 @@ enum class Ser { Off, On, Hint };
 // or those where earlier frames measured that sorting saves more than it costs.
 enum class SortPolicy { Always, Never, Auto };
 
+// Which reorder stages of the compute wavefront run inside a neighbouring stage instead of as passes of
+// their own: `keys` computes the sort key in shade, where the next ray is born (not for the oracle, whose key
+// needs that ray traced first); `gather` moves the path state through the sorted indices in the next trace,
+// which reads the ray it moved instead of reading it again. Same keys, same permutation, same image; fewer
+// dispatches, barriers and passes over memory. The rt tracer and the megakernels keep the setting but do
+// not use it (as SER outside the rt megakernel).
+enum class Fusion { None, Keys, Gather, Both };
+
 const std::vector<KeyStrategy>& allKeyStrategies();
 std::string toString(KeyStrategy s);
 std::string toString(SortAlgorithm s);
@@ -77,6 +85,8 @@ std::optional<Tracer> parseTracer(const std::string& name);
 std::optional<Ser> parseSer(const std::string& name);
 std::string toString(SortPolicy p);
 std::optional<SortPolicy> parseSortPolicy(const std::string& name);
+std::string toString(Fusion f);
+std::optional<Fusion> parseFusion(const std::string& name);
 std::string keyStrategyNames();  // "none|dead-last|fixed|..."
 std::string toString(HeatmapView v);
 std::string toString(HeatmapKeyColour c);
@@ -137,6 +147,7 @@ struct Settings {
   // The sort orders only the top `sortBits` bits of the key (0: all of them): each 8 bits fewer is one radix
   // pass less. Coarser order, same image (the invariant); whether the trace still profits is the bench's call.
   uint32_t sortBits = 0;
+  Fusion fusion = Fusion::None;
   GridSetting grid;
   bool clampToCamera = false;
   float clampDistance = 50.0f;
@@ -156,6 +167,10 @@ struct Settings {
   HeatmapScale heatmapScale = HeatmapScale::Linear;
   HeatmapRange heatmapRange;
 
+  // Settings::fusion as this tracer applies it: only the compute wavefront's stages fuse.
+  bool fusesKeys() const { return sorts() && tracer == Tracer::Compute && strategy != KeyStrategy::Oracle &&
+                                  (fusion == Fusion::Keys || fusion == Fusion::Both); }
+  bool fusesGather() const { return sorts() && tracer == Tracer::Compute && (fusion == Fusion::Gather || fusion == Fusion::Both); }
   bool sorts() const { return kernel == Kernel::Wavefront && strategy != KeyStrategy::None && sort != SortAlgorithm::None; }
   // SER runs only in the rt megakernel; elsewhere the setting is kept but does nothing.
   bool reordersInHardware() const { return tracer == Tracer::Rt && kernel == Kernel::Megakernel && ser != Ser::Off; }

@@ -27,6 +27,7 @@ json toJson(const Settings& s) {
       {"sort", toString(s.sort)},
       {"sort_policy", toString(s.sortPolicy)},
       {"sort_bits", s.sortBits},
+      {"fusion", toString(s.fusion)},
       {"grid", s.grid.automatic ? json("auto") : json::array({s.grid.cells.x, s.grid.cells.y, s.grid.cells.z})},
       {"grid_auto_cells", s.grid.autoCells},
       {"clamp_to_camera", s.clampToCamera},
@@ -95,6 +96,12 @@ Settings settingsFromJson(const json& j) {
     }
     // Older sidecars have no sort bits: they sorted all of them.
     if (j.contains("sort_bits")) s.sortBits = uintField("sort_bits", R::sortBits);
+    // Older sidecars have no fusion: every reorder stage was a pass of its own.
+    if (j.contains("fusion")) {
+      auto fusion = parseFusion(j.at("fusion").get<std::string>());
+      if (!fusion) throw SettingsError("settings: 'fusion' must be none, keys, gather or both, got " + j.at("fusion").dump());
+      s.fusion = *fusion;
+    }
     const json& grid = need("grid");
     if (grid.is_string() && grid.get<std::string>() != "auto")
       throw SettingsError("settings: 'grid' must be \"auto\" or [x, y, z], got " + grid.dump());

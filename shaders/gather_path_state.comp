@@ -30,7 +30,7 @@ void main() {
   if (i == 0u && !live) writeLivePaths(f.live, 0u);
   if (live && (i + 1u == pc.count || pc.sortedKeys.v[i + 1u] == RL_DEAD_KEY)) writeLivePaths(f.live, i + 1u);
   if (!live) {
-    markPathFinished(dst, i);
+    markSlotEmpty(dst, f.hits, i);
     return;
   }
   copyPath(dst, i, f.state[pc.stateSet], pc.sortedIndices.v[i]);

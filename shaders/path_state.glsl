@@ -46,11 +46,29 @@ void setPathPredictedLength(GpuPathState s, uint i, float len) { s.throughput.v[
 // A finished path's ray is never read again: the whole element is overwritten (no read).
 void markPathFinished(GpuPathState s, uint i) { directionBits(s).v[i] = uvec4(0u, 0u, 0u, RL_DEAD_PATH); }
 
+// A slot behind the live prefix after a reorder: finished, and no traversal steps. The next trace does not
+// visit it, but the warp statistics read every slot's steps (stale ones counted paths traced bounces ago).
+void markSlotEmpty(GpuPathState dst, GpuHits h, uint i) {
+  markPathFinished(dst, i);
+  h.steps.v[i] = 0u;
+}
+
 // ---- the reorder: path j of src becomes path i of dst (three 16-byte copies)
 void copyPath(GpuPathState dst, uint i, GpuPathState src, uint j) {
   dst.origin.v[i] = src.origin.v[j];
   directionBits(dst).v[i] = directionBits(src).v[j];
   dst.throughput.v[i] = src.throughput.v[j];
+}
+// The same copy, also giving the moved path's ray and whether it is alive (the gathering trace).
+bool movePath(GpuPathState dst, uint i, GpuPathState src, uint j, out vec3 origin, out vec3 direction) {
+  vec4 o = src.origin.v[j];
+  uvec4 d = directionBits(src).v[j];
+  dst.origin.v[i] = o;
+  directionBits(dst).v[i] = d;
+  dst.throughput.v[i] = src.throughput.v[j];
+  origin = o.xyz;
+  direction = uintBitsToFloat(d.xyz);
+  return d.w != RL_DEAD_PATH;
 }
 
 // ---- radiance: results[id] holds the sum of the path's bounce contributions (w = 1). Bounce 0 writes it
@@ -90,16 +108,18 @@ PathVars loadPath(GpuPathState s, uint i, out uint id) {
   return p;
 }
 
-// A finished path only marks itself finished; a live one stores its next ray (no predicted length yet).
-void storePath(GpuPathState s, uint i, PathVars p, uint id) {
+// A finished path only marks itself finished; a live one stores its next ray and the key stage's predicted
+// length for it (-1: none yet; the shade that makes keys knows it).
+void storePath(GpuPathState s, uint i, PathVars p, uint id, float predictedLength) {
   if (!p.alive) {
     markPathFinished(s, i);
     return;
   }
   s.origin.v[i] = vec4(p.origin, p.pdf);
   directionBits(s).v[i] = uvec4(floatBitsToUint(p.direction), id);
-  s.throughput.v[i] = vec4(p.throughput, -1.0);
+  s.throughput.v[i] = vec4(p.throughput, predictedLength);
 }
+void storePath(GpuPathState s, uint i, PathVars p, uint id) { storePath(s, i, p, id, -1.0); }
 
 // ---- hits of the current bounce, in the order of the current state set
 void storeHit(GpuHits h, uint i, HitRecord hit) {

@@ -1,6 +1,10 @@
 #version 460
 // Closest-hit traversal of every live path's ray; records the hit and the loop iteration count.
-// The counting variant (simt_counting.glsl) also counts active lanes per traversal iteration.
+// The counting variant (simt_counting.glsl, spec constant 1) also counts active lanes per traversal iteration.
+// The gathering variant (spec constant 2, Settings::fusion gather) is also the reorder after a sort: it runs
+// over every slot, moves path sortValues[i] of the current set into slot i of the other set (the 48-byte
+// gather of gather_path_state.comp) and traces the ray it moved, so the ray is not read a second time and
+// the reorder needs no dispatch and barrier of its own. It finds the new live prefix as the gather did.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
@@ -8,23 +12,46 @@
 #include "simt_counting.glsl"
 #include "path_shading.glsl"
 #include "path_stage.glsl"
+#include "live_paths.glsl"
+
+layout(constant_id = 2) const bool kGatherFirst = false;
+
+HitRecord noHit() {
+  HitRecord hit;
+  hit.t = -1.0;
+  hit.triangle = 0u;
+  hit.bary = vec2(0.0);
+  hit.steps = 0u;
+  return hit;
+}
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   gCounters = f.counters;
   gCounterBase = pc.bounce * RL_COUNTER_STRIDE;
   uint i = gl_GlobalInvocationID.x;
-  uint count = f.live.v[RL_LIVE_COUNT];
-  GpuPathState s = f.state[pc.stateSet];
   vec3 origin, direction;
-  bool live = i < count && pathRay(s, i, origin, direction);
-  countRays(live ? 1u : 0u);
-  if (i >= count) return;
-  HitRecord hit;
-  hit.t = -1.0;
-  hit.triangle = 0u;
-  hit.bary = vec2(0.0);
-  hit.steps = 0u;
+  bool live;
+  if (kGatherFirst) {
+    // Dispatched over every slot (not the live count, which this dispatch rewrites).
+    if (i >= f.pathCount) return;
+    live = f.sortKeys.v[i] != RL_DEAD_KEY;
+    if (i == 0u && !live) writeLivePaths(f.live, 0u);
+    if (live && (i + 1u == f.pathCount || f.sortKeys.v[i + 1u] == RL_DEAD_KEY)) writeLivePaths(f.live, i + 1u);
+    GpuPathState dst = f.state[1u - pc.stateSet];
+    countRays(live ? 1u : 0u);
+    if (!live) {
+      markSlotEmpty(dst, f.hits, i);
+      return;
+    }
+    live = movePath(dst, i, f.state[pc.stateSet], f.sortValues.v[i], origin, direction);
+  } else {
+    uint count = f.live.v[RL_LIVE_COUNT];
+    live = i < count && pathRay(f.state[pc.stateSet], i, origin, direction);
+    countRays(live ? 1u : 0u);
+    if (i >= count) return;
+  }
+  HitRecord hit = noHit();
   if (live) hit = traceClosest(f.scene, origin, direction, 1e30);
   storeHit(f.hits, i, hit);
 }

@@ -2,7 +2,11 @@
 #pragma once
 
 #include <cmath>
+#include <cstring>
+#include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "renderer/image_metrics.h"
 #include "renderer/path_tracer.h"
@@ -25,6 +29,12 @@ inline std::vector<glm::vec3> renderRadiance(const VulkanContext& ctx, const Sce
   PathTracer tracer(ctx, scene, settings, view);
   for (uint32_t f = 0; f < settings.frames; ++f) tracer.renderFrame();
   return tracer.readRadiance();
+}
+
+// Bit for bit: no tolerance. `what` names the variant in the failure message.
+inline void expectSameImage(const std::vector<glm::vec3>& got, const std::vector<glm::vec3>& want, const std::string& what) {
+  ASSERT_EQ(got.size(), want.size()) << what;
+  EXPECT_EQ(0, std::memcmp(got.data(), want.data(), got.size() * sizeof(glm::vec3))) << what << " changed the image";
 }
 
 struct ImageMoments {

@@ -42,6 +42,11 @@ void drawSortSection(Settings& s, const ViewOptions& view) {
   comboEnum("sort policy", s.sortPolicy, {SortPolicy::Always, SortPolicy::Never, SortPolicy::Auto});
   sliderU32("sorted key bits", s.sortBits, 0, 32);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("order only the key's top bits (0: all); 8 fewer is one radix pass less");
+  comboEnum("fusion", s.fusion, {Fusion::None, Fusion::Keys, Fusion::Gather, Fusion::Both});
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("keys: made in shade; gather: the reorder done by the next trace (compute wavefront only)");
+  if (s.fusion != Fusion::None && s.sorts() && !s.fusesKeys() && !s.fusesGather())
+    ImGui::TextDisabled("fusion: the rt tracer keeps separate passes");
   comboEnum("kernel", s.kernel, {Kernel::Wavefront, Kernel::Megakernel});
   if (s.kernel == Kernel::Megakernel) ImGui::TextDisabled("the megakernel never sorts");
   // The rt tracer and SER need extensions the device may lack: greyed out with the reason.

@@ -76,6 +76,8 @@ class KeyStage {
   // Device address of the GpuKeyParams block (KeyParamsBuf in GLSL), e.g. for a heatmap shader that looks
   // up the cache with keys.glsl's cacheEntry().
   VkDeviceAddress paramsAddress() const { return paramsBuffer_.address(); }
+  // shade.comp specialised to this strategy's key function (Settings::fusesKeys), built on first use.
+  const ComputePipeline& shadeWithKeys() { return pipeline("shade", settings_.strategy, sizeof(gpu::PathStagePush)); }
   LengthCache::Contents downloadCache() const;
   std::vector<float> downloadOracleLengths(uint32_t count) const;
 

@@ -85,10 +85,11 @@ void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffer
 }
 
 void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, PathRange slice, uint32_t stateSet,
-                              uint32_t bounce, bool detailed, StageTimer* timer) {
+                              uint32_t bounce, bool madeInShade, bool detailed, StageTimer* timer) {
   const uint32_t n = slice.count;
-  keys_.recordKeys(cmd, buffers.frameBlock.address(), stateSet, bounce, buffers.keys.address(),
-                   buffers.values.address(), n, timer);
+  if (!madeInShade)
+    keys_.recordKeys(cmd, buffers.frameBlock.address(), stateSet, bounce, buffers.keys.address(),
+                     buffers.values.address(), n, timer);
   if (detailed) {
     // Keys made now sort the rays of the next bounce.
     Capture& c = captureOf(bounce + 1, buffers.pathCount);
@@ -98,9 +99,7 @@ void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, Pat
   }
 }
 
-uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t paths,
-                                           uint32_t stateSet, StageTimer* timer) {
-  const uint32_t n = paths;
+void PathSorter::recordSort(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t n, StageTimer* timer) {
   {
     ScopedStage s(timer, cmd, "sort");  // the sorter fences its own passes
     // Live keys are < 2^(keyBits-1) and the dead key is all ones (KeyStage::keyBits), so keyBits - 1 bits
@@ -115,6 +114,10 @@ uint32_t PathSorter::recordSortAndGather(VkCommandBuffer cmd, const PathBuffers&
     sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, bits,
                     buffers.live.address() + RL_LIVE_COUNT * sizeof(uint32_t), ignored);
   }
+}
+
+uint32_t PathSorter::recordGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t n, uint32_t stateSet,
+                                  StageTimer* timer) {
   // "reorder": every state array gathered into the other set, and the live prefix's new length.
   const gpu::GatherPush gather{buffers.frameBlock.address(), buffers.keys.address(), buffers.values.address(),
                                stateSet, n};

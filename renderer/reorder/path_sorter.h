@@ -42,12 +42,18 @@ class PathSorter {
   // detailed mode the accuracy readbacks.
   void recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, PathRange slice, uint32_t stateSet,
                         uint32_t bounce, bool learn, bool detailed, StageTimer* timer);
-  // After shading `bounce`: the keys of the next rays (in buffers.keys, current set order).
+  // After shading `bounce`: the keys of the next rays (in buffers.keys, current set order), unless shade made
+  // them (`madeInShade`, Settings::fusesKeys); the detailed readback of the keys either way.
   void recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, PathRange slice, uint32_t stateSet,
-                  uint32_t bounce, bool detailed, StageTimer* timer);
-  // Sort, live count and gather; returns the state set that holds the reordered paths.
-  uint32_t recordSortAndGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t paths, uint32_t stateSet,
-                               StageTimer* timer);
+                  uint32_t bounce, bool madeInShade, bool detailed, StageTimer* timer);
+  // Sorts the live prefix's pairs in place (buffers.keys, buffers.values).
+  void recordSort(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t paths, StageTimer* timer);
+  // The reorder after recordSort: live count and gather into the other set, which it returns. With
+  // Settings::fusesGather the next trace does this instead (trace.comp's gathering variant).
+  uint32_t recordGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t paths, uint32_t stateSet,
+                        StageTimer* timer);
+  // Shade that also makes the keys of the rays it writes (shade.comp with the strategy's key function).
+  const ComputePipeline& shadeWithKeys() { return keys_.shadeWithKeys(); }
   // Adds key width, cache and sort memory and, in detailed mode, prediction accuracy to the stats.
   void finishFrame(FrameStats& stats, bool detailed);
 

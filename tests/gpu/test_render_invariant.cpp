@@ -16,12 +16,6 @@ namespace raylab::test {
 
 class SortInvariant : public GpuTest, public ::testing::WithParamInterface<SortAlgorithm> {};
 
-// Bit for bit: no tolerance. `what` names the variant in the failure message.
-void expectSameImage(const std::vector<glm::vec3>& got, const std::vector<glm::vec3>& want, const std::string& what) {
-  ASSERT_EQ(got.size(), want.size()) << what;
-  EXPECT_EQ(0, std::memcmp(got.data(), want.data(), got.size() * sizeof(glm::vec3))) << what << " changed the image";
-}
-
 TEST_P(SortInvariant, EveryStrategyRendersTheUnsortedImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
