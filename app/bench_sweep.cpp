@@ -47,7 +47,7 @@ struct Axes {
   std::vector<std::string> tracers{}, sers{}, serHints{"two-point"};
   std::vector<std::string> policies{"always"};
   std::vector<std::string> sortBits{};    // --sort-bits-list: empty keeps the render flag's (all bits)
-  std::vector<std::string> fusions{};     // --fusions: empty keeps the render flag's (none)
+  std::vector<std::string> fusions{};     // --fusions: empty keeps the render flag's (gather)
   std::vector<std::string> learnEvery{};  // --learn-every-list: strategies with a length cache only
   std::vector<std::string> bounces{};     // --bounces with a list: one group of cells per count
   std::vector<std::string> scaleTris{};   // --scale-tris: the sizes of every bare temple-detail case
@@ -251,7 +251,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
               label += " factor=" + shortNumber(v.fixedFactor);
             if (v.sortPolicy != SortPolicy::Always) label += " policy=" + toString(v.sortPolicy);
             if (v.sortBits != 0) label += " bits=" + std::to_string(v.sortBits);
-            if (v.fusion != Fusion::None) label += " fusion=" + toString(v.fusion);
+            if (v.fusion != Settings{}.fusion) label += " fusion=" + toString(v.fusion);
             if (v.learnEvery != 1) label += " learn=1/" + std::to_string(v.learnEvery);
             plan.cells.push_back({ci, v, label});
           }

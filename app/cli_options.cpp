@@ -179,7 +179,7 @@ std::string commonOptionsHelp() {
          "  --sort-bits N          order only the key's top N bits, 0..32 (default 0: all); 8 bits\n"
          "                         fewer is one radix pass less\n"
          "  --fusion none|keys|gather|both  compute wavefront: keys made in shade, the reorder done by the\n"
-         "                         next trace (same image; default none)\n"
+         "                         next trace (same image; default gather)\n"
          "  --grid auto|N|NXxNYxNZ  key grid (default auto, 64 cells on the largest axis)\n"
          "  --clamp D              clamp the key grid to camera +- D\n"
          "  --fixed-factor F       fixed length = F * largest extent (default 0.5; Meister et al. 0.25)\n"

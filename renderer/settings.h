@@ -69,6 +69,10 @@ enum class SortPolicy { Always, Never, Auto };
 // which reads the ray it moved instead of reading it again. Same keys, same permutation, same image; fewer
 // dispatches, barriers and passes over memory. The rt tracer and the megakernels keep the setting but do
 // not use it (as SER outside the rt megakernel).
+// Measured on an H200 (docs/results/h200-fusion): `gather` made every sorted frame faster (0.2-0.8 ms; the
+// 0.16 ms gather pass per sorted bounce became 0.03 ms more trace), so it is the default; `keys` made shade
+// slower by more than the keys pass cost on the hall and Sponza (shade +0.21 ms against keys 0.13 ms, fixed,
+// hall, 4 bounces) and paid only where few paths live (openings, 8 bounces: 2.39 -> 2.24 ms): opt-in.
 enum class Fusion { None, Keys, Gather, Both };
 
 const std::vector<KeyStrategy>& allKeyStrategies();
@@ -147,7 +151,7 @@ struct Settings {
   // The sort orders only the top `sortBits` bits of the key (0: all of them): each 8 bits fewer is one radix
   // pass less. Coarser order, same image (the invariant); whether the trace still profits is the bench's call.
   uint32_t sortBits = 0;
-  Fusion fusion = Fusion::None;
+  Fusion fusion = Fusion::Gather;
   GridSetting grid;
   bool clampToCamera = false;
   float clampDistance = 50.0f;

@@ -97,6 +97,7 @@ Settings settingsFromJson(const json& j) {
     // Older sidecars have no sort bits: they sorted all of them.
     if (j.contains("sort_bits")) s.sortBits = uintField("sort_bits", R::sortBits);
     // Older sidecars have no fusion: every reorder stage was a pass of its own.
+    s.fusion = Fusion::None;
     if (j.contains("fusion")) {
       auto fusion = parseFusion(j.at("fusion").get<std::string>());
       if (!fusion) throw SettingsError("settings: 'fusion' must be none, keys, gather or both, got " + j.at("fusion").dump());

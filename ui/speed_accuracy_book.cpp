@@ -60,7 +60,7 @@ MethodKey methodKeyOf(const Settings& s) {
   if (s.strategy == KeyStrategy::Gaussian) k.gaussOutlier = s.gaussOutlier, k.gaussReset = s.gaussReset;
   k.sortBits = s.sortBits;
   if (usesLengthCache(s.strategy)) k.learnEvery = s.learnEvery;
-  k.fusion = s.fusesKeys() ? (s.fusesGather() ? Fusion::Both : Fusion::Keys) : s.fusesGather() ? Fusion::Gather : Fusion::None;
+  if (s.sorts() && s.tracer == Tracer::Compute) k.fusion = s.fusion;  // elsewhere it does nothing
   return k;
 }
 
@@ -87,7 +87,7 @@ std::string describe(const MethodKey& k) {
   if (k.strategy == KeyStrategy::Gaussian) text += number("out", k.gaussOutlier) + number("reset", k.gaussReset);
   if (k.sortBits != 0) text += " | bits " + std::to_string(k.sortBits);
   if (k.learnEvery > 1) text += " | learn 1/" + std::to_string(k.learnEvery);
-  if (k.fusion != Fusion::None) text += " | fused " + toString(k.fusion);
+  if (k.fusion != Settings{}.fusion) text += " | fused " + toString(k.fusion);
   return text;
 }
 

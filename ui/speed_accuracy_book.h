@@ -37,7 +37,7 @@ struct MethodKey {
   float gaussReset = 0.0f;
   uint32_t sortBits = 0;    // Settings::sortBits (0: all)
   uint32_t learnEvery = 0;  // Settings::learnEvery of a length-cache strategy; 0 without a cache
-  Fusion fusion = Fusion::None;  // Settings::fusion where the tracer applies it
+  Fusion fusion = Settings{}.fusion;  // Settings::fusion where the tracer applies it (the default elsewhere)
   bool operator==(const MethodKey&) const = default;
 };
 

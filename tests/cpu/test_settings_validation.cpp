@@ -35,6 +35,10 @@ std::string cliError(const std::vector<std::string>& args) {
 TEST(SettingsValidation, DefaultsAndTheirJsonAreValid) {
   EXPECT_FALSE(settingsError(Settings{}));
   EXPECT_EQ(settingsFromJson(toJson(Settings{})), Settings{});
+  // A sidecar from before Settings::fusion ran every reorder stage as a pass of its own.
+  nlohmann::json old = toJson(Settings{});
+  old.erase("fusion");
+  EXPECT_EQ(settingsFromJson(old).fusion, Fusion::None);
 }
 
 TEST(SettingsValidation, HostileSidecarValuesAreRefusedLikeTheCommandLine) {
@@ -50,6 +54,7 @@ TEST(SettingsValidation, HostileSidecarValuesAreRefusedLikeTheCommandLine) {
   EXPECT_EQ(jsonError("grid", "everywhere"), "settings: 'grid' must be \"auto\" or [x, y, z], got \"everywhere\"");
   EXPECT_EQ(jsonError("heatmap_bounce", 99), "--heatmap-bounce must be between 0 and 31, got 99");
   EXPECT_NE(jsonError("width", "wide").find("'width' must be a number"), std::string::npos);
+  EXPECT_EQ(jsonError("fusion", "sideways"), "settings: 'fusion' must be none, keys, gather or both, got \"sideways\"");
   // The same ranges on the command line, same words.
   EXPECT_EQ(cliError({"--spp", "100000"}), jsonError("spp_per_frame", 100000));
   EXPECT_EQ(cliError({"--ema-alpha", "-3"}), jsonError("ema_alpha", -3));

@@ -40,7 +40,7 @@ TEST(SharedLayout, StructSizesMatchScalarLayout) {
   // Scalar layout packs vec3 in 12 bytes with 4-byte alignment, as glm does on the host.
   EXPECT_EQ(sizeof(vec3), 12u);
   EXPECT_EQ(alignof(vec3), 4u);
-  EXPECT_EQ(offsetof(GpuFrame, width), 64 + sizeof(GpuScene) + 2 * sizeof(GpuPathState) + sizeof(GpuHits) + 5 * 8);
+  EXPECT_EQ(offsetof(GpuFrame, width), 64 + sizeof(GpuScene) + 2 * sizeof(GpuPathState) + sizeof(GpuHits) + 8 * 8);  // results .. keyParams
 }
 
 // Every shader's push-constant block, read from its SPIR-V, has the size of the C++ struct the host pushes

@@ -71,6 +71,7 @@ TEST(SpeedAccuracyBook, ParameterChangeStartsANewUnsmoothedPoint) {
       {"policy", KeyStrategy::Fixed, [](Settings& s) { s.sortPolicy = SortPolicy::Auto; }},
       {"sorted key bits", KeyStrategy::Fixed, [](Settings& s) { s.sortBits = 8; }},
       {"learning stride", KeyStrategy::Average, [](Settings& s) { s.learnEvery = 4; }},
+      {"fusion", KeyStrategy::TwoPoint, [](Settings& s) { s.fusion = Fusion::Both; }},
       {"strategy", KeyStrategy::Fixed, [](Settings& s) { s.strategy = KeyStrategy::Average; }},
   };
   for (const Case& c : cases) {
