@@ -18,8 +18,9 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= pc.count) return;
   FrameBuf frame = FrameBuf(pc.frame);
-  // Slots past the live prefix of the last sort hold finished paths (gather_path_state.comp):
-  // their key is the dead key without reading their state, and the sort reads the same bound.
+  // Slots past the live prefix of the last sort hold finished paths (gather_path_state.comp): their key is
+  // the dead key without reading their state, and the sort reads the same bound. (PathSorter dispatches
+  // this pass over the live prefix only, where the sort already left dead keys behind it.)
   if (i >= frame.f.live.v[RL_LIVE_COUNT]) {
     UintBuf(pc.keys).v[i] = RL_DEAD_KEY;
     UintBuf(pc.values).v[i] = i;

@@ -98,7 +98,8 @@ const ComputePipeline& KeyStage::pipeline(const char* shader, KeyStrategy strate
 }
 
 void KeyStage::recordKeys(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint32_t stateSet, uint32_t bounce,
-                          VkDeviceAddress keysOut, VkDeviceAddress valuesOut, uint32_t count, StageTimer* timer) {
+                          VkDeviceAddress keysOut, VkDeviceAddress valuesOut, uint32_t count, StageTimer* timer,
+                          VkBuffer liveArgs, VkDeviceSize liveArgsOffset) {
   KeyStrategy s = settings_.strategy;
   if (s == KeyStrategy::None || count == 0) return;
   if (count > maxPaths_) throw std::invalid_argument("KeyStage::recordKeys: more paths than maxPaths");
@@ -108,7 +109,12 @@ void KeyStage::recordKeys(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint3
     recordStage(cmd, timer, "oracle-trace", [&] { trace.dispatchThreads(cmd, push, count); });
   }
   const ComputePipeline& keys = pipeline("keys", s, sizeof(gpu::KeyPush));
-  recordStage(cmd, timer, "keys", [&] { keys.dispatchThreads(cmd, push, count); });
+  recordStage(cmd, timer, "keys", [&] {
+    if (liveArgs != VK_NULL_HANDLE)
+      keys.dispatchIndirect(cmd, push, liveArgs, liveArgsOffset);
+    else
+      keys.dispatchThreads(cmd, push, count);
+  });
 }
 
 void KeyStage::recordLearn(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint32_t stateSet, uint32_t bounce,

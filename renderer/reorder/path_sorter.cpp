@@ -87,9 +87,11 @@ void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffer
 void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, PathRange slice, uint32_t stateSet,
                               uint32_t bounce, bool madeInShade, bool detailed, StageTimer* timer) {
   const uint32_t n = slice.count;
+  // Over the live prefix only: past it, buffers.keys holds the dead keys the last sort moved there (every
+  // slot is live until a frame's first sort, and the keys pass then covers them all).
   if (!madeInShade)
     keys_.recordKeys(cmd, buffers.frameBlock.address(), stateSet, bounce, buffers.keys.address(),
-                     buffers.values.address(), n, timer);
+                     buffers.values.address(), n, timer, buffers.live.handle(), PathBuffers::kLiveDispatchOffset);
   if (detailed) {
     // Keys made now sort the rays of the next bounce.
     Capture& c = captureOf(bounce + 1, buffers.pathCount);
