@@ -33,6 +33,21 @@ set +e
 [ $? -eq 2 ] || { echo "FAIL: bad --sorts did not exit 2"; exit 1; }
 set -e
 
+# The fusion axis: one cell per fusion, the CSV's fusion column, and the same image in each.
+RAYLAB_VALIDATE=1 "$raylab" bench --cases temple@openings --strategies fixed --fusions none,keys,gather,both \
+  --size 24x16 --bounces 3 --timed-frames 1 --warmup 0 --reference-spp 1 --no-detail --out-dir "$dir/fusion" \
+  > "$dir/fusion.log" 2>&1 || { cat "$dir/fusion.log"; exit 1; }
+python3 - "$dir/fusion" <<'PY'
+import csv, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1] + '/results.csv')) if r['strategy'] == 'fixed']
+assert sorted(r['fusion'] for r in rows) == ['both', 'gather', 'keys', 'none'], [r['fusion'] for r in rows]
+assert len({r['final_rel_mse'] for r in rows}) == 1, [r['final_rel_mse'] for r in rows]
+for r in rows:
+    assert (float(r['reorder_ms']) > 0) == (r['fusion'] in ('none', 'keys')), r
+    assert (float(r['keys_ms']) > 0) == (r['fusion'] in ('none', 'gather')), r
+print('ok: fusions', sorted(r['fusion'] for r in rows))
+PY
+
 RAYLAB_VALIDATE=1 "$raylab" bench --scale-tris 1e4,2e4 --bounces 1,2 --strategies two-point --size 16x8 \
   --timed-frames 1 --warmup 0 --reference-spp 1 --no-detail --out-dir "$dir/scale" > "$dir/scale.log" 2>&1 ||
   { cat "$dir/scale.log"; exit 1; }
