@@ -15,7 +15,7 @@
 // choice follows the view; a bounce without both measurements yet sorts (the `always` behaviour).
 // With Settings::fusion the fused work is timed inside its host stage: the reorder (gather) in the next
 // trace, so in `nextSorted` where it belongs; keys made in shade in shade of b, which counts towards the
-// bounce before (b-1), a small misattribution (0.01-0.04 ms a bounce on the H200) that the policy accepts.
+// bounce before (b-1), a misattribution of 0.01-0.11 ms a bounce on the H200 that the policy accepts.
 #pragma once
 
 #include <cstdint>
