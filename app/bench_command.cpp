@@ -12,6 +12,7 @@
 #include "app/scene_setup.h"
 #include "renderer/rt_tracer.h"
 #include "renderer/stats_json.h"
+#include "renderer/git_revision.h"
 
 namespace raylab {
 namespace {
@@ -51,7 +52,7 @@ void writeCsvRow(std::ofstream& csv, const VulkanContext& ctx, const BenchCell& 
                  const SceneFacts& scene, const CellResult& r) {
   const Settings& s = cell.settings;
   const auto& b = r.detailed.bounces;
-  csv << csvQuote(ctx.info().name) << "," << csvQuote(ctx.info().driver) << "," << RAYLAB_GIT_REV << ","
+  csv << csvQuote(ctx.info().name) << "," << csvQuote(ctx.info().driver) << "," << gitRevision() << ","
       << csvQuote(s.scene) << "," << view << "," << s.width << "," << s.height << "," << s.bounces << ","
       << s.sppPerFrame << "," << toString(s.kernel) << "," << toString(s.tracer) << "," << toString(s.ser) << ","
       << (s.reordersInHardware() ? ctx.info().serReorderingHint : "") << "," << toString(s.strategy) << "," << toString(s.sort) << ","
@@ -134,7 +135,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
         CellResult r = measureCell(tracer, cell->settings, plan.warmupFrames, plan.timedFrames, reference,
                                    errorCurve, plan.detailFrame);
         writeCsvRow(csv, ctx, *cell, loaded.view.name, facts, r);
-        nlohmann::json row = {{"device", toJson(ctx.info())}, {"git_revision", RAYLAB_GIT_REV},
+        nlohmann::json row = {{"device", toJson(ctx.info())}, {"git_revision", gitRevision()},
                               {"view", loaded.view.name},      {"label", cell->label},
                               {"settings", toJson(cell->settings)}, {"scene", toJson(facts)},
                               {"result", toJson(r)}};

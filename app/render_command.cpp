@@ -18,6 +18,7 @@
 #include "renderer/png_writer.h"
 #include "renderer/rt_tracer.h"
 #include "renderer/stats_json.h"
+#include "renderer/git_revision.h"
 
 namespace raylab {
 namespace {
@@ -113,7 +114,7 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
 
   if (!options.statsPath.empty()) {
     nlohmann::json doc = {{"device", toJson(ctx.info())},
-                          {"git_revision", RAYLAB_GIT_REV},
+                          {"git_revision", gitRevision()},
                           {"scene", loaded.scene.name},
                           {"view", loaded.view.name},
                           {"triangles", tracer.scene().triangleCount()},

@@ -6,6 +6,7 @@
 #include "app/fly_camera.h"
 #include "app/setting_flags.h"
 #include "renderer/stats_json.h"
+#include "renderer/git_revision.h"
 
 namespace raylab {
 namespace {
@@ -39,7 +40,7 @@ nlohmann::json makeSidecar(const SidecarContent& c) {
                   {"image", c.image},
                   {"image_width", c.imageWidth},
                   {"image_height", c.imageHeight},
-                  {"git_revision", RAYLAB_GIT_REV},
+                  {"git_revision", gitRevision()},
                   {"device", toJson(c.device)},
                   {"settings", toJson(c.settings)},
                   {"camera", cameraJson(c.camera)},
