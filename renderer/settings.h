@@ -69,8 +69,8 @@ enum class SortPolicy { Always, Never, Auto };
 // which reads the ray it moved instead of reading it again. Same keys, same permutation, same image; fewer
 // dispatches, barriers and passes over memory. The rt tracer and the megakernels keep the setting but do
 // not use it (as SER outside the rt megakernel).
-// Measured on an H200 (docs/results/h200-fusion): `gather` made every sorted frame faster (0.2-0.8 ms; the
-// 0.16 ms gather pass per sorted bounce became 0.03 ms more trace), so it is the default; `keys` made shade
+// Measured on an H200 (docs/results/h200-fusion): `gather` made every sorted frame faster (0.09-0.79 ms; on
+// the hall the 0.16 ms gather pass per sorted bounce became 0.03 ms more trace), so it is the default; `keys` made shade
 // slower by more than the keys pass cost on the hall and Sponza (shade +0.21 ms against keys 0.13 ms, fixed,
 // hall, 4 bounces) and paid only where few paths live (openings, 8 bounces: 2.39 -> 2.24 ms): opt-in.
 enum class Fusion { None, Keys, Gather, Both };
