@@ -1,5 +1,5 @@
 #version 460
-// Gathers every path-state array of the current set (48 bytes a path, path_state.glsl's copyPath; 76
+// Gathers every path-state array of the current set (48 bytes a path, path_state.glsl's movePath; 76
 // before radiance went to results and alive into the path id) through the sorted indices into the other set, so
 // the next bounce reads coherent memory (indexing through the permutation without moving the data made
 // the study's tracer slower). A gather (random reads, coalesced writes): the scatter through the inverse
@@ -10,28 +10,22 @@
 // and shade): the sorted keys put every finished path (RL_DEAD_KEY) behind the live ones, so slot i is live
 // exactly when its sorted key is not dead. This was a pass of its own (live_count) before the gather read
 // the keys; folded in, the reorder is one dispatch and one barrier shorter.
+// The slot's work is reorder_slot.glsl's, which the gathering trace (Settings::fusion gather) shares.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
 #include "shared_types.h"
 #include "live_paths.glsl"
 #include "path_state.glsl"
+#include "reorder_slot.glsl"
 
 layout(local_size_x_id = 0) in;
-layout(push_constant, scalar) uniform Push { GatherPush pc; };
+layout(push_constant, scalar) uniform Push { PathStagePush pc; };
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
-  if (i >= pc.count) return;
-  GpuFrame f = pc.frame.f;
-  GpuPathState dst = f.state[1u - pc.stateSet];
-  bool live = pc.sortedKeys.v[i] != RL_DEAD_KEY;
-  // Exactly one thread sees the boundary between the last live and the first finished path (or that none lives).
-  if (i == 0u && !live) writeLivePaths(f.live, 0u);
-  if (live && (i + 1u == pc.count || pc.sortedKeys.v[i + 1u] == RL_DEAD_KEY)) writeLivePaths(f.live, i + 1u);
-  if (!live) {
-    markSlotEmpty(dst, f.hits, i);
-    return;
-  }
-  copyPath(dst, i, f.state[pc.stateSet], pc.sortedIndices.v[i]);
+  GpuFrame f = FrameBuf(pc.frame).f;
+  if (i >= f.pathCount) return;
+  vec3 origin, direction;
+  reorderSlot(f, pc.stateSet, i, origin, direction);
 }

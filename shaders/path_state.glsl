@@ -53,13 +53,8 @@ void markSlotEmpty(GpuPathState dst, GpuHits h, uint i) {
   h.steps.v[i] = 0u;
 }
 
-// ---- the reorder: path j of src becomes path i of dst (three 16-byte copies)
-void copyPath(GpuPathState dst, uint i, GpuPathState src, uint j) {
-  dst.origin.v[i] = src.origin.v[j];
-  directionBits(dst).v[i] = directionBits(src).v[j];
-  dst.throughput.v[i] = src.throughput.v[j];
-}
-// The same copy, also giving the moved path's ray and whether it is alive (the gathering trace).
+// ---- the reorder: path j of src becomes path i of dst (three 16-byte copies); gives the moved path's ray
+// and whether it is alive.
 bool movePath(GpuPathState dst, uint i, GpuPathState src, uint j, out vec3 origin, out vec3 direction) {
   vec4 o = src.origin.v[j];
   uvec4 d = directionBits(src).v[j];

@@ -216,16 +216,6 @@ struct PathStagePush {
   uint stateSet;
 };
 
-// Push constants of gather_path_state.comp: every state array of the current set, gathered through the
-// sorted indices into the other set.
-struct GatherPush {
-  RL_REF(FrameBuf) frame;
-  RL_REF(UintBuf) sortedKeys;  // dead keys (RL_DEAD_KEY) last: where the live prefix ends
-  RL_REF(UintBuf) sortedIndices;
-  uint stateSet;  // source set; the destination is the other one
-  uint count;
-};
-
 #ifdef __cplusplus
 // The layouts the shaders assume (scalar block layout); ComputePipeline also checks every push-constant
 // struct against the size the SPIR-V declares.
@@ -234,7 +224,6 @@ static_assert(offsetof(GpuPathState, throughput) == RL_STATE_THROUGHPUT * sizeof
 static_assert(RL_STATE_BYTES_PER_PATH == RL_STATE_ARRAY_COUNT * 16);
 static_assert(sizeof(PathStagePush) == 16);
 static_assert(offsetof(GpuScene, tlas) % 8 == 0 && sizeof(GpuScene) == offsetof(GpuScene, tlas) + 8);
-static_assert(sizeof(GatherPush) == 32);
 static_assert(RL_COUNTER_SIMT_SLOTS < RL_COUNTER_STRIDE && RL_LIVE_DISPATCH + 3 == RL_LIVE_WORDS);
 }  // namespace raylab::gpu
 #endif

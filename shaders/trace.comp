@@ -13,6 +13,7 @@
 #include "path_shading.glsl"
 #include "path_stage.glsl"
 #include "live_paths.glsl"
+#include "reorder_slot.glsl"
 
 layout(constant_id = 2) const bool kGatherFirst = false;
 
@@ -35,16 +36,9 @@ void main() {
   if (kGatherFirst) {
     // Dispatched over every slot (not the live count, which this dispatch rewrites).
     if (i >= f.pathCount) return;
-    live = f.sortKeys.v[i] != RL_DEAD_KEY;
-    if (i == 0u && !live) writeLivePaths(f.live, 0u);
-    if (live && (i + 1u == f.pathCount || f.sortKeys.v[i + 1u] == RL_DEAD_KEY)) writeLivePaths(f.live, i + 1u);
-    GpuPathState dst = f.state[1u - pc.stateSet];
+    live = reorderSlot(f, pc.stateSet, i, origin, direction);
     countRays(live ? 1u : 0u);
-    if (!live) {
-      markSlotEmpty(dst, f.hits, i);
-      return;
-    }
-    live = movePath(dst, i, f.state[pc.stateSet], f.sortValues.v[i], origin, direction);
+    if (!live) return;  // an empty slot: reorderSlot gave it no traversal steps
   } else {
     uint count = f.live.v[RL_LIVE_COUNT];
     live = i < count && pathRay(f.state[pc.stateSet], i, origin, direction);

@@ -35,7 +35,7 @@ PathSorter::PathSorter(const VulkanContext& ctx, const Scene& scene, const Setti
     : ctx_(ctx),
       keys_(ctx, scene, cameraPos, settings, maxPaths),
       maxPaths_(maxPaths),
-      gather_(ctx, "gather_path_state", sizeof(gpu::GatherPush), RL_PATH_GROUP_SIZE) {
+      gather_(ctx, "gather_path_state", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE) {
   makeSorter(settings);
 }
 
@@ -121,8 +121,9 @@ void PathSorter::recordSort(VkCommandBuffer cmd, const PathBuffers& buffers, uin
 uint32_t PathSorter::recordGather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t n, uint32_t stateSet,
                                   StageTimer* timer) {
   // "reorder": every state array gathered into the other set, and the live prefix's new length.
-  const gpu::GatherPush gather{buffers.frameBlock.address(), buffers.keys.address(), buffers.values.address(),
-                               stateSet, n};
+  // The sort's pairs are GpuFrame::sortKeys and sortValues (buffers.keys, buffers.values), as the gathering
+  // trace reads them; n is the frame block's path count.
+  const gpu::PathStagePush gather{buffers.frameBlock.address(), 0, stateSet};
   recordStage(cmd, timer, "reorder", [&] { gather_.dispatchThreads(cmd, gather, n); });
   return 1u - stateSet;
 }

@@ -50,7 +50,7 @@ TEST(SharedLayout, PushConstantBlocksMatchTheHostStructs) {
       {"generate", sizeof(PathStagePush)},       {"trace", sizeof(PathStagePush)},
       {"shade", sizeof(PathStagePush)},          {"accumulate", sizeof(PathStagePush)},
       {"tonemap", sizeof(PathStagePush)},        {"megakernel", sizeof(PathStagePush)},
-      {"gather_path_state", sizeof(GatherPush)},
+      {"gather_path_state", sizeof(PathStagePush)},
       {"keys", sizeof(KeyPush)},                 {"key_oracle", sizeof(KeyPush)},
       {"key_learn", sizeof(KeyLearnPush)},       {"key_merge", sizeof(KeyLearnPush)},
       {"heatmap_gather", sizeof(HeatmapPush)},   {"heatmap_colorize", sizeof(HeatmapPush)},
