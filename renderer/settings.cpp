@@ -120,8 +120,8 @@ SettingsChange SettingsChange::between(const Settings& p, const Settings& n) {
   c.keyParameters = c.resetCache || c.reallocate || n.emaAlpha != p.emaAlpha || n.gaussOutlier != p.gaussOutlier ||
                     n.gaussReset != p.gaussReset;
   c.resetSortCosts = c.reallocate || c.resetAccumulation || c.resetCache || c.keyParameters || n.sort != p.sort ||
-                     n.sortPolicy != p.sortPolicy || n.sortBits != p.sortBits || n.learnEvery != p.learnEvery || n.fusion != p.fusion ||
-                     n.kernel != p.kernel;
+                     n.sortPolicy != p.sortPolicy || n.sortBits != p.sortBits || n.learnEvery != p.learnEvery ||
+                     n.fusion != p.fusion || n.kernel != p.kernel;
   return c;
 }
 
