@@ -48,6 +48,7 @@ struct Axes {
   std::vector<std::string> policies{"always"};
   std::vector<std::string> sortBits{};    // --sort-bits-list: empty keeps the render flag's (all bits)
   std::vector<std::string> fusions{};     // --fusions: empty keeps the render flag's (gather)
+  std::vector<std::string> compactions{}; // --compactions: empty keeps the render flag's (none)
   std::vector<std::string> learnEvery{};  // --learn-every-list: strategies with a length cache only
   std::vector<std::string> bounces{};     // --bounces with a list: one group of cells per count
   std::vector<std::string> scaleTris{};   // --scale-tris: the sizes of every bare temple-detail case
@@ -153,6 +154,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
     else if (flag == "--sort-policies") axes.policies = splitList(v);
     else if (flag == "--sort-bits-list") axes.sortBits = splitList(v);
     else if (flag == "--fusions") axes.fusions = splitList(v);
+    else if (flag == "--compactions") axes.compactions = splitList(v);
     else if (flag == "--learn-every-list") axes.learnEvery = splitList(v);
     else if (flag == "--grids") axes.grids = splitList(v);
     else if (flag == "--clamps") axes.clamps = splitList(v);
@@ -216,6 +218,12 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
       plain.kernel = Kernel::Wavefront;
       plain.strategy = KeyStrategy::None;
       plan.cells.push_back({ci, plain, prefix + "none"});
+      // The unsorted wavefront with each other compaction: the baseline a compacting tracer would have.
+      for (const std::string& compaction : axes.compactions) {
+        Settings packed = withFlag(plain, "--compaction", compaction);
+        if (packed.compaction != plain.compaction)
+          plan.cells.push_back({ci, packed, prefix + "none compaction=" + toString(packed.compaction)});
+      }
       for (const std::string& strategy : axes.strategies) {
         Settings st = withFlag(plain, "--strategy", strategy);
         if (st.strategy == KeyStrategy::None) continue;
@@ -235,6 +243,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
           if (so.strategy == KeyStrategy::Fixed || so.strategy == KeyStrategy::TwoPoint) expand(axes.factors, "--fixed-factor");
           expand(axes.sortBits, "--sort-bits", /*gridOnly=*/false);
           expand(axes.fusions, "--fusion", /*gridOnly=*/false);
+          expand(axes.compactions, "--compaction", /*gridOnly=*/false);
           if (usesLengthCache(so.strategy)) expand(axes.learnEvery, "--learn-every");
           std::vector<Settings> withPolicies;
           for (const Settings& v : variants)
@@ -252,6 +261,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
             if (v.sortPolicy != SortPolicy::Always) label += " policy=" + toString(v.sortPolicy);
             if (v.sortBits != 0) label += " bits=" + std::to_string(v.sortBits);
             if (v.fusion != Settings{}.fusion) label += " fusion=" + toString(v.fusion);
+            if (v.compaction != Settings{}.compaction) label += " compaction=" + toString(v.compaction);
             if (v.learnEvery != 1) label += " learn=1/" + std::to_string(v.learnEvery);
             plan.cells.push_back({ci, v, label});
           }
@@ -273,6 +283,7 @@ std::string benchHelp() {
          "  --sort-policies always,auto  sort policies to sweep (default always)\n"
          "  --sort-bits-list 0,8,16   sorted key bits to sweep (0: all; see --sort-bits)\n"
          "  --fusions none,both       reorder stage fusions to sweep (see --fusion)\n"
+         "  --compactions none,shade  compactions to sweep, the unsorted baseline's too (see --compaction)\n"
          "  --learn-every-list 1,4,16 learning strides of the length-cache strategies to sweep\n"
          "  --grids auto,32x8x32      grid settings to sweep\n"
          "  --clamps off,50           camera clamp distances to sweep\n"

@@ -110,6 +110,7 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       {"--sort-policy", [&](const std::string& v) { s.sortPolicy = parseEnum("--sort-policy", v, &parseSortPolicy, "always|never|auto"); }},
       {"--sort-bits", [&](const std::string& v) { s.sortBits = parseUint("--sort-bits", v, 0, 32); }},
       {"--fusion", [&](const std::string& v) { s.fusion = parseEnum("--fusion", v, &parseFusion, "none|keys|gather|both"); }},
+      {"--compaction", [&](const std::string& v) { s.compaction = parseEnum("--compaction", v, &parseCompaction, "none|shade"); }},
       {"--learn-every", [&](const std::string& v) { s.learnEvery = parseUint("--learn-every", v, 1, 64); }},
       {"--grid", [&](const std::string& v) { parseGrid(v, s); }},
       {"--clamp", [&](const std::string& v) {
@@ -180,6 +181,8 @@ std::string commonOptionsHelp() {
          "                         fewer is one radix pass less\n"
          "  --fusion none|keys|gather|both  compute wavefront: keys made in shade, the reorder done by the\n"
          "                         next trace (same image; default gather)\n"
+         "  --compaction none|shade  compute wavefront: shade packs the live paths at the front after\n"
+         "                         the frame's last sort (every bounce when nothing sorts; same image)\n"
          "  --grid auto|N|NXxNYxNZ  key grid (default auto, 64 cells on the largest axis)\n"
          "  --clamp D              clamp the key grid to camera +- D\n"
          "  --fixed-factor F       fixed length = F * largest extent (default 0.5; Meister et al. 0.25)\n"

@@ -31,6 +31,7 @@ const std::map<std::string, Copy>& fieldsOfFlag() {
       {"sort-policy", [](Settings& t, const Settings& f) { t.sortPolicy = f.sortPolicy; }},
       {"sort-bits", [](Settings& t, const Settings& f) { t.sortBits = f.sortBits; }},
       {"fusion", [](Settings& t, const Settings& f) { t.fusion = f.fusion; }},
+      {"compaction", [](Settings& t, const Settings& f) { t.compaction = f.compaction; }},
       {"grid", [](Settings& t, const Settings& f) { t.grid = f.grid; }},
       {"clamp", [](Settings& t, const Settings& f) { t.clampToCamera = f.clampToCamera, t.clampDistance = f.clampDistance; }},
       {"fixed-factor", [](Settings& t, const Settings& f) { t.fixedFactor = f.fixedFactor; }},

@@ -23,7 +23,7 @@ PathBuffers::PathBuffers(const VulkanContext& ctx, uint32_t width, uint32_t heig
   counterHistory = GpuBuffer(ctx, counterBytes(RL_MAX_BOUNCES), MemoryKind::HostVisible);
   keys = GpuBuffer(ctx, n * 4);
   values = GpuBuffer(ctx, n * 4);
-  live = GpuBuffer(ctx, RL_LIVE_WORDS * sizeof(uint32_t));
+  live = GpuBuffer(ctx, kLiveBlockBytes * (1 + RL_MAX_BOUNCES));
   frameBlock = GpuBuffer(ctx, sizeof(gpu::GpuFrame));
 }
 

@@ -31,11 +31,18 @@ struct PathBuffers {
   GpuBuffer counters;         // RL_COUNTER_* slots per bounce, cleared at the start of a frame
   GpuBuffer counterHistory;   // host-visible copy of `counters`, made once at the end of a frame
   GpuBuffer keys, values;     // sort input/output
-  GpuBuffer live;             // RL_LIVE_* slots: live-path count and indirect dispatch size
+  // RL_LIVE_* slots: the live-path count and indirect dispatch size, then one block per bounce that a
+  // compacting shade appends to (RL_LIVE_APPEND)
+  GpuBuffer live;
   GpuBuffer frameBlock;       // GpuFrame
 
   // Byte offset of the indirect dispatch arguments in `live` (trace and shade dispatch from there).
   static constexpr VkDeviceSize kLiveDispatchOffset = RL_LIVE_DISPATCH * sizeof(uint32_t);
+  static constexpr VkDeviceSize kLiveBlockBytes = RL_LIVE_WORDS * sizeof(uint32_t);
+  // Byte offset of the block the compacting shade of `bounce` appends to.
+  static constexpr VkDeviceSize liveAppendOffset(uint32_t bounce) {
+    return (RL_LIVE_APPEND + VkDeviceSize(bounce) * RL_LIVE_WORDS) * sizeof(uint32_t);
+  }
   // Bytes of counters for `bounces` bounces.
   static constexpr VkDeviceSize counterBytes(uint32_t bounces) {
     return VkDeviceSize(bounces) * RL_COUNTER_STRIDE * sizeof(uint32_t);

@@ -188,6 +188,12 @@ void PathTracer::recordFrameBlock(VkCommandBuffer cmd, uint32_t firstPath, uint3
   frame.seed = settings_.seed;
   frame.exposure = settings_.exposure;
   vkCmdUpdateBuffer(cmd, buffers_->frameBlock.handle(), 0, sizeof(frame), &frame);
+  if (settings_.compacts() && settings_.bounces > 1) {
+    // The blocks compacting shades append to start empty: no paths, zero groups of size (x, 1, 1).
+    std::vector<uint32_t> empty(RL_LIVE_WORDS * (settings_.bounces - 1), 0);
+    for (size_t b = 0; b < empty.size(); b += RL_LIVE_WORDS) empty[b + RL_LIVE_DISPATCH + 1] = empty[b + RL_LIVE_DISPATCH + 2] = 1;
+    vkCmdUpdateBuffer(cmd, buffers_->live.handle(), PathBuffers::liveAppendOffset(0), empty.size() * 4, empty.data());
+  }
   computeBarrier(cmd);
 }
 
@@ -212,6 +218,11 @@ void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush&
   heatmap_->afterMegakernel(cmd, *buffers_, &timer_);
 }
 
+const ComputePipeline& PathTracer::compactingShade() {
+  if (!compactingShade_) compactingShade_.emplace(ctx_, "shade", sizeof(gpu::PathStagePush), kGroup, std::vector<uint32_t>{static_cast<uint32_t>(KeyStrategy::None), 1u});
+  return *compactingShade_;
+}
+
 const ComputePipeline& PathTracer::gatheringTrace(bool counting) {
   std::optional<ComputePipeline>& p = gatheringTrace_[counting ? 1 : 0];
   if (!p) p.emplace(ctx_, "trace", sizeof(gpu::PathStagePush), kGroup, std::vector<uint32_t>{counting ? 1u : 0u, 1u});
@@ -224,9 +235,16 @@ const ComputePipeline& PathTracer::gatheringTrace(bool counting) {
 // (GpuFrame::live); a bounce that does not sort keeps the last sort's order and live count.
 // Settings::fusion folds the keys into shade and the reorder into the next trace: the stage times then
 // report them as part of "shade" and "trace", since they are no longer passes of their own.
+// Settings::compaction: a shade after the frame's last sort (and before the last bounce) packs the live
+// paths into the other state set and its own block of GpuFrame::live, which becomes the live block; the
+// copy is timed as part of "shade". Not earlier: the keys pass writes keys only for the live prefix and
+// relies on the last sort's dead keys behind it, which a compaction in between would leave stale.
 void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, PathRange slice) {
   const uint32_t n = slice.count;
   const bool sorting = settings_.sorts();
+  uint32_t firstCompacting = 0;  // bounces from here on compact (when Settings::compacts)
+  for (uint32_t b = 0; sorting && b + 1 < settings_.bounces; ++b)
+    if (framePlan_.sortAfter[b]) firstCompacting = b + 1;
   const ComputePipeline& trace = settings_.countSimt ? traceCounting_ : trace_;
   const VkBuffer live = buffers_->live.handle();
   const VkDeviceSize liveDispatch = PathBuffers::kLiveDispatchOffset;
@@ -251,12 +269,20 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, P
     heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, &timer_);
     const bool sortAfter = sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b];
     const bool keysInShade = sortAfter && settings_.fusesKeys();
+    const bool compacts = settings_.compacts() && b >= firstCompacting && b + 1 < settings_.bounces;
     recordStage(cmd, &timer_, "shade", [&] {
-      if (usesRt())
+      if (usesRt()) {
         rt_->shade(cmd, push, n);
-      else
+      } else if (compacts) {
+        compactingShade().dispatchIndirect(cmd, push, live, liveDispatch);
+        computeBarrier(cmd);
+        const VkBufferCopy packed{PathBuffers::liveAppendOffset(b), 0, PathBuffers::kLiveBlockBytes};
+        vkCmdCopyBuffer(cmd, live, live, 1, &packed);
+      } else {
         (keysInShade ? pathSorter_->shadeWithKeys() : shade_).dispatchIndirect(cmd, push, live, liveDispatch);
+      }
     });
+    if (compacts) push.stateSet = 1u - push.stateSet;
     if (sortAfter) {
       pathSorter_->recordKeys(cmd, *buffers_, slice, push.stateSet, b, keysInShade, detailedStats_, &timer_);
       heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, &timer_);

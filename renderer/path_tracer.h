@@ -71,6 +71,8 @@ class PathTracer {
   const FrameStats& stats() const { return stats_; }
   // The sort policy's model (stage times it learned) and the plan of the last recorded frame.
   const SortPolicyModel& sortPolicy() const { return sortPolicy_; }
+  // The same, to feed it a cost history (tests that need the auto policy's plan for a given history).
+  SortPolicyModel& sortPolicy() { return sortPolicy_; }
   const SortPlan& sortPlan() const { return framePlan_; }
   uint32_t accumulatedFrames() const { return frameIndex_; }
   uint32_t width() const { return settings_.width; }
@@ -117,6 +119,9 @@ class PathTracer {
   // trace.comp's gathering variants (Settings::fusesGather), plain and counting, built on first use.
   std::optional<ComputePipeline> gatheringTrace_[2];
   const ComputePipeline& gatheringTrace(bool counting);
+  // shade.comp's compacting variant (Settings::compaction), built on first use.
+  std::optional<ComputePipeline> compactingShade_;
+  const ComputePipeline& compactingShade();
   GpuTimer timer_;
   SortPolicyModel sortPolicy_;
   SortPlan framePlan_;  // which bounces the frame being recorded sorts after

@@ -30,6 +30,7 @@ const std::pair<HeatmapKeyColour, const char*> kKeyColourNames[] = {
 const std::pair<HeatmapScale, const char*> kScaleNames[] = {{HeatmapScale::Linear, "linear"}, {HeatmapScale::Log, "log"}};
 const std::pair<Fusion, const char*> kFusionNames[] = {
     {Fusion::None, "none"}, {Fusion::Keys, "keys"}, {Fusion::Gather, "gather"}, {Fusion::Both, "both"}};
+const std::pair<Compaction, const char*> kCompactionNames[] = {{Compaction::None, "none"}, {Compaction::Shade, "shade"}};
 const std::pair<SortPolicy, const char*> kPolicyNames[] = {
     {SortPolicy::Always, "always"}, {SortPolicy::Never, "never"}, {SortPolicy::Auto, "auto"}};
 const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},
@@ -90,6 +91,8 @@ std::string toString(SortPolicy p) { return nameOf(kPolicyNames, p); }
 std::optional<SortPolicy> parseSortPolicy(const std::string& n) { return parse(kPolicyNames, n); }
 std::string toString(Fusion f) { return nameOf(kFusionNames, f); }
 std::optional<Fusion> parseFusion(const std::string& n) { return parse(kFusionNames, n); }
+std::string toString(Compaction c) { return nameOf(kCompactionNames, c); }
+std::optional<Compaction> parseCompaction(const std::string& n) { return parse(kCompactionNames, n); }
 
 std::string keyStrategyNames() {
   std::string s;
@@ -121,7 +124,7 @@ SettingsChange SettingsChange::between(const Settings& p, const Settings& n) {
                     n.gaussReset != p.gaussReset;
   c.resetSortCosts = c.reallocate || c.resetAccumulation || c.resetCache || c.keyParameters || n.sort != p.sort ||
                      n.sortPolicy != p.sortPolicy || n.sortBits != p.sortBits || n.learnEvery != p.learnEvery ||
-                     n.fusion != p.fusion || n.kernel != p.kernel;
+                     n.fusion != p.fusion || n.compaction != p.compaction || n.kernel != p.kernel;
   return c;
 }
 

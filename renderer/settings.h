@@ -74,6 +74,12 @@ enum class SortPolicy { Always, Never, Auto };
 // slower by more than the keys pass cost on the hall and Sponza (shade +0.21 ms against keys 0.13 ms, fixed,
 // hall, 4 bounces) and paid only where few paths live (openings, 8 bounces: 2.39 -> 2.24 ms): opt-in.
 enum class Fusion { None, Keys, Gather, Both };
+// Compaction of finished paths in the compute wavefront's bounces that no sort follows: `shade` writes the
+// paths it keeps alive to a packed prefix of the other state set (one atomic per subgroup; shaders/shade.comp)
+// instead of in place, so later traces and shades visit only live paths in full warps. The sort does this
+// itself (dead keys last), so a frame compacts only after its last sorted bounce: every bounce when nothing
+// sorts. Same image bit for bit (a path's id, not its slot, picks its pixel and random numbers).
+enum class Compaction { None, Shade };
 
 const std::vector<KeyStrategy>& allKeyStrategies();
 std::string toString(KeyStrategy s);
@@ -91,6 +97,8 @@ std::string toString(SortPolicy p);
 std::optional<SortPolicy> parseSortPolicy(const std::string& name);
 std::string toString(Fusion f);
 std::optional<Fusion> parseFusion(const std::string& name);
+std::string toString(Compaction c);
+std::optional<Compaction> parseCompaction(const std::string& name);
 std::string keyStrategyNames();  // "none|dead-last|fixed|..."
 std::string toString(HeatmapView v);
 std::string toString(HeatmapKeyColour c);
@@ -152,6 +160,7 @@ struct Settings {
   // pass less. Coarser order, same image (the invariant); whether the trace still profits is the bench's call.
   uint32_t sortBits = 0;
   Fusion fusion = Fusion::Gather;
+  Compaction compaction = Compaction::None;
   GridSetting grid;
   bool clampToCamera = false;
   float clampDistance = 50.0f;
@@ -175,6 +184,8 @@ struct Settings {
   bool fusesKeys() const { return sorts() && tracer == Tracer::Compute && strategy != KeyStrategy::Oracle &&
                                   (fusion == Fusion::Keys || fusion == Fusion::Both); }
   bool fusesGather() const { return sorts() && tracer == Tracer::Compute && (fusion == Fusion::Gather || fusion == Fusion::Both); }
+  // Settings::compaction as this tracer applies it: only the compute wavefront compacts.
+  bool compacts() const { return compaction == Compaction::Shade && kernel == Kernel::Wavefront && tracer == Tracer::Compute; }
   bool sorts() const { return kernel == Kernel::Wavefront && strategy != KeyStrategy::None && sort != SortAlgorithm::None; }
   // SER runs only in the rt megakernel; elsewhere the setting is kept but does nothing.
   bool reordersInHardware() const { return tracer == Tracer::Rt && kernel == Kernel::Megakernel && ser != Ser::Off; }

@@ -28,6 +28,7 @@ json toJson(const Settings& s) {
       {"sort_policy", toString(s.sortPolicy)},
       {"sort_bits", s.sortBits},
       {"fusion", toString(s.fusion)},
+      {"compaction", toString(s.compaction)},
       {"grid", s.grid.automatic ? json("auto") : json::array({s.grid.cells.x, s.grid.cells.y, s.grid.cells.z})},
       {"grid_auto_cells", s.grid.autoCells},
       {"clamp_to_camera", s.clampToCamera},
@@ -102,6 +103,14 @@ Settings settingsFromJson(const json& j) {
       auto fusion = parseFusion(j.at("fusion").get<std::string>());
       if (!fusion) throw SettingsError("settings: 'fusion' must be none, keys, gather or both, got " + j.at("fusion").dump());
       s.fusion = *fusion;
+    }
+    // Older sidecars have no compaction: finished paths stayed in their slots.
+    s.compaction = Compaction::None;
+    if (j.contains("compaction")) {
+      auto compaction = parseCompaction(j.at("compaction").get<std::string>());
+      if (!compaction)
+        throw SettingsError("settings: 'compaction' must be none or shade, got " + j.at("compaction").dump());
+      s.compaction = *compaction;
     }
     const json& grid = need("grid");
     if (grid.is_string() && grid.get<std::string>() != "auto")

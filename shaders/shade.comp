@@ -5,9 +5,16 @@
 // With spec constant 1 set to a key strategy (Settings::fusion keys), shade also makes the sort key of the
 // ray it writes, as keys.comp would from the stored ray (the same bits: computeKey of the same floats), so
 // the separate keys pass and its 32-byte read of every ray go away.
+// With spec constant 2 (Settings::compaction shade) the paths that stay alive are compacted instead of
+// written in place: each subgroup counts its survivors (a ballot's prefix sum), takes that many slots of
+// the other state set with one atomic, and writes its paths there in lane order; finished paths are not
+// written at all. The next trace then visits only live paths, packed into full warps. Which warp gets which
+// slots depends on timing, but a path's id, never its slot, picks its pixel, random numbers and results
+// entry, so the image is the same bit for bit.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
+#extension GL_KHR_shader_subgroup_ballot : require
 #include "shared_types.h"
 #include "key_types.h"
 #include "path_shading.glsl"
@@ -15,6 +22,7 @@
 #include "keys.glsl"
 
 layout(constant_id = 1) const uint kKeyStrategy = RL_KEY_NONE;
+layout(constant_id = 2) const bool kCompact = false;
 
 // keys.comp's output for slot i: the key and the slot as the sort's payload; the predicted length.
 void storeKey(GpuFrame f, uint i, PathVars p, uint id, out float len) {
@@ -29,6 +37,24 @@ void storeKey(GpuFrame f, uint i, PathVars p, uint id, out float len) {
   env.seed = f.seed;
   f.sortKeys.v[i] = computeKey(kKeyStrategy, KeyParamsBuf(f.keyParams).p, env, path, p.alive ? 1u : 0u, len);
   f.sortValues.v[i] = i;
+}
+
+// Compaction: path `id` (alive or not) of this lane joins the live prefix of the other state set, in the
+// block of GpuFrame::live this bounce appends to (RL_LIVE_APPEND). Called by every lane that shaded a path.
+void appendPath(GpuFrame f, PathVars p, uint id) {
+  uvec4 survivors = subgroupBallot(p.alive);
+  uint n = subgroupBallotBitCount(survivors);
+  if (n == 0u) return;
+  uint block = RL_LIVE_APPEND + pc.bounce * RL_LIVE_WORDS;
+  uint base = 0u;
+  if (subgroupElect()) {
+    base = atomicAdd(f.live.v[block + RL_LIVE_COUNT], n);
+    // The last subgroup to append does not know it is last: every one raises the group count to cover its
+    // own slots, so the largest (the final one) wins.
+    atomicMax(f.live.v[block + RL_LIVE_DISPATCH], (base + n + RL_PATH_GROUP_SIZE - 1u) / RL_PATH_GROUP_SIZE);
+  }
+  base = subgroupBroadcastFirst(base);
+  if (p.alive) storePath(f.state[1u - pc.stateSet], base + subgroupBallotExclusiveBitCount(survivors), p, id);
 }
 
 void main() {
@@ -46,10 +72,16 @@ void main() {
   uint id;
   PathVars p = loadPath(s, i, id);
   HitRecord hit = loadHit(f.hits, i);
+  // Slot i may lie behind the next live prefix, which the next trace does not visit: no stale steps there
+  // for the warp statistics (as markSlotEmpty after a sort).
+  if (kCompact) f.hits.steps.v[i] = 0u;
   uint rng = rngSeed(id, f.frameIndex, pc.bounce, f.seed, RL_RNG_SHADE);
   shadePath(f.scene, p, hit, pc.bounce, f.bounceCount, rng);
   pathAddRadiance(f.results, id, pc.bounce, p.radiance);
   float len = -1.0;
   if (kKeyStrategy != RL_KEY_NONE) storeKey(f, i, p, id, len);
-  storePath(s, i, p, id, len);
+  if (kCompact)
+    appendPath(f, p, id);
+  else
+    storePath(s, i, p, id, len);
 }

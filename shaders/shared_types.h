@@ -43,11 +43,16 @@ using uint = uint32_t;
 #define RL_MAX_BOUNCES 32u
 
 // GpuFrame::live: the live-path count and the indirect dispatch size for RL_PATH_GROUP_SIZE groups.
-// Written by generate.comp (all paths) and gather_path_state.comp (after a sort); trace and shade dispatch
-// indirectly from RL_LIVE_DISPATCH.
+// Written by generate.comp (all paths), by the reorder after a sort (reorder_slot.glsl) and, with
+// compaction, copied from the block shade appended to; trace and shade dispatch indirectly from
+// RL_LIVE_DISPATCH.
 #define RL_LIVE_COUNT 0u     // paths a stage must visit; paths at or past it count as finished
 #define RL_LIVE_DISPATCH 1u  // [1..3]: group counts x, y, z for vkCmdDispatchIndirect
 #define RL_LIVE_WORDS 4u
+// Compaction (Settings::compaction): shade of bounce b appends the paths it keeps alive to block b + 1 of
+// the same buffer (RL_LIVE_WORDS words each, reset to no paths at every slice's start); the host copies
+// that block over block 0 before the next trace. So `live` holds 1 + RL_MAX_BOUNCES blocks.
+#define RL_LIVE_APPEND RL_LIVE_WORDS
 
 // Random-number streams (rng.glsl's rngSeed): independent uses within one bounce of one path.
 #define RL_RNG_SHADE 0u   // BSDF and light sampling (shade, megakernel)

@@ -47,6 +47,11 @@ void drawSortSection(Settings& s, const ViewOptions& view) {
     ImGui::SetTooltip("keys: made in shade; gather: the reorder done by the next trace (compute wavefront only)");
   if (s.fusion != Fusion::None && s.sorts() && !s.fusesKeys() && !s.fusesGather())
     ImGui::TextDisabled("fusion: the rt tracer keeps separate passes");
+  comboEnum("compaction", s.compaction, {Compaction::None, Compaction::Shade});
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("shade packs the live paths at the front after the frame's last sort (compute wavefront only)");
+  if (s.compaction != Compaction::None && !s.compacts())
+    ImGui::TextDisabled("compaction: only the compute wavefront compacts");
   comboEnum("kernel", s.kernel, {Kernel::Wavefront, Kernel::Megakernel});
   if (s.kernel == Kernel::Megakernel) ImGui::TextDisabled("the megakernel never sorts");
   // The rt tracer and SER need extensions the device may lack: greyed out with the reason.

@@ -40,7 +40,10 @@ MethodKey methodKeyOf(const Settings& s) {
     if (k.ser == Ser::Hint) k.strategy = s.strategy;  // the hint is the strategy's key
     return k;
   }
-  if (!s.sorts() || s.sortPolicy == SortPolicy::Never) {
+  const bool unsorted = !s.sorts() || s.sortPolicy == SortPolicy::Never;
+  // With the always policy every bounce but the last sorts, and the last has no next trace to compact for.
+  if (s.compacts() && (unsorted || s.sortPolicy != SortPolicy::Always)) k.compaction = s.compaction;
+  if (unsorted) {
     k.baseline = Baseline::Unsorted;
     return k;
   }
@@ -66,7 +69,8 @@ MethodKey methodKeyOf(const Settings& s) {
 
 std::string describe(const MethodKey& k) {
   std::string tracer = k.tracer == Tracer::Rt ? " rt" : "";
-  if (k.baseline == Baseline::Unsorted) return "unsorted" + tracer;
+  const std::string compacted = k.compaction != Compaction::None ? " compacted" : "";
+  if (k.baseline == Baseline::Unsorted) return "unsorted" + tracer + compacted;
   if (k.baseline == Baseline::Megakernel) {
     std::string text = "megakernel" + tracer;
     if (k.ser != Ser::Off) text += " ser-" + toString(k.ser);
@@ -88,6 +92,7 @@ std::string describe(const MethodKey& k) {
   if (k.sortBits != 0) text += " | bits " + std::to_string(k.sortBits);
   if (k.learnEvery > 1) text += " | learn 1/" + std::to_string(k.learnEvery);
   if (k.fusion != Settings{}.fusion) text += " | fused " + toString(k.fusion);
+  if (!compacted.empty()) text += " |" + compacted;
   return text;
 }
 

@@ -39,6 +39,13 @@ TEST(SettingsValidation, DefaultsAndTheirJsonAreValid) {
   nlohmann::json old = toJson(Settings{});
   old.erase("fusion");
   EXPECT_EQ(settingsFromJson(old).fusion, Fusion::None);
+  // ... and before Settings::compaction left finished paths in their slots.
+  old = toJson(Settings{});
+  old.erase("compaction");
+  EXPECT_EQ(settingsFromJson(old).compaction, Compaction::None);
+  Settings packed;
+  packed.compaction = Compaction::Shade;
+  EXPECT_EQ(settingsFromJson(toJson(packed)), packed);
 }
 
 TEST(SettingsValidation, HostileSidecarValuesAreRefusedLikeTheCommandLine) {
@@ -55,6 +62,7 @@ TEST(SettingsValidation, HostileSidecarValuesAreRefusedLikeTheCommandLine) {
   EXPECT_EQ(jsonError("heatmap_bounce", 99), "--heatmap-bounce must be between 0 and 31, got 99");
   EXPECT_NE(jsonError("width", "wide").find("'width' must be a number"), std::string::npos);
   EXPECT_EQ(jsonError("fusion", "sideways"), "settings: 'fusion' must be none, keys, gather or both, got \"sideways\"");
+  EXPECT_EQ(jsonError("compaction", "always"), "settings: 'compaction' must be none or shade, got \"always\"");
   // The same ranges on the command line, same words.
   EXPECT_EQ(cliError({"--spp", "100000"}), jsonError("spp_per_frame", 100000));
   EXPECT_EQ(cliError({"--ema-alpha", "-3"}), jsonError("ema_alpha", -3));

@@ -263,5 +263,23 @@ TEST(BaselineRun, CancelRestoresAtOnce) {
   EXPECT_EQ(settings.kernel, Kernel::Wavefront);
 }
 
+// Compaction is a method of its own where a bounce can compact: unsorted, or sorted under a policy that may
+// leave bounces unsorted; under the always policy no bounce compacts, so the point stays the same.
+TEST(SpeedAccuracyBook, CompactionIsAMethodWhereABounceCanCompact) {
+  auto key = [](Settings s, bool compact) {
+    if (compact) s.compaction = Compaction::Shade;
+    return methodKeyOf(s);
+  };
+  Settings unsorted, autoPolicy = sorted(KeyStrategy::TwoPoint), always = sorted(KeyStrategy::TwoPoint);
+  autoPolicy.sortPolicy = SortPolicy::Auto;
+  EXPECT_NE(describe(key(unsorted, true)), describe(key(unsorted, false)));
+  EXPECT_EQ(describe(key(unsorted, true)), "unsorted compacted");
+  EXPECT_NE(describe(key(autoPolicy, true)), describe(key(autoPolicy, false)));
+  EXPECT_EQ(key(always, true), key(always, false));
+  Settings mega = unsorted;
+  mega.kernel = Kernel::Megakernel;
+  EXPECT_EQ(key(mega, true), key(mega, false));
+}
+
 }  // namespace
 }  // namespace raylab

@@ -48,6 +48,21 @@ for r in rows:
 print('ok: fusions', sorted(r['fusion'] for r in rows))
 PY
 
+# The compaction axis: the unsorted baseline and the auto-policy cells once each way, the CSV's compaction
+# column, and the same image in each.
+RAYLAB_VALIDATE=1 "$raylab" bench --cases temple@openings --strategies fixed --sort-policies auto \
+  --compactions none,shade --size 24x16 --bounces 3 --timed-frames 1 --warmup 0 --reference-spp 1 --no-detail \
+  --out-dir "$dir/compaction" > "$dir/compaction.log" 2>&1 || { cat "$dir/compaction.log"; exit 1; }
+python3 - "$dir/compaction" <<'PY'
+import csv, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1] + '/results.csv')) if r['kernel'] == 'wavefront']
+got = sorted((r['strategy'], r['compaction']) for r in rows)
+assert got == [('fixed', 'none'), ('fixed', 'shade'), ('none', 'none'), ('none', 'shade')], got
+assert len({r['final_rel_mse'] for r in rows}) == 1, [r['final_rel_mse'] for r in rows]
+assert any(r['label'] == 'none compaction=shade' for r in rows), [r['label'] for r in rows]
+print('ok: compactions', got)
+PY
+
 RAYLAB_VALIDATE=1 "$raylab" bench --scale-tris 1e4,2e4 --bounces 1,2 --strategies two-point --size 16x8 \
   --timed-frames 1 --warmup 0 --reference-spp 1 --no-detail --out-dir "$dir/scale" > "$dir/scale.log" 2>&1 ||
   { cat "$dir/scale.log"; exit 1; }

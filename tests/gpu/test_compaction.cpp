@@ -1,0 +1,119 @@
+// Settings::compaction: a shade that packs the paths it keeps alive at the front of the other state set (one
+// atomic per subgroup, so the slot order depends on timing) renders the image of the same tracer without it
+// bit for bit, traces the same rays, and leaves no stale traversal steps behind the live prefix; a frame
+// whose plan sorts some bounces compacts only after its last sort.
+#include <algorithm>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tests/gpu_test.h"
+#include "tests/render_helpers.h"
+#include "scenes/procedural.h"
+
+namespace raylab::test {
+namespace {
+
+class Compaction : public GpuTest {};
+
+// On the open view, where most paths finish early, over two frames: the unsorted wavefront, every strategy
+// under the always policy (which leaves no bounce to compact: still the same image) and the auto policy
+// (frame 0 explores sorted, frame 1 unsorted: every bounce compacts), both sorts, both gathers.
+TEST_F(Compaction, EveryVariantRendersTheUncompactedImage) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("openings");
+  Settings base = smallFrame(33, 17, 5);
+  base.frames = 2;
+  const std::vector<glm::vec3> unsorted = renderRadiance(ctx(), scene, base, view);
+  ASSERT_GT(moments(unsorted).mean, 0.0);
+  Settings packed = base;
+  packed.compaction = raylab::Compaction::Shade;
+  expectSameImage(renderRadiance(ctx(), scene, packed, view), unsorted, "unsorted, compacted,");
+  for (KeyStrategy strategy : allKeyStrategies()) {
+    if (strategy == KeyStrategy::None) continue;
+    for (SortAlgorithm sort : {SortAlgorithm::Radix, SortAlgorithm::Bitonic})
+      for (SortPolicy policy : {SortPolicy::Always, SortPolicy::Auto}) {
+        Settings s = packed;
+        s.strategy = strategy;
+        s.sort = sort;
+        s.sortPolicy = policy;
+        s.fusion = sort == SortAlgorithm::Radix ? Fusion::Gather : Fusion::None;
+        expectSameImage(renderRadiance(ctx(), scene, s, view), unsorted,
+                        toString(strategy) + " " + toString(sort) + " " + toString(policy) + " compacted");
+      }
+  }
+}
+
+// Per bounce: the same rays traced, the same traversal steps in total (slots behind the packed prefix hold
+// no steps of rays traced bounces ago), and fuller warps: past the first bounce the live rays fill whole
+// warps instead of sharing them with finished paths.
+TEST_F(Compaction, TracesTheSameRaysInFullerWarps) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("openings");
+  auto render = [&](raylab::Compaction compaction) {
+    Settings s = smallFrame(64, 32, 4);
+    s.compaction = compaction;
+    PathTracer tracer(ctx(), scene, s, view);
+    tracer.setDetailedStats(true);
+    return tracer.renderFrame();
+  };
+  const FrameStats plain = render(raylab::Compaction::None);
+  const FrameStats packed = render(raylab::Compaction::Shade);
+  ASSERT_EQ(plain.bounces.size(), 4u);
+  ASSERT_EQ(packed.bounces.size(), 4u);
+  // The open view: fewer than half the paths are still live at bounce 1 (else nothing is compacted).
+  ASSERT_LT(plain.bounces[1].rays * 2, plain.bounces[0].rays);
+  for (size_t b = 0; b < 4; ++b) {
+    EXPECT_EQ(packed.bounces[b].rays, plain.bounces[b].rays) << "bounce " << b;
+    EXPECT_EQ(packed.bounces[b].meanTraversalSteps, plain.bounces[b].meanTraversalSteps) << "bounce " << b;
+  }
+  for (size_t b = 1; b < 4; ++b)
+    EXPECT_GT(packed.bounces[b].virtualWarpEfficiency, plain.bounces[b].virtualWarpEfficiency) << "bounce " << b;
+}
+
+// A plan that sorts after bounce 0 only (the auto policy fed a cost history in which only that sort pays):
+// the keys pass runs once, the bounces after it compact, and the image is the unsorted one.
+TEST_F(Compaction, CompactsOnlyAfterTheFramesLastSort) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("openings");
+  Settings s = smallFrame(33, 17, 4);
+  const std::vector<glm::vec3> unsorted = renderRadiance(ctx(), scene, s, view);
+  s.strategy = KeyStrategy::Fixed;
+  s.sortPolicy = SortPolicy::Auto;
+  s.compaction = raylab::Compaction::Shade;
+  for (Fusion fusion : {Fusion::None, Fusion::Gather}) {
+    s.fusion = fusion;
+    PathTracer tracer(ctx(), scene, s, view);
+    // Explore frames: sorting after bounce 0 makes bounce 1 free and costs nothing; after bounces 1 and 2
+    // it saves nothing and costs 100 ms.
+    SortPlan all{{true, true, true, false}, {}}, none{{false, false, false, false}, {}};
+    tracer.sortPolicy().record(all, {{"keys", 1, 100.0}, {"keys", 2, 100.0}});
+    tracer.sortPolicy().record(none, {{"trace", 1, 10.0}});
+    const FrameStats stats = tracer.renderFrame();
+    ASSERT_EQ(tracer.sortPlan().sortAfter, (std::vector<bool>{true, false, false, false})) << toString(fusion);
+    const int keysPasses = static_cast<int>(std::count_if(stats.stages.begin(), stats.stages.end(),
+                                                          [](const StageTime& t) { return t.stage == "keys"; }));
+    EXPECT_EQ(keysPasses, 1) << toString(fusion);
+    expectSameImage(tracer.readRadiance(), unsorted, "fixed, sorted after bounce 0, then compacted, " + toString(fusion));
+  }
+}
+
+// The window renders in slices: each slice compacts its own slots.
+TEST_F(Compaction, SlicedCompactedFramesRenderTheWholeFrameImage) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("openings");
+  Settings s = smallFrame(37, 19, 4);
+  s.compaction = raylab::Compaction::Shade;
+  const std::vector<glm::vec3> whole = renderRadiance(ctx(), scene, s, view);
+  PathTracer parts(ctx(), scene, s, view);
+  uint32_t slices = 0;
+  for (const FrameStats* done = nullptr; !done; ++slices) {
+    ctx().submitAndWait([&](VkCommandBuffer cmd) { parts.recordSlice(cmd, 97 + 64 * slices); });
+    done = parts.finishSlice(1.0);
+  }
+  EXPECT_GT(slices, 2u);
+  expectSameImage(parts.readRadiance(), whole, "compacted, in slices,");
+}
+
+}  // namespace
+}  // namespace raylab::test
