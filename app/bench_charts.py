@@ -167,9 +167,9 @@ def tracers(rows, title, path):
 
 
 def is_baseline(row):
-    # The unsorted wavefront as it was before compaction existed (CSVs without the column are that too); a
-    # compacting unsorted cell is a method of its own, charted against it.
-    return row["kernel"] == "wavefront" and row["strategy"] == "none" and row.get("compaction", "none") == "none"
+    # The bench's own unsorted cell ("none", "rt none"), with the run's compaction; the unsorted wavefront with
+    # another compaction (--compactions) is a method of its own ("none compaction=...").
+    return row["kernel"] == "wavefront" and row["strategy"] == "none" and row["label"] in ("none", "rt none")
 
 
 def frame_ratios(rows):

@@ -48,7 +48,7 @@ struct Axes {
   std::vector<std::string> policies{"always"};
   std::vector<std::string> sortBits{};    // --sort-bits-list: empty keeps the render flag's (all bits)
   std::vector<std::string> fusions{};     // --fusions: empty keeps the render flag's (gather)
-  std::vector<std::string> compactions{}; // --compactions: empty keeps the render flag's (none)
+  std::vector<std::string> compactions{}; // --compactions: empty keeps the render flag's (shade)
   std::vector<std::string> learnEvery{};  // --learn-every-list: strategies with a length cache only
   std::vector<std::string> bounces{};     // --bounces with a list: one group of cells per count
   std::vector<std::string> scaleTris{};   // --scale-tris: the sizes of every bare temple-detail case

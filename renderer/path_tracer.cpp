@@ -235,16 +235,14 @@ const ComputePipeline& PathTracer::gatheringTrace(bool counting) {
 // (GpuFrame::live); a bounce that does not sort keeps the last sort's order and live count.
 // Settings::fusion folds the keys into shade and the reorder into the next trace: the stage times then
 // report them as part of "shade" and "trace", since they are no longer passes of their own.
-// Settings::compaction: a shade after the frame's last sort (and before the last bounce) packs the live
-// paths into the other state set and its own block of GpuFrame::live, which becomes the live block; the
-// copy is timed as part of "shade". Not earlier: the keys pass writes keys only for the live prefix and
-// relies on the last sort's dead keys behind it, which a compaction in between would leave stale.
+// Settings::compaction: every shade but the last bounce's packs the live paths into the other state set and
+// its own block of GpuFrame::live, which becomes the live block (the copy is timed as part of "shade"), and
+// gives the slots it visited the dead key, so keys, sort and reorder after it see a live prefix with dead
+// keys behind it as after a sort. Not where shade makes the keys (Settings::fusion keys): a path's key would
+// have to go to its new slot, which another subgroup may be marking dead.
 void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, PathRange slice) {
   const uint32_t n = slice.count;
   const bool sorting = settings_.sorts();
-  uint32_t firstCompacting = 0;  // bounces from here on compact (when Settings::compacts)
-  for (uint32_t b = 0; sorting && b + 1 < settings_.bounces; ++b)
-    if (framePlan_.sortAfter[b]) firstCompacting = b + 1;
   const ComputePipeline& trace = settings_.countSimt ? traceCounting_ : trace_;
   const VkBuffer live = buffers_->live.handle();
   const VkDeviceSize liveDispatch = PathBuffers::kLiveDispatchOffset;
@@ -269,7 +267,7 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, P
     heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, &timer_);
     const bool sortAfter = sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b];
     const bool keysInShade = sortAfter && settings_.fusesKeys();
-    const bool compacts = settings_.compacts() && b >= firstCompacting && b + 1 < settings_.bounces;
+    const bool compacts = settings_.compacts() && !keysInShade && b + 1 < settings_.bounces;
     recordStage(cmd, &timer_, "shade", [&] {
       if (usesRt()) {
         rt_->shade(cmd, push, n);

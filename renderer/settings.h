@@ -74,11 +74,11 @@ enum class SortPolicy { Always, Never, Auto };
 // slower by more than the keys pass cost on the hall and Sponza (shade +0.21 ms against keys 0.13 ms, fixed,
 // hall, 4 bounces) and paid only where few paths live (openings, 8 bounces: 2.39 -> 2.24 ms): opt-in.
 enum class Fusion { None, Keys, Gather, Both };
-// Compaction of finished paths in the compute wavefront's bounces that no sort follows: `shade` writes the
-// paths it keeps alive to a packed prefix of the other state set (one atomic per subgroup; shaders/shade.comp)
-// instead of in place, so later traces and shades visit only live paths in full warps. The sort does this
-// itself (dead keys last), so a frame compacts only after its last sorted bounce: every bounce when nothing
-// sorts. Same image bit for bit (a path's id, not its slot, picks its pixel and random numbers).
+// Compaction of finished paths in the compute wavefront: `shade` writes the paths it keeps alive to a packed
+// prefix of the other state set (one atomic per subgroup; shaders/shade.comp) instead of in place, so later
+// stages (trace, shade, and keys, sort and reorder where a sort follows) visit only live paths, in full
+// warps. Every bounce but the last, sorted or not, except where shade makes the keys (Fusion::Keys). Same
+// image bit for bit (a path's id, not its slot, picks its pixel and random numbers).
 enum class Compaction { None, Shade };
 
 const std::vector<KeyStrategy>& allKeyStrategies();
@@ -160,7 +160,7 @@ struct Settings {
   // pass less. Coarser order, same image (the invariant); whether the trace still profits is the bench's call.
   uint32_t sortBits = 0;
   Fusion fusion = Fusion::Gather;
-  Compaction compaction = Compaction::None;
+  Compaction compaction = Compaction::Shade;
   GridSetting grid;
   bool clampToCamera = false;
   float clampDistance = 50.0f;

@@ -10,11 +10,14 @@
 // the other state set with one atomic, and writes its paths there in lane order; finished paths are not
 // written at all. The next trace then visits only live paths, packed into full warps. Which warp gets which
 // slots depends on timing, but a path's id, never its slot, picks its pixel, random numbers and results
-// entry, so the image is the same bit for bit.
+// entry, so the image is the same bit for bit. When the frame sorts, every slot it visits also gets the dead
+// key: the keys pass then writes keys for the new, shorter live prefix only, and the sort and reorder rely
+// on dead keys behind it (the last sort's would be stale).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #include "shared_types.h"
 #include "key_types.h"
 #include "path_shading.glsl"
@@ -61,6 +64,10 @@ void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   uint i = gl_GlobalInvocationID.x;
   if (i >= f.live.v[RL_LIVE_COUNT]) return;
+  if (kCompact && uint64_t(f.keyParams) != 0ul) {  // key parameters are set only when the frame sorts
+    f.sortKeys.v[i] = RL_DEAD_KEY;
+    f.sortValues.v[i] = i;
+  }
   GpuPathState s = f.state[pc.stateSet];
   if (!pathAlive(s, i)) {  // one 16-byte load; loadPath reads the same element again
     if (kKeyStrategy != RL_KEY_NONE) {

@@ -49,7 +49,7 @@ void drawSortSection(Settings& s, const ViewOptions& view) {
     ImGui::TextDisabled("fusion: the rt tracer keeps separate passes");
   comboEnum("compaction", s.compaction, {Compaction::None, Compaction::Shade});
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("shade packs the live paths at the front after the frame's last sort (compute wavefront only)");
+    ImGui::SetTooltip("shade packs the live paths at the front, so later stages visit only live paths (compute wavefront only)");
   if (s.compaction != Compaction::None && !s.compacts())
     ImGui::TextDisabled("compaction: only the compute wavefront compacts");
   comboEnum("kernel", s.kernel, {Kernel::Wavefront, Kernel::Megakernel});

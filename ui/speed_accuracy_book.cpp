@@ -40,10 +40,8 @@ MethodKey methodKeyOf(const Settings& s) {
     if (k.ser == Ser::Hint) k.strategy = s.strategy;  // the hint is the strategy's key
     return k;
   }
-  const bool unsorted = !s.sorts() || s.sortPolicy == SortPolicy::Never;
-  // With the always policy every bounce but the last sorts, and the last has no next trace to compact for.
-  if (s.compacts() && (unsorted || s.sortPolicy != SortPolicy::Always)) k.compaction = s.compaction;
-  if (unsorted) {
+  if (s.tracer == Tracer::Compute) k.compaction = s.compaction;  // elsewhere it does nothing
+  if (!s.sorts() || s.sortPolicy == SortPolicy::Never) {
     k.baseline = Baseline::Unsorted;
     return k;
   }
@@ -69,8 +67,8 @@ MethodKey methodKeyOf(const Settings& s) {
 
 std::string describe(const MethodKey& k) {
   std::string tracer = k.tracer == Tracer::Rt ? " rt" : "";
-  const std::string compacted = k.compaction != Compaction::None ? " compacted" : "";
-  if (k.baseline == Baseline::Unsorted) return "unsorted" + tracer + compacted;
+  const std::string compaction = k.compaction != Settings{}.compaction ? " compaction " + toString(k.compaction) : "";
+  if (k.baseline == Baseline::Unsorted) return "unsorted" + tracer + compaction;
   if (k.baseline == Baseline::Megakernel) {
     std::string text = "megakernel" + tracer;
     if (k.ser != Ser::Off) text += " ser-" + toString(k.ser);
@@ -92,7 +90,7 @@ std::string describe(const MethodKey& k) {
   if (k.sortBits != 0) text += " | bits " + std::to_string(k.sortBits);
   if (k.learnEvery > 1) text += " | learn 1/" + std::to_string(k.learnEvery);
   if (k.fusion != Settings{}.fusion) text += " | fused " + toString(k.fusion);
-  if (!compacted.empty()) text += " |" + compacted;
+  if (!compaction.empty()) text += " |" + compaction;
   return text;
 }
 

@@ -38,8 +38,8 @@ struct MethodKey {
   uint32_t sortBits = 0;    // Settings::sortBits (0: all)
   uint32_t learnEvery = 0;  // Settings::learnEvery of a length-cache strategy; 0 without a cache
   Fusion fusion = Settings{}.fusion;  // Settings::fusion where the tracer applies it (the default elsewhere)
-  // Settings::compaction where a bounce can compact (the compute wavefront, unless every bounce sorts).
-  Compaction compaction = Compaction::None;
+  // Settings::compaction where the tracer applies it (the compute wavefront; the default elsewhere).
+  Compaction compaction = Settings{}.compaction;
   bool operator==(const MethodKey&) const = default;
 };
 

@@ -49,7 +49,7 @@ const std::vector<Case>& cases() {
       {"sortBits", [](Settings& s) { s.sortBits = 8; }, wants(false, false, false, false)},
       {"learnEvery", [](Settings& s) { s.learnEvery = 4; }, wants(false, false, false, false)},
       {"fusion", [](Settings& s) { s.fusion = Fusion::Both; }, wants(false, false, false, false)},
-      {"compaction", [](Settings& s) { s.compaction = Compaction::Shade; }, wants(false, false, false, false)},
+      {"compaction", [](Settings& s) { s.compaction = Compaction::None; }, wants(false, false, false, false)},
       {"grid", [](Settings& s) { s.grid.autoCells = 32; }, wants(false, false, true, true)},
       {"clampToCamera", [](Settings& s) { s.clampToCamera = true; }, wants(false, false, true, true)},
       {"clampDistance", [](Settings& s) { s.clampDistance = 5.0f; }, wants(false, false, true, true)},

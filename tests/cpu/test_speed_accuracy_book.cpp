@@ -263,22 +263,20 @@ TEST(BaselineRun, CancelRestoresAtOnce) {
   EXPECT_EQ(settings.kernel, Kernel::Wavefront);
 }
 
-// Compaction is a method of its own where a bounce can compact: unsorted, or sorted under a policy that may
-// leave bounces unsorted; under the always policy no bounce compacts, so the point stays the same.
-TEST(SpeedAccuracyBook, CompactionIsAMethodWhereABounceCanCompact) {
-  auto key = [](Settings s, bool compact) {
-    if (compact) s.compaction = Compaction::Shade;
+// Compaction is a method of its own where the tracer compacts (the compute wavefront, sorted or not); the
+// megakernel has nothing to compact, so its point stays the same.
+TEST(SpeedAccuracyBook, CompactionIsAMethodWhereTheTracerCompacts) {
+  auto key = [](Settings s, Compaction compaction) {
+    s.compaction = compaction;
     return methodKeyOf(s);
   };
-  Settings unsorted, autoPolicy = sorted(KeyStrategy::TwoPoint), always = sorted(KeyStrategy::TwoPoint);
-  autoPolicy.sortPolicy = SortPolicy::Auto;
-  EXPECT_NE(describe(key(unsorted, true)), describe(key(unsorted, false)));
-  EXPECT_EQ(describe(key(unsorted, true)), "unsorted compacted");
-  EXPECT_NE(describe(key(autoPolicy, true)), describe(key(autoPolicy, false)));
-  EXPECT_EQ(key(always, true), key(always, false));
+  Settings unsorted, sortedAlways = sorted(KeyStrategy::TwoPoint);
+  EXPECT_EQ(describe(key(unsorted, Compaction::Shade)), "unsorted");  // the default
+  EXPECT_EQ(describe(key(unsorted, Compaction::None)), "unsorted compaction none");
+  EXPECT_NE(describe(key(sortedAlways, Compaction::Shade)), describe(key(sortedAlways, Compaction::None)));
   Settings mega = unsorted;
   mega.kernel = Kernel::Megakernel;
-  EXPECT_EQ(key(mega, true), key(mega, false));
+  EXPECT_EQ(key(mega, Compaction::Shade), key(mega, Compaction::None));
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // Settings::compaction: a shade that packs the paths it keeps alive at the front of the other state set (one
 // atomic per subgroup, so the slot order depends on timing) renders the image of the same tracer without it
-// bit for bit, traces the same rays, and leaves no stale traversal steps behind the live prefix; a frame
-// whose plan sorts some bounces compacts only after its last sort.
+// bit for bit, traces the same rays, and leaves no stale traversal steps behind the live prefix, also where
+// sorted and compacted bounces alternate.
 #include <algorithm>
 #include <string>
 
@@ -17,13 +17,14 @@ namespace {
 class Compaction : public GpuTest {};
 
 // On the open view, where most paths finish early, over two frames: the unsorted wavefront, every strategy
-// under the always policy (which leaves no bounce to compact: still the same image) and the auto policy
-// (frame 0 explores sorted, frame 1 unsorted: every bounce compacts), both sorts, both gathers.
+// under the always policy (every shade compacts before keys, sort and reorder) and the auto policy (frame 0
+// explores sorted, frame 1 unsorted), both sorts, both reorders.
 TEST_F(Compaction, EveryVariantRendersTheUncompactedImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("openings");
   Settings base = smallFrame(33, 17, 5);
   base.frames = 2;
+  base.compaction = raylab::Compaction::None;
   const std::vector<glm::vec3> unsorted = renderRadiance(ctx(), scene, base, view);
   ASSERT_GT(moments(unsorted).mean, 0.0);
   Settings packed = base;
@@ -71,30 +72,44 @@ TEST_F(Compaction, TracesTheSameRaysInFullerWarps) {
     EXPECT_GT(packed.bounces[b].virtualWarpEfficiency, plain.bounces[b].virtualWarpEfficiency) << "bounce " << b;
 }
 
-// A plan that sorts after bounce 0 only (the auto policy fed a cost history in which only that sort pays):
-// the keys pass runs once, the bounces after it compact, and the image is the unsorted one.
-TEST_F(Compaction, CompactsOnlyAfterTheFramesLastSort) {
+// Plans that mix sorted and compacted bounces (the auto policy fed a cost history in which only one sort
+// pays): sorting after bounce 0 only (compactions follow the sort), and after bounce 1 only (a compaction
+// comes first, and the keys, sort and reorder see its live prefix). The keys pass runs once, the image is
+// the unsorted one, for every sort and both reorders.
+TEST_F(Compaction, SortsBeforeAndAfterCompactions) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("openings");
   Settings s = smallFrame(33, 17, 4);
+  s.compaction = raylab::Compaction::None;
   const std::vector<glm::vec3> unsorted = renderRadiance(ctx(), scene, s, view);
   s.strategy = KeyStrategy::Fixed;
   s.sortPolicy = SortPolicy::Auto;
   s.compaction = raylab::Compaction::Shade;
-  for (Fusion fusion : {Fusion::None, Fusion::Gather}) {
-    s.fusion = fusion;
-    PathTracer tracer(ctx(), scene, s, view);
-    // Explore frames: sorting after bounce 0 makes bounce 1 free and costs nothing; after bounces 1 and 2
-    // it saves nothing and costs 100 ms.
-    SortPlan all{{true, true, true, false}, {}}, none{{false, false, false, false}, {}};
-    tracer.sortPolicy().record(all, {{"keys", 1, 100.0}, {"keys", 2, 100.0}});
-    tracer.sortPolicy().record(none, {{"trace", 1, 10.0}});
-    const FrameStats stats = tracer.renderFrame();
-    ASSERT_EQ(tracer.sortPlan().sortAfter, (std::vector<bool>{true, false, false, false})) << toString(fusion);
-    const int keysPasses = static_cast<int>(std::count_if(stats.stages.begin(), stats.stages.end(),
-                                                          [](const StageTime& t) { return t.stage == "keys"; }));
-    EXPECT_EQ(keysPasses, 1) << toString(fusion);
-    expectSameImage(tracer.readRadiance(), unsorted, "fixed, sorted after bounce 0, then compacted, " + toString(fusion));
+  const SortPlan all{{true, true, true, false}, {}}, none{{false, false, false, false}, {}};
+  for (uint32_t paying : {0u, 1u}) {
+    // Explore frames: sorting after bounce `paying` makes the next bounce free and costs nothing; after
+    // any other it saves nothing and costs 100 ms.
+    std::vector<StageTime> sorted, plain{{"trace", int(paying) + 1, 10.0}};
+    for (int b = 0; b < 3; ++b)
+      if (uint32_t(b) != paying) sorted.push_back({"keys", b, 100.0});
+    std::vector<bool> want(4, false);
+    want[paying] = true;
+    for (SortAlgorithm sort : {SortAlgorithm::Radix, SortAlgorithm::Bitonic})
+      for (Fusion fusion : {Fusion::None, Fusion::Gather}) {
+        s.sort = sort;
+        s.fusion = fusion;
+        const std::string what = "fixed " + toString(sort) + ", sorted after bounce " + std::to_string(paying) +
+                                 " only, fused " + toString(fusion);
+        PathTracer tracer(ctx(), scene, s, view);
+        tracer.sortPolicy().record(all, sorted);
+        tracer.sortPolicy().record(none, plain);
+        const FrameStats stats = tracer.renderFrame();
+        ASSERT_EQ(tracer.sortPlan().sortAfter, want) << what;
+        const auto keysPasses = std::count_if(stats.stages.begin(), stats.stages.end(),
+                                              [](const StageTime& t) { return t.stage == "keys"; });
+        EXPECT_EQ(keysPasses, 1) << what;
+        expectSameImage(tracer.readRadiance(), unsorted, what);
+      }
   }
 }
 

@@ -59,7 +59,7 @@ rows = [r for r in csv.DictReader(open(sys.argv[1] + '/results.csv')) if r['kern
 got = sorted((r['strategy'], r['compaction']) for r in rows)
 assert got == [('fixed', 'none'), ('fixed', 'shade'), ('none', 'none'), ('none', 'shade')], got
 assert len({r['final_rel_mse'] for r in rows}) == 1, [r['final_rel_mse'] for r in rows]
-assert any(r['label'] == 'none compaction=shade' for r in rows), [r['label'] for r in rows]
+assert any(r['label'] == 'none compaction=none' for r in rows), [r['label'] for r in rows]
 print('ok: compactions', got)
 PY
 
