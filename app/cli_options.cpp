@@ -106,7 +106,7 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       {"--tracer", [&](const std::string& v) { s.tracer = parseEnum("--tracer", v, &parseTracer, "compute|rt"); }},
       {"--ser", [&](const std::string& v) { s.ser = parseEnum("--ser", v, &parseSer, "off|on|hint"); }},
       {"--strategy", [&](const std::string& v) { s.strategy = parseEnum("--strategy", v, &parseKeyStrategy, keyStrategyNames()); }},
-      {"--sort", [&](const std::string& v) { s.sort = parseEnum("--sort", v, &parseSortAlgorithm, "none|bitonic|radix"); }},
+      {"--sort", [&](const std::string& v) { s.sort = parseEnum("--sort", v, &parseSortAlgorithm, "none|bitonic|radix|tile"); }},
       {"--sort-policy", [&](const std::string& v) { s.sortPolicy = parseEnum("--sort-policy", v, &parseSortPolicy, "always|never|auto"); }},
       {"--sort-bits", [&](const std::string& v) { s.sortBits = parseUint("--sort-bits", v, 0, 32); }},
       {"--fusion", [&](const std::string& v) { s.fusion = parseEnum("--fusion", v, &parseFusion, "none|keys|gather|both"); }},
@@ -174,7 +174,8 @@ std::string commonOptionsHelp() {
          "  --ser off|on|hint      rt megakernel: Shader Execution Reordering by hit, or by hit with the\n"
          "                         top bits of --strategy's key as coherence hint (needs a strategy)\n"
          "  --strategy " + keyStrategyNames() + "\n"
-         "  --sort none|bitonic|radix   sort used when a strategy is set (default radix)\n"
+         "  --sort none|bitonic|radix|tile  sort used when a strategy is set (default radix); tile sorts\n"
+         "                         each 2048 paths alone (needs --compaction shade)\n"
          "  --sort-policy always|never|auto  which bounces sort: all, none, or where earlier frames measured\n"
          "                         a saving (default always)\n"
          "  --sort-bits N          order only the key's top N bits, 0..32 (default 0: all); 8 bits\n"

@@ -19,7 +19,8 @@ const std::pair<KeyStrategy, const char*> kStrategyNames[] = {
     {KeyStrategy::Oracle, "oracle"},
 };
 const std::pair<SortAlgorithm, const char*> kSortNames[] = {
-    {SortAlgorithm::None, "none"}, {SortAlgorithm::Bitonic, "bitonic"}, {SortAlgorithm::Radix, "radix"}};
+    {SortAlgorithm::None, "none"}, {SortAlgorithm::Bitonic, "bitonic"}, {SortAlgorithm::Radix, "radix"},
+    {SortAlgorithm::Tile, "tile"}};
 const std::pair<HeatmapView, const char*> kHeatmapNames[] = {
     {HeatmapView::None, "none"},          {HeatmapView::SortKey, "sort-key"},
     {HeatmapView::CellHit, "cell-hit"},   {HeatmapView::TraversalSteps, "traversal-steps"},

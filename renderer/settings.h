@@ -26,7 +26,11 @@ enum class KeyStrategy {
   Oracle,           // the true hit point, found by tracing once more (upper bound)
 };
 
-enum class SortAlgorithm { None, Bitonic, Radix };
+// `tile` (an experiment of issue 11: sorting within blocks that stay in shared memory instead of globally)
+// sorts each tile of SORT_BITONIC_TILE consecutive slots on its own, one dispatch; the finished paths must
+// have been packed behind the live ones first (Settings::compaction, every sorted bounce), so it needs
+// compaction=shade on the compute tracer and no keys made in shade (settingsError says so).
+enum class SortAlgorithm { None, Bitonic, Radix, Tile };
 
 // What the display shows instead of the render (per pixel, for one bounce).
 enum class HeatmapView {

@@ -1,5 +1,7 @@
 #include "renderer/settings_validation.h"
 
+#include "shaders/sort_types.h"
+
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -75,6 +77,12 @@ std::optional<std::string> settingsError(const Settings& s) {
   } catch (const SettingsError& e) {
     return e.what();
   }
+  // A sort within tiles leaves the live paths of each tile in front of its finished ones, not all live paths
+  // in front of all finished ones: the reorder's live prefix then needs the finished paths packed out first.
+  if (s.sorts() && s.sort == SortAlgorithm::Tile && (!s.compacts() || s.fusesKeys()))
+    return "--sort tile sorts each tile of " + std::to_string(gpu::uint(SORT_BITONIC_TILE)) +
+           " paths alone and needs the finished paths packed out before it: use --compaction shade with the compute "
+           "tracer, and --fusion none or gather";
   // Path state is allocated per path: the product must stay within what a device can hold (and a uint32).
   uint64_t paths = uint64_t(s.width) * s.height * s.sppPerFrame;
   if (paths > SettingLimits::kMaxPathsPerFrame)

@@ -44,6 +44,8 @@ void halfStep(uint distanceLog) {
 
 void main() {
   tileBegin = (gl_WorkGroupID.x + pc.tileOffset) * TILE;
+  // Whole tiles past the device-side bound (the live prefix) hold only dead keys, already in place.
+  if (pc.hasCountLimit != 0u && tileBegin >= pc.countLimit.v[0]) return;
   for (uint j = gl_LocalInvocationID.x; j < TILE; j += gl_WorkGroupSize.x) {
     if (tileBegin + j < pc.count) {
       sKeys[j] = pc.keys.v[tileBegin + j];

@@ -54,7 +54,8 @@ struct SortScanPush {
   uint rowsPerGroup;
 };
 
-// sort_bitonic_local (mode 0: full sort of each tile; mode 1: the merge steps whose distance fits a tile)
+// sort_bitonic_local (mode 0: full sort of each tile, which is all SortAlgorithm::Tile does; mode 1: the merge
+// steps whose distance fits a tile)
 // and sort_bitonic_global (one compare-exchange step across tiles).
 struct SortBitonicPush {
   SORT_REF(SortUintBuf) keys;
@@ -66,7 +67,8 @@ struct SortBitonicPush {
   uint distanceLog;  // global half-cleaner: log2 of d (pairs i and i+d within blocks of 2d)
   uint comparators;  // number of compare-exchanges of a global step (padded count / 2)
   uint tileOffset;   // local: first tile of this dispatch (dispatches are split at the group limit)
-  uint pad0;
+  uint hasCountLimit;  // local mode 0 (the tile sort): 1: tiles at or past countLimit.v[0] return at once
+  SORT_REF(SortUintBuf) countLimit;
 };
 
 // sort_copy: copies `count` keys and values (used when the radix pass count is odd).

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "renderer/heatmap_rules.h"
+#include "renderer/settings_validation.h"
 #include "ui/panel_layout.h"
 
 namespace raylab {
@@ -29,6 +30,24 @@ bool comboEnum(const char* label, E& value, const std::vector<E>& all) {
   return changed;
 }
 
+// A combo over one Settings field whose values that would not go with the rest (settingsError) are greyed
+// out, with the reason as tooltip.
+template <class E>
+void comboSetting(const char* label, Settings& s, E Settings::*field, const std::vector<E>& all) {
+  if (!ImGui::BeginCombo(label, toString(s.*field).c_str())) return;
+  for (E e : all) {
+    Settings candidate = s;
+    candidate.*field = e;
+    std::optional<std::string> why = settingsError(candidate);
+    ImGui::BeginDisabled(why.has_value() && e != s.*field);
+    if (ImGui::Selectable(toString(e).c_str(), e == s.*field)) s.*field = e;
+    ImGui::EndDisabled();
+    if (why && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", why->c_str());
+    if (e == s.*field) ImGui::SetItemDefaultFocus();
+  }
+  ImGui::EndCombo();
+}
+
 bool sliderU32(const char* label, uint32_t& v, uint32_t lo, uint32_t hi, ImGuiSliderFlags flags = kClamp) {
   int i = static_cast<int>(v);
   bool changed = ImGui::SliderInt(label, &i, static_cast<int>(lo), static_cast<int>(hi), "%d", flags);
@@ -37,26 +56,26 @@ bool sliderU32(const char* label, uint32_t& v, uint32_t lo, uint32_t hi, ImGuiSl
 }
 
 void drawSortSection(Settings& s, const ViewOptions& view) {
-  comboEnum("strategy", s.strategy, allKeyStrategies());
-  comboEnum("sort", s.sort, {SortAlgorithm::None, SortAlgorithm::Bitonic, SortAlgorithm::Radix});
+  comboSetting("strategy", s, &Settings::strategy, allKeyStrategies());
+  comboSetting("sort", s, &Settings::sort, {SortAlgorithm::None, SortAlgorithm::Bitonic, SortAlgorithm::Radix, SortAlgorithm::Tile});
   comboEnum("sort policy", s.sortPolicy, {SortPolicy::Always, SortPolicy::Never, SortPolicy::Auto});
   sliderU32("sorted key bits", s.sortBits, 0, 32);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("order only the key's top bits (0: all); 8 fewer is one radix pass less");
-  comboEnum("fusion", s.fusion, {Fusion::None, Fusion::Keys, Fusion::Gather, Fusion::Both});
+  comboSetting("fusion", s, &Settings::fusion, {Fusion::None, Fusion::Keys, Fusion::Gather, Fusion::Both});
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("keys: made in shade; gather: the reorder done by the next trace (compute wavefront only)");
   if (s.fusion != Fusion::None && s.sorts() && !s.fusesKeys() && !s.fusesGather())
     ImGui::TextDisabled("fusion: the rt tracer keeps separate passes");
-  comboEnum("compaction", s.compaction, {Compaction::None, Compaction::Shade});
+  comboSetting("compaction", s, &Settings::compaction, {Compaction::None, Compaction::Shade});
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("shade packs the live paths at the front, so later stages visit only live paths (compute wavefront only)");
   if (s.compaction != Compaction::None && !s.compacts())
     ImGui::TextDisabled("compaction: only the compute wavefront compacts");
-  comboEnum("kernel", s.kernel, {Kernel::Wavefront, Kernel::Megakernel});
+  comboSetting("kernel", s, &Settings::kernel, {Kernel::Wavefront, Kernel::Megakernel});
   if (s.kernel == Kernel::Megakernel) ImGui::TextDisabled("the megakernel never sorts");
   // The rt tracer and SER need extensions the device may lack: greyed out with the reason.
   ImGui::BeginDisabled(!view.rtUnavailable.empty());
-  comboEnum("tracer", s.tracer, {Tracer::Compute, Tracer::Rt});
+  comboSetting("tracer", s, &Settings::tracer, {Tracer::Compute, Tracer::Rt});
   ImGui::EndDisabled();
   if (!view.rtUnavailable.empty()) ImGui::TextWrapped("rt tracer unavailable: %s", view.rtUnavailable.c_str());
   ImGui::BeginDisabled(!view.serUnavailable.empty() || s.tracer != Tracer::Rt || s.kernel != Kernel::Megakernel);

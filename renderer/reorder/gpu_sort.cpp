@@ -90,7 +90,7 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
     const VkDeviceSize elementBytes = std::max<VkDeviceSize>(16, VkDeviceSize(maxCount) * 4);
     scratchKeys_ = GpuBuffer(ctx, elementBytes);
     scratchValues_ = GpuBuffer(ctx, elementBytes);
-  } else if (algorithm == SortAlgorithm::Bitonic) {
+  } else if (algorithm == SortAlgorithm::Bitonic || algorithm == SortAlgorithm::Tile) {
     // No scratch: the padding to a power of two is virtual (see shaders/sort_bitonic.glsl).
     bitonicLocal_ = ComputePipeline(ctx, "sort_bitonic_local", sizeof(gpu::SortBitonicPush), SORT_BITONIC_GROUP);
     bitonicGlobal_ = ComputePipeline(ctx, "sort_bitonic_global", sizeof(gpu::SortBitonicPush), 256);
@@ -128,6 +128,8 @@ void GpuSorter::record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddres
       recordOneSweep(cmd, keys, values, count, keyBits);
     else if (algorithm_ == SortAlgorithm::Radix)
       recordRadix(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits);
+    else if (algorithm_ == SortAlgorithm::Tile)
+      recordTiles(cmd, keys, values, count, keyBits, countLimit);
     else
       recordBitonic(cmd, keys, values, count, keyBits);
   }
@@ -225,6 +227,25 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
     srcValues = push.valuesOut;
   }
   if (passes % 2 == 1) recordCopyBack(cmd, keys, values, count, 0);
+}
+
+// Each tile of SORT_BITONIC_TILE pairs sorted alone in shared memory: bitonic's first dispatch, no merges.
+void GpuSorter::recordTiles(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
+                            uint32_t keyBits, VkDeviceAddress countLimit) {
+  const uint32_t tiles = ceilDiv(count, SORT_BITONIC_TILE);
+  const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
+  gpu::SortBitonicPush push{};
+  push.keys = keys;
+  push.values = values;
+  push.count = count;
+  push.keyBits = keyBits;
+  push.mode = 0;
+  push.hasCountLimit = countLimit != 0 ? 1 : 0;
+  push.countLimit = countLimit;
+  for (uint32_t first = 0; first < tiles; first += maxGroups) {
+    push.tileOffset = first;
+    bitonicLocal_.dispatchGroups(cmd, push, std::min(maxGroups, tiles - first));
+  }
 }
 
 void GpuSorter::recordBitonic(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,

@@ -14,6 +14,8 @@
 // only on devices known to give forward progress (NVIDIA and AMD GPUs); elsewhere the portable path runs.
 // Bitonic (the study's baseline): any count, padded virtually to a power of two; steps whose distance fits a
 // 2048-element tile run in shared memory, the others as one dispatch per step. Not stable.
+// Tile: bitonic's first dispatch alone: each 2048-element tile sorted on its own, so the result is sorted only
+// within tiles. Not stable. Honours countLimit (tiles past it return at once).
 //
 // The caller makes the keys and values visible to compute shaders before record() (computeBarrier).
 #pragma once
@@ -56,7 +58,8 @@ class GpuSorter {
   // (the live-path count after the last sort): the portable radix sort then sorts only the first
   // min(count, *countLimit) pairs and leaves the rest where they are; its dispatches keep their sizes, and
   // work groups past the bound return at once. OneSweep and bitonic ignore it and sort all `count` pairs,
-  // which gives the same order for a stable sort when the pairs past the bound are dead keys in index order.
+  // which gives the same order for a stable sort when the pairs past the bound are dead keys in index order;
+  // Tile honours it too (whole tiles past it).
   // `ignoredLowBits` (portable radix only): the lowest bits of the compared key are not ordered (pairs that
   // differ only there keep their input order), one pass less for each 8 bits: a coarser, cheaper order.
   void record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count, uint32_t keyBits,
@@ -83,6 +86,8 @@ class GpuSorter {
                       uint32_t keyBits);
   void recordBitonic(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                      uint32_t keyBits);
+  void recordTiles(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
+                   uint32_t keyBits, VkDeviceAddress countLimit);
 
   const VulkanContext* ctx_ = nullptr;
   SortAlgorithm algorithm_ = SortAlgorithm::None;

@@ -1,6 +1,8 @@
 // One validation for every way Settings come in: the command line, `set` in window scripts, screenshot
 // sidecars (`--settings`), imgui.ini (the same JSON) and bench sweep files (command-line flags). Hostile
 // values are refused with the command line's range and wording, before anything is allocated.
+#include <functional>
+
 #include <gtest/gtest.h>
 
 #include "app/cli_options.h"
@@ -63,6 +65,22 @@ TEST(SettingsValidation, HostileSidecarValuesAreRefusedLikeTheCommandLine) {
   EXPECT_NE(jsonError("width", "wide").find("'width' must be a number"), std::string::npos);
   EXPECT_EQ(jsonError("fusion", "sideways"), "settings: 'fusion' must be none, keys, gather or both, got \"sideways\"");
   EXPECT_EQ(jsonError("compaction", "always"), "settings: 'compaction' must be none or shade, got \"always\"");
+  // The tile sort needs the finished paths packed out first: refused without compaction, with keys made in
+  // shade (which does not compact) and on the rt tracer; fine where nothing sorts.
+  Settings tile;
+  tile.strategy = KeyStrategy::TwoPoint;
+  tile.sort = SortAlgorithm::Tile;
+  EXPECT_FALSE(settingsError(tile));
+  for (auto breakIt : std::vector<std::function<void(Settings&)>>{[](Settings& s) { s.compaction = Compaction::None; },
+                                                                   [](Settings& s) { s.fusion = Fusion::Both; },
+                                                                   [](Settings& s) { s.tracer = Tracer::Rt; }}) {
+    Settings bad = tile;
+    breakIt(bad);
+    ASSERT_TRUE(settingsError(bad));
+    EXPECT_NE(settingsError(bad)->find("--sort tile"), std::string::npos) << *settingsError(bad);
+    bad.strategy = KeyStrategy::None;
+    EXPECT_FALSE(settingsError(bad));
+  }
   // The same ranges on the command line, same words.
   EXPECT_EQ(cliError({"--spp", "100000"}), jsonError("spp_per_frame", 100000));
   EXPECT_EQ(cliError({"--ema-alpha", "-3"}), jsonError("ema_alpha", -3));

@@ -18,7 +18,7 @@ class Compaction : public GpuTest {};
 
 // On the open view, where most paths finish early, over two frames: the unsorted wavefront, every strategy
 // under the always policy (every shade compacts before keys, sort and reorder) and the auto policy (frame 0
-// explores sorted, frame 1 unsorted), both sorts, both reorders.
+// explores sorted, frame 1 unsorted), every sort (the tile sort needs the compaction), both reorders.
 TEST_F(Compaction, EveryVariantRendersTheUncompactedImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("openings");
@@ -32,13 +32,13 @@ TEST_F(Compaction, EveryVariantRendersTheUncompactedImage) {
   expectSameImage(renderRadiance(ctx(), scene, packed, view), unsorted, "unsorted, compacted,");
   for (KeyStrategy strategy : allKeyStrategies()) {
     if (strategy == KeyStrategy::None) continue;
-    for (SortAlgorithm sort : {SortAlgorithm::Radix, SortAlgorithm::Bitonic})
+    for (SortAlgorithm sort : {SortAlgorithm::Radix, SortAlgorithm::Bitonic, SortAlgorithm::Tile})
       for (SortPolicy policy : {SortPolicy::Always, SortPolicy::Auto}) {
         Settings s = packed;
         s.strategy = strategy;
         s.sort = sort;
         s.sortPolicy = policy;
-        s.fusion = sort == SortAlgorithm::Radix ? Fusion::Gather : Fusion::None;
+        s.fusion = sort == SortAlgorithm::Bitonic ? Fusion::None : Fusion::Gather;
         expectSameImage(renderRadiance(ctx(), scene, s, view), unsorted,
                         toString(strategy) + " " + toString(sort) + " " + toString(policy) + " compacted");
       }

@@ -18,7 +18,7 @@ namespace {
 
 static_assert(sizeof(gpu::SortRadixPush) == 72);
 static_assert(sizeof(gpu::SortScanPush) == 16);
-static_assert(sizeof(gpu::SortBitonicPush) == 48);
+static_assert(sizeof(gpu::SortBitonicPush) == 56);
 static_assert(sizeof(gpu::SortCopyPush) == 48);
 static_assert(sizeof(gpu::SortOneSweepPush) == 64);
 
@@ -273,6 +273,50 @@ TEST_F(GpuSortTest, RadixSortsOnlyUpToDeviceCountLimit) {
       SCOPED_TRACE("bits " + std::to_string(bits) + ", limit " + std::to_string(limit));
       EXPECT_EQ(keyBuf.downloadVector<uint32_t>(n), wantKeys);
       EXPECT_EQ(valueBuf.downloadVector<uint32_t>(n), wantValues);
+    }
+  }
+}
+
+// The tile sort (SortAlgorithm::Tile) against its plain C++ reference: each tile of SORT_BITONIC_TILE pairs
+// sorted on its own by the effective key (keys equal to the reference; bitonic is not stable, so each tile's
+// pairs are compared as a set), the last tile partial, and whole tiles at or past a device-side limit left
+// exactly as they were.
+TEST_F(GpuSortTest, TileSortSortsEachTileAlone) {
+  const uint32_t tile = SORT_BITONIC_TILE, n = 5 * tile + 777;
+  GpuSorter tiles(ctx(), SortAlgorithm::Tile, n);
+  for (uint32_t limit : {n, 2 * tile + 1, 2 * tile, 0u}) {
+    const std::vector<uint32_t> keys = makeKeys(Dist::Dead12, n, limit);
+    std::vector<uint32_t> values(n);
+    std::iota(values.begin(), values.end(), 0u);
+    GpuBuffer keyBuf = makeBufferFrom(ctx(), keys);
+    GpuBuffer valueBuf = makeBufferFrom(ctx(), values);
+    GpuBuffer limitBuf = makeBufferFrom(ctx(), std::vector<uint32_t>{limit});
+    ctx().submitAndWait([&](VkCommandBuffer cmd) {
+      tiles.record(cmd, keyBuf.address(), valueBuf.address(), n, 12, limitBuf.address());
+    });
+    const std::vector<uint32_t> gotKeys = keyBuf.downloadVector<uint32_t>(n);
+    const std::vector<uint32_t> gotValues = valueBuf.downloadVector<uint32_t>(n);
+    SCOPED_TRACE("limit " + std::to_string(limit));
+    for (uint32_t begin = 0; begin < n; begin += tile) {
+      const uint32_t end = std::min(n, begin + tile);
+      std::vector<std::pair<uint32_t, uint32_t>> want, got;
+      for (uint32_t i = begin; i < end; ++i) {
+        want.push_back({gpu::sortEffectiveKey(keys[i], 12), i});
+        got.push_back({gpu::sortEffectiveKey(gotKeys[i], 12), gotValues[i]});
+        ASSERT_LT(gotValues[i], n);
+        EXPECT_EQ(gotKeys[i], keys[gotValues[i]]) << "slot " << i << ": a key left its value";
+      }
+      if (begin >= limit) {  // past the limit: untouched
+        EXPECT_EQ(std::vector<uint32_t>(gotValues.begin() + begin, gotValues.begin() + end),
+                  std::vector<uint32_t>(values.begin() + begin, values.begin() + end)) << "tile at " << begin;
+        continue;
+      }
+      std::sort(want.begin(), want.end());
+      std::vector<std::pair<uint32_t, uint32_t>> gotSorted = got;
+      std::sort(gotSorted.begin(), gotSorted.end());
+      EXPECT_EQ(gotSorted, want) << "tile at " << begin << " lost or gained pairs";
+      for (uint32_t i = 0; i + 1 < got.size(); ++i)
+        ASSERT_LE(got[i].first, got[i + 1].first) << "tile at " << begin << ", slot " << begin + i;
     }
   }
 }
