@@ -31,7 +31,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
 STAGES = ["generate", "trace", "learn", "shade", "keys", "oracle-trace", "sort", "reorder",
-          "accumulate", "tonemap", "megakernel", "setup", "counters"]
+          "accumulate", "tonemap", "megakernel", "setup", "counters", "trace+shade"]
 
 
 def load(folder):

@@ -33,7 +33,7 @@ std::vector<glm::vec3> renderReference(PathTracer& tracer, const Settings& base,
 }
 
 const char* kStages[] = {"generate", "trace", "learn", "shade", "keys", "oracle-trace", "sort", "reorder",
-                         "accumulate", "tonemap", "megakernel", "setup", "counters"};
+                         "accumulate", "tonemap", "megakernel", "setup", "counters", "trace+shade"};
 
 void writeCsvHeader(std::ofstream& csv) {
   csv << "device,driver,git_revision,scene,view,width,height,bounces,spp_per_frame,kernel,tracer,ser,ser_reordering_hint,"
@@ -43,7 +43,7 @@ void writeCsvHeader(std::ofstream& csv) {
   csv << ",rays_per_second,simt_efficiency,virtual_warp_efficiency,virtual_warp_efficiency_after_first,"
          "prediction_error_mean,prediction_error_median,cell_hit_rate,key_bits,length_cache_bytes,final_rel_mse,"
          "sort_policy,sorted_after,triangles,bvh_nodes,bvh_bytes,scene_bytes,bvh_build_ms,scene_load_ms,tracer_setup_ms,"
-         "sort_bits,learn_every,fusion,compaction\n";
+         "sort_bits,learn_every,fusion,compaction,trace_shade\n";
 }
 
 std::string csvQuote(const std::string& s) { return "\"" + s + "\""; }
@@ -72,7 +72,7 @@ void writeCsvRow(std::ofstream& csv, const VulkanContext& ctx, const BenchCell& 
   for (size_t k = 0; k < r.sortedAfter.size(); ++k) csv << (k + 1 == r.sortedAfter.size() ? '-' : r.sortedAfter[k] ? 'Y' : 'N');
   csv << "," << scene.triangles << "," << scene.bvhNodes << "," << scene.bvhBytes << "," << scene.sceneBytes << ","
       << scene.bvhBuildMs << "," << scene.sceneLoadMs << "," << scene.tracerSetupMs << "," << s.sortBits << "," << s.learnEvery << "," << toString(s.fusion) << ","
-      << toString(s.compaction) << "\n";
+      << toString(s.compaction) << "," << toString(s.traceShade) << "\n";
   csv.flush();
 }
 

@@ -49,6 +49,7 @@ struct Axes {
   std::vector<std::string> sortBits{};    // --sort-bits-list: empty keeps the render flag's (all bits)
   std::vector<std::string> fusions{};     // --fusions: empty keeps the render flag's (gather)
   std::vector<std::string> compactions{}; // --compactions: empty keeps the render flag's (shade)
+  std::vector<std::string> traceShades{}; // --trace-shades: empty keeps the render flag's (split)
   std::vector<std::string> learnEvery{};  // --learn-every-list: strategies with a length cache only
   std::vector<std::string> bounces{};     // --bounces with a list: one group of cells per count
   std::vector<std::string> scaleTris{};   // --scale-tris: the sizes of every bare temple-detail case
@@ -155,6 +156,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
     else if (flag == "--sort-bits-list") axes.sortBits = splitList(v);
     else if (flag == "--fusions") axes.fusions = splitList(v);
     else if (flag == "--compactions") axes.compactions = splitList(v);
+    else if (flag == "--trace-shades") axes.traceShades = splitList(v);
     else if (flag == "--learn-every-list") axes.learnEvery = splitList(v);
     else if (flag == "--grids") axes.grids = splitList(v);
     else if (flag == "--clamps") axes.clamps = splitList(v);
@@ -224,6 +226,11 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
         if (packed.compaction != plain.compaction)
           plan.cells.push_back({ci, packed, prefix + "none compaction=" + toString(packed.compaction)});
       }
+      for (const std::string& traceShade : axes.traceShades) {
+        Settings fused = withFlag(plain, "--trace-shade", traceShade);
+        if (fused.traceShade != plain.traceShade)
+          plan.cells.push_back({ci, fused, prefix + "none trace-shade=" + toString(fused.traceShade)});
+      }
       for (const std::string& strategy : axes.strategies) {
         Settings st = withFlag(plain, "--strategy", strategy);
         if (st.strategy == KeyStrategy::None) continue;
@@ -244,6 +251,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
           expand(axes.sortBits, "--sort-bits", /*gridOnly=*/false);
           expand(axes.fusions, "--fusion", /*gridOnly=*/false);
           expand(axes.compactions, "--compaction", /*gridOnly=*/false);
+          expand(axes.traceShades, "--trace-shade", /*gridOnly=*/false);
           if (usesLengthCache(so.strategy)) expand(axes.learnEvery, "--learn-every");
           std::vector<Settings> withPolicies;
           for (const Settings& v : variants)
@@ -262,6 +270,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
             if (v.sortBits != 0) label += " bits=" + std::to_string(v.sortBits);
             if (v.fusion != Settings{}.fusion) label += " fusion=" + toString(v.fusion);
             if (v.compaction != Settings{}.compaction) label += " compaction=" + toString(v.compaction);
+            if (v.traceShade != Settings{}.traceShade) label += " trace-shade=" + toString(v.traceShade);
             if (v.learnEvery != 1) label += " learn=1/" + std::to_string(v.learnEvery);
             plan.cells.push_back({ci, v, label});
           }
@@ -284,6 +293,7 @@ std::string benchHelp() {
          "  --sort-bits-list 0,8,16   sorted key bits to sweep (0: all; see --sort-bits)\n"
          "  --fusions none,both       reorder stage fusions to sweep (see --fusion)\n"
          "  --compactions none,shade  compactions to sweep, the unsorted baseline's too (see --compaction)\n"
+         "  --trace-shades split,fused  trace and shade as one dispatch or two, the baseline's too (--trace-shade)\n"
          "  --learn-every-list 1,4,16 learning strides of the length-cache strategies to sweep\n"
          "  --grids auto,32x8x32      grid settings to sweep\n"
          "  --clamps off,50           camera clamp distances to sweep\n"

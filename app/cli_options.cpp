@@ -111,6 +111,7 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       {"--sort-bits", [&](const std::string& v) { s.sortBits = parseUint("--sort-bits", v, 0, 32); }},
       {"--fusion", [&](const std::string& v) { s.fusion = parseEnum("--fusion", v, &parseFusion, "none|keys|gather|both"); }},
       {"--compaction", [&](const std::string& v) { s.compaction = parseEnum("--compaction", v, &parseCompaction, "none|shade"); }},
+      {"--trace-shade", [&](const std::string& v) { s.traceShade = parseEnum("--trace-shade", v, &parseTraceShade, "split|fused"); }},
       {"--learn-every", [&](const std::string& v) { s.learnEvery = parseUint("--learn-every", v, 1, 64); }},
       {"--grid", [&](const std::string& v) { parseGrid(v, s); }},
       {"--clamp", [&](const std::string& v) {
@@ -185,6 +186,8 @@ std::string commonOptionsHelp() {
          "  --compaction none|shade  compute wavefront: shade packs the live paths at the front of the\n"
          "                         other state set, so later stages visit only live paths (same\n"
          "                         image; default shade)\n"
+         "  --trace-shade split|fused  compute wavefront: trace and shade of a bounce as two dispatches\n"
+         "                         (default) or one where nothing reads the hit between them (same image)\n"
          "  --grid auto|N|NXxNYxNZ  key grid (default auto, 64 cells on the largest axis)\n"
          "  --clamp D              clamp the key grid to camera +- D\n"
          "  --fixed-factor F       fixed length = F * largest extent (default 0.5; Meister et al. 0.25)\n"

@@ -32,6 +32,7 @@ const std::map<std::string, Copy>& fieldsOfFlag() {
       {"sort-bits", [](Settings& t, const Settings& f) { t.sortBits = f.sortBits; }},
       {"fusion", [](Settings& t, const Settings& f) { t.fusion = f.fusion; }},
       {"compaction", [](Settings& t, const Settings& f) { t.compaction = f.compaction; }},
+      {"trace-shade", [](Settings& t, const Settings& f) { t.traceShade = f.traceShade; }},
       {"grid", [](Settings& t, const Settings& f) { t.grid = f.grid; }},
       {"clamp", [](Settings& t, const Settings& f) { t.clampToCamera = f.clampToCamera, t.clampDistance = f.clampDistance; }},
       {"fixed-factor", [](Settings& t, const Settings& f) { t.fixedFactor = f.fixedFactor; }},

@@ -122,10 +122,13 @@ void HeatmapPass::gather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32
   gathered_ = true;
 }
 
+bool HeatmapPass::readsAfterTrace(uint32_t bounce) const {
+  return view_ != HeatmapView::None && view_ != HeatmapView::SortKey && bounce == bounce_;
+}
+
 void HeatmapPass::afterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
                              StageTimer* timer) {
-  if (view_ != HeatmapView::None && view_ != HeatmapView::SortKey && bounce == bounce_)
-    gather(cmd, buffers, stateSet, RL_HEAT_GATHER_VALUE, false, timer);
+  if (readsAfterTrace(bounce)) gather(cmd, buffers, stateSet, RL_HEAT_GATHER_VALUE, false, timer);
 }
 
 void HeatmapPass::afterKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,

@@ -32,6 +32,8 @@ class HeatmapPass {
   void beginFrame(VkCommandBuffer cmd, const Settings& settings, VkDeviceAddress keyParams,
                   const gpu::GpuKeyGrid* grid, bool hasCache);
   // After the trace of `bounce` (the trace's own views, cell hits and the cache views).
+  // Whether afterTrace of `bounce` reads the trace's hits and steps (so trace and shade must stay apart).
+  bool readsAfterTrace(uint32_t bounce) const;
   void afterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
                   StageTimer* timer);
   // After the keys made during `bounce` for the rays of bounce + 1 (sort keys).

@@ -218,9 +218,13 @@ void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush&
   heatmap_->afterMegakernel(cmd, *buffers_, &timer_);
 }
 
-const ComputePipeline& PathTracer::compactingShade() {
-  if (!compactingShade_) compactingShade_.emplace(ctx_, "shade", sizeof(gpu::PathStagePush), kGroup, std::vector<uint32_t>{static_cast<uint32_t>(KeyStrategy::None), 1u});
-  return *compactingShade_;
+const ComputePipeline& PathTracer::shadeVariant(bool compact, bool traceFirst) {
+  if (!compact && !traceFirst) return shade_;
+  std::optional<ComputePipeline>& p = shadeVariants_[compact ? 1 : 0][traceFirst ? 1 : 0];
+  if (!p)
+    p.emplace(ctx_, "shade", sizeof(gpu::PathStagePush), kGroup,
+              std::vector<uint32_t>{static_cast<uint32_t>(KeyStrategy::None), compact ? 1u : 0u, traceFirst ? 1u : 0u});
+  return *p;
 }
 
 const ComputePipeline& PathTracer::gatheringTrace(bool counting) {
@@ -251,35 +255,49 @@ void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, P
   for (uint32_t b = 0; b < settings_.bounces; ++b) {
     timer_.setBounce(static_cast<int>(b));
     push.bounce = b;
-    recordStage(cmd, &timer_, "trace", [&] {
-      if (usesRt())
-        rt_->traceRays(cmd, push, n);  // every path; the shader skips those past the live count
-      else if (gatherInTrace)
-        gatheringTrace(settings_.countSimt).dispatchThreads(cmd, push, n);  // every slot: it finds the live count
-      else
-        trace.dispatchIndirect(cmd, push, live, liveDispatch);
-    });
-    if (gatherInTrace) push.stateSet = 1u - push.stateSet, gatherInTrace = false;
-    if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, b, slice);
     const bool sortedBefore = sorting && b > 0 && framePlan_.sortAfter[b - 1];
-    if (sorting)
-      pathSorter_->recordAfterTrace(cmd, *buffers_, slice, push.stateSet, b, sortedBefore, detailedStats_, &timer_);
-    heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, &timer_);
     const bool sortAfter = sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b];
     const bool keysInShade = sortAfter && settings_.fusesKeys();
     const bool compacts = settings_.compacts() && !keysInShade && b + 1 < settings_.bounces;
-    recordStage(cmd, &timer_, "shade", [&] {
-      if (usesRt()) {
-        rt_->shade(cmd, push, n);
-      } else if (compacts) {
-        compactingShade().dispatchIndirect(cmd, push, live, liveDispatch);
+    // shade.comp as this bounce needs it; `traceFirst`: it also does the trace (Settings::traceShade).
+    auto shade = [&](bool traceFirst) {
+      if (compacts) {
+        shadeVariant(true, traceFirst).dispatchIndirect(cmd, push, live, liveDispatch);
         computeBarrier(cmd);
         const VkBufferCopy packed{PathBuffers::liveAppendOffset(b), 0, PathBuffers::kLiveBlockBytes};
         vkCmdCopyBuffer(cmd, live, live, 1, &packed);
       } else {
-        (keysInShade ? pathSorter_->shadeWithKeys() : shade_).dispatchIndirect(cmd, push, live, liveDispatch);
+        (keysInShade ? pathSorter_->shadeWithKeys() : shadeVariant(false, traceFirst))
+            .dispatchIndirect(cmd, push, live, liveDispatch);
       }
-    });
+    };
+    // One dispatch for trace and shade where nothing between them reads the hits: no reorder in this trace,
+    // no keys in shade, no learning from sorted rays, no detailed statistics, no heatmap of this bounce.
+    const bool learns = sortedBefore && usesLengthCache(settings_.strategy);
+    if (settings_.fusesTraceShade() && !gatherInTrace && !keysInShade && !learns && !detailedStats_ &&
+        !heatmap_->readsAfterTrace(b)) {
+      recordStage(cmd, &timer_, "trace+shade", [&] { shade(true); });
+    } else {
+      recordStage(cmd, &timer_, "trace", [&] {
+        if (usesRt())
+          rt_->traceRays(cmd, push, n);  // every path; the shader skips those past the live count
+        else if (gatherInTrace)
+          gatheringTrace(settings_.countSimt).dispatchThreads(cmd, push, n);  // every slot: it finds the live count
+        else
+          trace.dispatchIndirect(cmd, push, live, liveDispatch);
+      });
+      if (gatherInTrace) push.stateSet = 1u - push.stateSet, gatherInTrace = false;
+      if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, b, slice);
+      if (sorting)
+        pathSorter_->recordAfterTrace(cmd, *buffers_, slice, push.stateSet, b, sortedBefore, detailedStats_, &timer_);
+      heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, &timer_);
+      recordStage(cmd, &timer_, "shade", [&] {
+        if (usesRt())
+          rt_->shade(cmd, push, n);
+        else
+          shade(false);
+      });
+    }
     if (compacts) push.stateSet = 1u - push.stateSet;
     if (sortAfter) {
       pathSorter_->recordKeys(cmd, *buffers_, slice, push.stateSet, b, keysInShade, detailedStats_, &timer_);

@@ -119,9 +119,10 @@ class PathTracer {
   // trace.comp's gathering variants (Settings::fusesGather), plain and counting, built on first use.
   std::optional<ComputePipeline> gatheringTrace_[2];
   const ComputePipeline& gatheringTrace(bool counting);
-  // shade.comp's compacting variant (Settings::compaction), built on first use.
-  std::optional<ComputePipeline> compactingShade_;
-  const ComputePipeline& compactingShade();
+  // shade.comp's variants that compact (Settings::compaction) and trace first (Settings::traceShade),
+  // indexed [compact][traceFirst] ([0][0] is shade_), built on first use.
+  std::optional<ComputePipeline> shadeVariants_[2][2];
+  const ComputePipeline& shadeVariant(bool compact, bool traceFirst);
   GpuTimer timer_;
   SortPolicyModel sortPolicy_;
   SortPlan framePlan_;  // which bounces the frame being recorded sorts after

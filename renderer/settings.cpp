@@ -32,6 +32,7 @@ const std::pair<HeatmapScale, const char*> kScaleNames[] = {{HeatmapScale::Linea
 const std::pair<Fusion, const char*> kFusionNames[] = {
     {Fusion::None, "none"}, {Fusion::Keys, "keys"}, {Fusion::Gather, "gather"}, {Fusion::Both, "both"}};
 const std::pair<Compaction, const char*> kCompactionNames[] = {{Compaction::None, "none"}, {Compaction::Shade, "shade"}};
+const std::pair<TraceShade, const char*> kTraceShadeNames[] = {{TraceShade::Split, "split"}, {TraceShade::Fused, "fused"}};
 const std::pair<SortPolicy, const char*> kPolicyNames[] = {
     {SortPolicy::Always, "always"}, {SortPolicy::Never, "never"}, {SortPolicy::Auto, "auto"}};
 const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},
@@ -94,6 +95,8 @@ std::string toString(Fusion f) { return nameOf(kFusionNames, f); }
 std::optional<Fusion> parseFusion(const std::string& n) { return parse(kFusionNames, n); }
 std::string toString(Compaction c) { return nameOf(kCompactionNames, c); }
 std::optional<Compaction> parseCompaction(const std::string& n) { return parse(kCompactionNames, n); }
+std::string toString(TraceShade t) { return nameOf(kTraceShadeNames, t); }
+std::optional<TraceShade> parseTraceShade(const std::string& n) { return parse(kTraceShadeNames, n); }
 
 std::string keyStrategyNames() {
   std::string s;
@@ -125,7 +128,8 @@ SettingsChange SettingsChange::between(const Settings& p, const Settings& n) {
                     n.gaussReset != p.gaussReset;
   c.resetSortCosts = c.reallocate || c.resetAccumulation || c.resetCache || c.keyParameters || n.sort != p.sort ||
                      n.sortPolicy != p.sortPolicy || n.sortBits != p.sortBits || n.learnEvery != p.learnEvery ||
-                     n.fusion != p.fusion || n.compaction != p.compaction || n.kernel != p.kernel;
+                     n.fusion != p.fusion || n.compaction != p.compaction || n.traceShade != p.traceShade ||
+                     n.kernel != p.kernel;
   return c;
 }
 

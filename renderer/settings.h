@@ -84,6 +84,13 @@ enum class Fusion { None, Keys, Gather, Both };
 // warps. Every bounce but the last, sorted or not, except where shade makes the keys (Fusion::Keys). Same
 // image bit for bit (a path's id, not its slot, picks its pixel and random numbers).
 enum class Compaction { None, Shade };
+// The compute wavefront's trace and shade of a bounce as two dispatches (`split`: the hit goes through memory
+// between them) or one (`fused`: shade.comp traces the ray it loaded, timed as the stage "trace+shade"): no hit
+// records written and read, one read of the path instead of two, one dispatch and barrier less. Only where
+// nothing reads the hits between trace and shade (length-cache learning after a sort, detailed statistics, a
+// heatmap of that bounce, keys made in shade, a trace that gathers after a sort); those bounces stay split.
+// Same image bit for bit (the same traversal of the same floats).
+enum class TraceShade { Split, Fused };
 
 const std::vector<KeyStrategy>& allKeyStrategies();
 std::string toString(KeyStrategy s);
@@ -103,6 +110,8 @@ std::string toString(Fusion f);
 std::optional<Fusion> parseFusion(const std::string& name);
 std::string toString(Compaction c);
 std::optional<Compaction> parseCompaction(const std::string& name);
+std::string toString(TraceShade t);
+std::optional<TraceShade> parseTraceShade(const std::string& name);
 std::string keyStrategyNames();  // "none|dead-last|fixed|..."
 std::string toString(HeatmapView v);
 std::string toString(HeatmapKeyColour c);
@@ -165,6 +174,7 @@ struct Settings {
   uint32_t sortBits = 0;
   Fusion fusion = Fusion::Gather;
   Compaction compaction = Compaction::Shade;
+  TraceShade traceShade = TraceShade::Split;
   GridSetting grid;
   bool clampToCamera = false;
   float clampDistance = 50.0f;
@@ -189,6 +199,7 @@ struct Settings {
                                   (fusion == Fusion::Keys || fusion == Fusion::Both); }
   bool fusesGather() const { return sorts() && tracer == Tracer::Compute && (fusion == Fusion::Gather || fusion == Fusion::Both); }
   // Settings::compaction as this tracer applies it: only the compute wavefront compacts.
+  bool fusesTraceShade() const { return traceShade == TraceShade::Fused && kernel == Kernel::Wavefront && tracer == Tracer::Compute && !countSimt; }
   bool compacts() const { return compaction == Compaction::Shade && kernel == Kernel::Wavefront && tracer == Tracer::Compute; }
   bool sorts() const { return kernel == Kernel::Wavefront && strategy != KeyStrategy::None && sort != SortAlgorithm::None; }
   // SER runs only in the rt megakernel; elsewhere the setting is kept but does nothing.

@@ -29,6 +29,7 @@ json toJson(const Settings& s) {
       {"sort_bits", s.sortBits},
       {"fusion", toString(s.fusion)},
       {"compaction", toString(s.compaction)},
+      {"trace_shade", toString(s.traceShade)},
       {"grid", s.grid.automatic ? json("auto") : json::array({s.grid.cells.x, s.grid.cells.y, s.grid.cells.z})},
       {"grid_auto_cells", s.grid.autoCells},
       {"clamp_to_camera", s.clampToCamera},
@@ -111,6 +112,14 @@ Settings settingsFromJson(const json& j) {
       if (!compaction)
         throw SettingsError("settings: 'compaction' must be none or shade, got " + j.at("compaction").dump());
       s.compaction = *compaction;
+    }
+    // Older sidecars have no trace_shade: trace and shade were always two dispatches.
+    s.traceShade = TraceShade::Split;
+    if (j.contains("trace_shade")) {
+      auto traceShade = parseTraceShade(j.at("trace_shade").get<std::string>());
+      if (!traceShade)
+        throw SettingsError("settings: 'trace_shade' must be split or fused, got " + j.at("trace_shade").dump());
+      s.traceShade = *traceShade;
     }
     const json& grid = need("grid");
     if (grid.is_string() && grid.get<std::string>() != "auto")

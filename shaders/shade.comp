@@ -13,6 +13,9 @@
 // entry, so the image is the same bit for bit. When the frame sorts, every slot it visits also gets the dead
 // key: the keys pass then writes keys for the new, shorter live prefix only, and the sort and reorder rely
 // on dead keys behind it (the last sort's would be stale).
+// With spec constant 3 (Settings::traceShade fused) shade also does the bounce's trace: it traces the ray it
+// loaded (trace.comp's traversal of the same floats, so the same hit) and counts it, and no hit record is
+// written or read. It writes no traversal steps (nothing reads them where the host fuses).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
@@ -26,6 +29,13 @@
 
 layout(constant_id = 1) const uint kKeyStrategy = RL_KEY_NONE;
 layout(constant_id = 2) const bool kCompact = false;
+layout(constant_id = 3) const bool kTraceFirst = false;
+
+// trace.comp's ray count (RL_COUNTER_RAYS of this bounce): one atomic per subgroup for its live lanes.
+void countTracedRay(GpuFrame f) {
+  uint lanes = subgroupBallotBitCount(subgroupBallot(true));
+  if (subgroupElect()) atomicAdd(f.counters.v[pc.bounce * RL_COUNTER_STRIDE + RL_COUNTER_RAYS], lanes);
+}
 
 // keys.comp's output for slot i: the key and the slot as the sort's payload; the predicted length.
 void storeKey(GpuFrame f, uint i, PathVars p, uint id, out float len) {
@@ -78,7 +88,13 @@ void main() {
   }
   uint id;
   PathVars p = loadPath(s, i, id);
-  HitRecord hit = loadHit(f.hits, i);
+  HitRecord hit;
+  if (kTraceFirst) {
+    hit = traceClosest(f.scene, p.origin, p.direction, 1e30);
+    countTracedRay(f);
+  } else {
+    hit = loadHit(f.hits, i);
+  }
   // Slot i may lie behind the next live prefix, which the next trace does not visit: no stale steps there
   // for the warp statistics (as markSlotEmpty after a sort).
   if (kCompact) f.hits.steps.v[i] = 0u;

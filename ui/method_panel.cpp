@@ -71,6 +71,9 @@ void drawSortSection(Settings& s, const ViewOptions& view) {
     ImGui::SetTooltip("shade packs the live paths at the front, so later stages visit only live paths (compute wavefront only)");
   if (s.compaction != Compaction::None && !s.compacts())
     ImGui::TextDisabled("compaction: only the compute wavefront compacts");
+  comboSetting("trace + shade", s, &Settings::traceShade, {TraceShade::Split, TraceShade::Fused});
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("fused: one dispatch per bounce where nothing reads the hit in between (compute wavefront)");
   comboSetting("kernel", s, &Settings::kernel, {Kernel::Wavefront, Kernel::Megakernel});
   if (s.kernel == Kernel::Megakernel) ImGui::TextDisabled("the megakernel never sorts");
   // The rt tracer and SER need extensions the device may lack: greyed out with the reason.

@@ -41,6 +41,7 @@ MethodKey methodKeyOf(const Settings& s) {
     return k;
   }
   if (s.tracer == Tracer::Compute) k.compaction = s.compaction;  // elsewhere it does nothing
+  if (s.fusesTraceShade()) k.traceShade = s.traceShade;
   if (!s.sorts() || s.sortPolicy == SortPolicy::Never) {
     k.baseline = Baseline::Unsorted;
     return k;
@@ -67,7 +68,8 @@ MethodKey methodKeyOf(const Settings& s) {
 
 std::string describe(const MethodKey& k) {
   std::string tracer = k.tracer == Tracer::Rt ? " rt" : "";
-  const std::string compaction = k.compaction != Settings{}.compaction ? " compaction " + toString(k.compaction) : "";
+  const std::string compaction = (k.compaction != Settings{}.compaction ? " compaction " + toString(k.compaction) : "") +
+                                 (k.traceShade != Settings{}.traceShade ? " trace-shade " + toString(k.traceShade) : "");
   if (k.baseline == Baseline::Unsorted) return "unsorted" + tracer + compaction;
   if (k.baseline == Baseline::Megakernel) {
     std::string text = "megakernel" + tracer;
@@ -152,7 +154,8 @@ void SpeedAccuracyBook::record(const Settings& rendered, const FrameStats& stats
   SpeedAccuracyPoint& p = *it;
   ++p.frames;
   p.lastSeen = ++frame_;
-  if (hasStage(stats, "trace")) p.traceMs.add(stats.stageTotal("trace"));
+  // A fused trace and shade has no trace time of its own to put on the axis.
+  if (hasStage(stats, "trace") && !hasStage(stats, "trace+shade")) p.traceMs.add(stats.stageTotal("trace"));
   p.reorderMs.add(stats.stageTotal("learn") + stats.stageTotal("keys") + stats.stageTotal("sort") +
                   stats.stageTotal("reorder") + stats.stageTotal("oracle-trace"));
   p.frameMs.add(stats.frameMs);

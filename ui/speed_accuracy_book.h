@@ -40,6 +40,7 @@ struct MethodKey {
   Fusion fusion = Settings{}.fusion;  // Settings::fusion where the tracer applies it (the default elsewhere)
   // Settings::compaction where the tracer applies it (the compute wavefront; the default elsewhere).
   Compaction compaction = Settings{}.compaction;
+  TraceShade traceShade = Settings{}.traceShade;  // Settings::traceShade where the tracer applies it
   bool operator==(const MethodKey&) const = default;
 };
 

@@ -15,6 +15,7 @@ ImU32 stageColor(const std::string& stage) {
       {"accumulate", IM_COL32(200, 200, 200, 255)}, {"tonemap", IM_COL32(90, 90, 200, 255)},
       {"megakernel", IM_COL32(230, 130, 40, 255)}, {"setup", IM_COL32(100, 100, 100, 255)},
       {"counters", IM_COL32(140, 110, 80, 255)},  {"unattributed", IM_COL32(60, 60, 60, 255)},
+      {"trace+shade", IM_COL32(155, 120, 145, 255)},
   };
   if (auto it = known.find(stage); it != known.end()) return it->second;
   size_t h = std::hash<std::string>{}(stage);

@@ -59,7 +59,7 @@ void SortPolicyModel::record(const SortPlan& plan, const std::vector<StageTime>&
   for (const StageTime& st : stages) {
     if (st.bounce < 0 || size_t(st.bounce) >= bounces) continue;
     const size_t b = size_t(st.bounce);
-    if (st.stage == "trace" || st.stage == "shade") next[b] += st.ms;
+    if (st.stage == "trace" || st.stage == "shade" || st.stage == "trace+shade") next[b] += st.ms;
     else if (st.stage == "keys" || st.stage == "oracle-trace" || st.stage == "sort" || st.stage == "reorder")
       cost[b] += st.ms;
     else if (st.stage == "learn" && b >= 1) cost[b - 1] += st.ms;  // learning the rays sorted after b-1

@@ -50,6 +50,7 @@ const std::vector<Case>& cases() {
       {"learnEvery", [](Settings& s) { s.learnEvery = 4; }, wants(false, false, false, false)},
       {"fusion", [](Settings& s) { s.fusion = Fusion::Both; }, wants(false, false, false, false)},
       {"compaction", [](Settings& s) { s.compaction = Compaction::None; }, wants(false, false, false, false)},
+      {"traceShade", [](Settings& s) { s.traceShade = TraceShade::Fused; }, wants(false, false, false, false)},
       {"grid", [](Settings& s) { s.grid.autoCells = 32; }, wants(false, false, true, true)},
       {"clampToCamera", [](Settings& s) { s.clampToCamera = true; }, wants(false, false, true, true)},
       {"clampDistance", [](Settings& s) { s.clampDistance = 5.0f; }, wants(false, false, true, true)},

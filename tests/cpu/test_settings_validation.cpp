@@ -45,8 +45,11 @@ TEST(SettingsValidation, DefaultsAndTheirJsonAreValid) {
   old = toJson(Settings{});
   old.erase("compaction");
   EXPECT_EQ(settingsFromJson(old).compaction, Compaction::None);
+  old.erase("trace_shade");  // ... and before Settings::traceShade, trace and shade were always apart
+  EXPECT_EQ(settingsFromJson(old).traceShade, TraceShade::Split);
   Settings packed;
-  packed.compaction = Compaction::Shade;
+  packed.compaction = Compaction::None;
+  packed.traceShade = TraceShade::Fused;
   EXPECT_EQ(settingsFromJson(toJson(packed)), packed);
 }
 
@@ -65,6 +68,7 @@ TEST(SettingsValidation, HostileSidecarValuesAreRefusedLikeTheCommandLine) {
   EXPECT_NE(jsonError("width", "wide").find("'width' must be a number"), std::string::npos);
   EXPECT_EQ(jsonError("fusion", "sideways"), "settings: 'fusion' must be none, keys, gather or both, got \"sideways\"");
   EXPECT_EQ(jsonError("compaction", "always"), "settings: 'compaction' must be none or shade, got \"always\"");
+  EXPECT_EQ(jsonError("trace_shade", "both"), "settings: 'trace_shade' must be split or fused, got \"both\"");
   // The tile sort needs the finished paths packed out first: refused without compaction, with keys made in
   // shade (which does not compact) and on the rt tracer; fine where nothing sorts.
   Settings tile;

@@ -30,6 +30,7 @@ expect 2 render --sort-bits 33
 expect 2 render --sort-bits -1
 expect 2 render --fusion sideways
 expect 2 render --compaction always
+expect 2 render --trace-shade together
 expect 2 render --strategy fixed --sort tile --compaction none
 expect 2 render --learn-every 0
 expect 2 render --learn-every 65
