@@ -30,6 +30,10 @@ enum class KeyStrategy {
 // sorts each tile of SORT_BITONIC_TILE consecutive slots on its own, one dispatch; the finished paths must
 // have been packed behind the live ones first (Settings::compaction, every sorted bounce), so it needs
 // compaction=shade on the compute tracer and no keys made in shade (settingsError says so).
+// Measured on an H200 (docs/results/h200-tile): 0.04-0.14 ms a sorted bounce against 0.10-0.16 for the global
+// radix sort of two-point keys, but it keeps almost none of the trace gain (hall, 4 bounces, trace of bounces
+// >= 1: 2.12 ms unsorted, 1.49 radix, 1.96 tile), so every frame is slower than unsorted. Kept as a setting
+// for the record; the auto policy declines it.
 enum class SortAlgorithm { None, Bitonic, Radix, Tile };
 
 // What the display shows instead of the render (per pixel, for one bounce).
@@ -83,6 +87,10 @@ enum class Fusion { None, Keys, Gather, Both };
 // stages (trace, shade, and keys, sort and reorder where a sort follows) visit only live paths, in full
 // warps. Every bounce but the last, sorted or not, except where shade makes the keys (Fusion::Keys). Same
 // image bit for bit (a path's id, not its slot, picks its pixel and random numbers).
+// Measured on an H200 (docs/results/h200-compaction): the unsorted frame 0.70-0.97x (openings at 8 bounces to
+// the hall at 4), more than sorting ever gained there; on lavapipe 0.62-0.90x on alley, openings and Sponza.
+// So it is the default. With coarse keys (fixed, 8 sorted bits) the sorted frames lose 0.1-0.2 ms: the stable
+// sort keeps equal keys in slot order, which compaction scrambles at subgroup granularity.
 enum class Compaction { None, Shade };
 // The compute wavefront's trace and shade of a bounce as two dispatches (`split`: the hit goes through memory
 // between them) or one (`fused`: shade.comp traces the ray it loaded, timed as the stage "trace+shade"): no hit
@@ -90,6 +98,9 @@ enum class Compaction { None, Shade };
 // nothing reads the hits between trace and shade (length-cache learning after a sort, detailed statistics, a
 // heatmap of that bounce, keys made in shade, a trace that gathers after a sort); those bounces stay split.
 // Same image bit for bit (the same traversal of the same floats).
+// Measured on an H200 (docs/results/h200-trace-shade): unsorted frames 0.92-0.99x, sorted ones never slower;
+// with compaction the unsorted wavefront is then within 5% of the megakernel but on the hall at 4 bounces.
+// The default stays split, the per-stage view the timing panel teaches; use fused for GPU measurements.
 enum class TraceShade { Split, Fused };
 
 const std::vector<KeyStrategy>& allKeyStrategies();
