@@ -51,6 +51,15 @@ json toJson(const Settings& s) {
 
 // Numbers are range-checked as JSON numbers, before they become uint32_t or float (-5 must not wrap to
 // 4294967291, 1e300 must not become inf), with the command line's ranges and messages.
+// A field of `j` older sidecars may lack: `absent` then, else one of the names `parse` takes.
+template <class E>
+E optionalEnum(const json& j, const char* key, E absent, std::optional<E> (*parse)(const std::string&), const char* names) {
+  if (!j.contains(key)) return absent;
+  std::optional<E> value = parse(j.at(key).get<std::string>());
+  if (!value) throw SettingsError(std::string("settings: '") + key + "' must be " + names + ", got " + j.at(key).dump());
+  return *value;
+}
+
 Settings settingsFromJson(const json& j) {
   Settings s;
   namespace R = ranges;
@@ -98,29 +107,12 @@ Settings settingsFromJson(const json& j) {
     }
     // Older sidecars have no sort bits: they sorted all of them.
     if (j.contains("sort_bits")) s.sortBits = uintField("sort_bits", R::sortBits);
-    // Older sidecars have no fusion: every reorder stage was a pass of its own.
-    s.fusion = Fusion::None;
-    if (j.contains("fusion")) {
-      auto fusion = parseFusion(j.at("fusion").get<std::string>());
-      if (!fusion) throw SettingsError("settings: 'fusion' must be none, keys, gather or both, got " + j.at("fusion").dump());
-      s.fusion = *fusion;
-    }
-    // Older sidecars have no compaction: finished paths stayed in their slots.
-    s.compaction = Compaction::None;
-    if (j.contains("compaction")) {
-      auto compaction = parseCompaction(j.at("compaction").get<std::string>());
-      if (!compaction)
-        throw SettingsError("settings: 'compaction' must be none or shade, got " + j.at("compaction").dump());
-      s.compaction = *compaction;
-    }
-    // Older sidecars have no trace_shade: trace and shade were always two dispatches.
-    s.traceShade = TraceShade::Split;
-    if (j.contains("trace_shade")) {
-      auto traceShade = parseTraceShade(j.at("trace_shade").get<std::string>());
-      if (!traceShade)
-        throw SettingsError("settings: 'trace_shade' must be split or fused, got " + j.at("trace_shade").dump());
-      s.traceShade = *traceShade;
-    }
+    // Older sidecars lack these; the value is what those versions did. Without fusion every reorder stage was
+    // a pass of its own, without compaction finished paths stayed in their slots, and without trace_shade
+    // trace and shade were always two dispatches.
+    s.fusion = optionalEnum(j, "fusion", Fusion::None, &parseFusion, "none, keys, gather or both");
+    s.compaction = optionalEnum(j, "compaction", Compaction::None, &parseCompaction, "none or shade");
+    s.traceShade = optionalEnum(j, "trace_shade", TraceShade::Split, &parseTraceShade, "split or fused");
     const json& grid = need("grid");
     if (grid.is_string() && grid.get<std::string>() != "auto")
       throw SettingsError("settings: 'grid' must be \"auto\" or [x, y, z], got " + grid.dump());

@@ -31,6 +31,19 @@ inline std::vector<glm::vec3> renderRadiance(const VulkanContext& ctx, const Sce
   return tracer.readRadiance();
 }
 
+// Renders one frame in slices of growing size (97, 161, 225, ... paths, one submission each, as the window
+// does) and returns the accumulated radiance; `slices` gets how many there were.
+inline std::vector<glm::vec3> renderRadianceInSlices(const VulkanContext& ctx, const Scene& scene, const Settings& settings,
+                                                     const Viewpoint& view, uint32_t& slices) {
+  PathTracer parts(ctx, scene, settings, view);
+  slices = 0;
+  for (const FrameStats* done = nullptr; !done; ++slices) {
+    ctx.submitAndWait([&](VkCommandBuffer cmd) { parts.recordSlice(cmd, 97 + 64 * slices); });
+    done = parts.finishSlice(1.0);
+  }
+  return parts.readRadiance();
+}
+
 // Bit for bit: no tolerance. `what` names the variant in the failure message.
 inline void expectSameImage(const std::vector<glm::vec3>& got, const std::vector<glm::vec3>& want, const std::string& what) {
   ASSERT_EQ(got.size(), want.size()) << what;

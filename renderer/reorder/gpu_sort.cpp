@@ -232,16 +232,17 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
 // Each tile of SORT_BITONIC_TILE pairs sorted alone in shared memory: bitonic's first dispatch, no merges.
 void GpuSorter::recordTiles(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                             uint32_t keyBits, VkDeviceAddress countLimit) {
-  const uint32_t tiles = ceilDiv(count, SORT_BITONIC_TILE);
-  const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
-  gpu::SortBitonicPush push{};
-  push.keys = keys;
-  push.values = values;
-  push.count = count;
-  push.keyBits = keyBits;
-  push.mode = 0;
+  gpu::SortBitonicPush push{keys, values, count, keyBits};
   push.hasCountLimit = countLimit != 0 ? 1 : 0;
   push.countLimit = countLimit;
+  recordLocal(cmd, push, 0);
+}
+
+// sort_bitonic_local in `mode` over every tile holding real elements (dispatches split at the group limit).
+void GpuSorter::recordLocal(VkCommandBuffer cmd, gpu::SortBitonicPush push, uint32_t mode) const {
+  const uint32_t tiles = ceilDiv(push.count, SORT_BITONIC_TILE);
+  const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
+  push.mode = mode;
   for (uint32_t first = 0; first < tiles; first += maxGroups) {
     push.tileOffset = first;
     bitonicLocal_.dispatchGroups(cmd, push, std::min(maxGroups, tiles - first));
@@ -251,21 +252,9 @@ void GpuSorter::recordTiles(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
 void GpuSorter::recordBitonic(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                               uint32_t keyBits) {
   const uint32_t paddedLog = static_cast<uint32_t>(std::bit_width(count - 1u));  // 2^paddedLog >= count
-  const uint32_t tiles = ceilDiv(count, SORT_BITONIC_TILE);                      // tiles holding real elements
   const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
-  gpu::SortBitonicPush push{};
-  push.keys = keys;
-  push.values = values;
-  push.count = count;
-  push.keyBits = keyBits;
-  auto local = [&](uint32_t mode) {
-    push.mode = mode;
-    for (uint32_t first = 0; first < tiles; first += maxGroups) {
-      push.tileOffset = first;
-      bitonicLocal_.dispatchGroups(cmd, push, std::min(maxGroups, tiles - first));
-    }
-  };
-  local(0);
+  gpu::SortBitonicPush push{keys, values, count, keyBits};
+  recordLocal(cmd, push, 0);
   // Merges of blocks larger than a tile: the steps that cross tiles one dispatch each, then the rest in
   // shared memory.
   for (uint32_t blockLog = SORT_BITONIC_TILE_LOG + 1; blockLog <= paddedLog; ++blockLog) {
@@ -282,7 +271,7 @@ void GpuSorter::recordBitonic(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevic
       bitonicGlobal_.dispatchGroups(cmd, push, groups);
     }
     computeBarrier(cmd);
-    local(1);
+    recordLocal(cmd, push, 1);
   }
 }
 

@@ -27,6 +27,7 @@
 #include "renderer/vk/compute_pipeline.h"
 #include "renderer/vk/gpu_buffer.h"
 #include "renderer/settings.h"
+#include "shaders/sort_types.h"
 
 namespace raylab {
 
@@ -88,6 +89,7 @@ class GpuSorter {
                      uint32_t keyBits);
   void recordTiles(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                    uint32_t keyBits, VkDeviceAddress countLimit);
+  void recordLocal(VkCommandBuffer cmd, gpu::SortBitonicPush push, uint32_t mode) const;
 
   const VulkanContext* ctx_ = nullptr;
   SortAlgorithm algorithm_ = SortAlgorithm::None;

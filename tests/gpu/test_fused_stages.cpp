@@ -138,14 +138,10 @@ TEST_P(FusedStages, SlicedFusedFramesRenderTheWholeFrameImage) {
   s.sort = GetParam();
   s.fusion = Fusion::Both;
   const std::vector<glm::vec3> whole = renderRadiance(ctx(), scene, s, view);
-  PathTracer parts(ctx(), scene, s, view);
   uint32_t slices = 0;
-  for (const FrameStats* done = nullptr; !done; ++slices) {
-    ctx().submitAndWait([&](VkCommandBuffer cmd) { parts.recordSlice(cmd, 97 + 64 * slices); });
-    done = parts.finishSlice(1.0);
-  }
+  const std::vector<glm::vec3> sliced = renderRadianceInSlices(ctx(), scene, s, view, slices);
   EXPECT_GT(slices, 2u);
-  expectSameImage(parts.readRadiance(), whole, "average fused both, in slices,");
+  expectSameImage(sliced, whole, "average fused both, in slices,");
 }
 
 INSTANTIATE_TEST_SUITE_P(Sorts, FusedStages, ::testing::Values(SortAlgorithm::Radix, SortAlgorithm::Bitonic),

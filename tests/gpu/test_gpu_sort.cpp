@@ -245,6 +245,30 @@ TEST_F(GpuSortTest, RejectsCountOverCapacity) {
                std::exception);
 }
 
+// Keys, values 0..n-1 and a device-side count limit on the device, for the sorts that honour the limit.
+struct LimitedSort {
+  LimitedSort(const VulkanContext& ctx, const std::vector<uint32_t>& keys, uint32_t limit)
+      : ctx(&ctx),
+        values(iota(keys.size())),
+        keyBuf(makeBufferFrom(ctx, keys)),
+        valueBuf(makeBufferFrom(ctx, values)),
+        limitBuf(makeBufferFrom(ctx, std::vector<uint32_t>{limit})) {}
+  void sortWith(GpuSorter& sorter, uint32_t keyBits) {
+    const uint32_t n = static_cast<uint32_t>(values.size());
+    ctx->submitAndWait([&](VkCommandBuffer cmd) {
+      sorter.record(cmd, keyBuf.address(), valueBuf.address(), n, keyBits, limitBuf.address());
+    });
+  }
+  static std::vector<uint32_t> iota(size_t n) {
+    std::vector<uint32_t> v(n);
+    std::iota(v.begin(), v.end(), 0u);
+    return v;
+  }
+  const VulkanContext* ctx;
+  std::vector<uint32_t> values;
+  GpuBuffer keyBuf, valueBuf, limitBuf;
+};
+
 // A device-side count limit (the live prefix): the portable radix sort orders only the first
 // min(count, limit) pairs, stably, and leaves every pair past it untouched; odd and even pass counts
 // (16 and 12 bits: 3 passes copied back, 2 passes), limits inside a tile, on a tile edge, 0, 1 and past count.
@@ -254,14 +278,10 @@ TEST_F(GpuSortTest, RadixSortsOnlyUpToDeviceCountLimit) {
   for (uint32_t bits : {12u, 16u}) {
     for (uint32_t limit : {0u, 1u, 777u, 2 * tile, 2 * tile + 1, 50000u, n, n + 5}) {
       const std::vector<uint32_t> keys = makeKeys(Dist::Dead12, n, limit + bits);
-      std::vector<uint32_t> values(n);
-      std::iota(values.begin(), values.end(), 0u);
-      GpuBuffer keyBuf = makeBufferFrom(ctx(), keys);
-      GpuBuffer valueBuf = makeBufferFrom(ctx(), values);
-      GpuBuffer limitBuf = makeBufferFrom(ctx(), std::vector<uint32_t>{limit});
-      ctx().submitAndWait([&](VkCommandBuffer cmd) {
-        sorter(Variant::Radix).record(cmd, keyBuf.address(), valueBuf.address(), n, bits, limitBuf.address());
-      });
+      LimitedSort in(ctx(), keys, limit);
+      std::vector<uint32_t>& values = in.values;
+      GpuBuffer &keyBuf = in.keyBuf, &valueBuf = in.valueBuf;
+      in.sortWith(sorter(Variant::Radix), bits);
       const uint32_t sorted = std::min(n, limit);
       std::vector<uint32_t> wantKeys = keys, wantValues = values;
       const std::vector<uint32_t> order =
@@ -286,16 +306,11 @@ TEST_F(GpuSortTest, TileSortSortsEachTileAlone) {
   GpuSorter tiles(ctx(), SortAlgorithm::Tile, n);
   for (uint32_t limit : {n, 2 * tile + 1, 2 * tile, 0u}) {
     const std::vector<uint32_t> keys = makeKeys(Dist::Dead12, n, limit);
-    std::vector<uint32_t> values(n);
-    std::iota(values.begin(), values.end(), 0u);
-    GpuBuffer keyBuf = makeBufferFrom(ctx(), keys);
-    GpuBuffer valueBuf = makeBufferFrom(ctx(), values);
-    GpuBuffer limitBuf = makeBufferFrom(ctx(), std::vector<uint32_t>{limit});
-    ctx().submitAndWait([&](VkCommandBuffer cmd) {
-      tiles.record(cmd, keyBuf.address(), valueBuf.address(), n, 12, limitBuf.address());
-    });
-    const std::vector<uint32_t> gotKeys = keyBuf.downloadVector<uint32_t>(n);
-    const std::vector<uint32_t> gotValues = valueBuf.downloadVector<uint32_t>(n);
+    LimitedSort in(ctx(), keys, limit);
+    const std::vector<uint32_t>& values = in.values;
+    in.sortWith(tiles, 12);
+    const std::vector<uint32_t> gotKeys = in.keyBuf.downloadVector<uint32_t>(n);
+    const std::vector<uint32_t> gotValues = in.valueBuf.downloadVector<uint32_t>(n);
     SCOPED_TRACE("limit " + std::to_string(limit));
     for (uint32_t begin = 0; begin < n; begin += tile) {
       const uint32_t end = std::min(n, begin + tile);
