@@ -20,8 +20,8 @@ int stageCount(const FrameStats& s, const std::string& stage) {
 }
 
 // Unsorted with and without compaction, and sorted: a strategy with and one without a length cache (which
-// learns from the sorted rays' hits, so those bounces stay split), the oracle, each reorder and keys in shade,
-// under the always and the auto policy, over two frames.
+// learns from the sorted rays' hits, so those bounces stay split), each reorder and keys in shade, under the
+// always and the auto policy, over two frames.
 TEST_F(TraceShade, FusedRendersTheSplitImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("openings");
@@ -35,7 +35,7 @@ TEST_F(TraceShade, FusedRendersTheSplitImage) {
     s.traceShade = raylab::TraceShade::Fused;
     expectSameImage(renderRadiance(ctx(), scene, s, view), split, "unsorted, compaction " + toString(compaction));
   }
-  for (KeyStrategy strategy : {KeyStrategy::Fixed, KeyStrategy::Average, KeyStrategy::Oracle})
+  for (KeyStrategy strategy : {KeyStrategy::Fixed, KeyStrategy::Average})
     for (Fusion fusion : {Fusion::None, Fusion::Gather, Fusion::Both})
       for (SortPolicy policy : {SortPolicy::Always, SortPolicy::Auto}) {
         Settings s = base;
