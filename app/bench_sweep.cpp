@@ -220,17 +220,17 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
       plain.kernel = Kernel::Wavefront;
       plain.strategy = KeyStrategy::None;
       plan.cells.push_back({ci, plain, prefix + "none"});
-      // The unsorted wavefront with each other compaction: the baseline a compacting tracer would have.
-      for (const std::string& compaction : axes.compactions) {
-        Settings packed = withFlag(plain, "--compaction", compaction);
-        if (packed.compaction != plain.compaction)
-          plan.cells.push_back({ci, packed, prefix + "none compaction=" + toString(packed.compaction)});
-      }
-      for (const std::string& traceShade : axes.traceShades) {
-        Settings fused = withFlag(plain, "--trace-shade", traceShade);
-        if (fused.traceShade != plain.traceShade)
-          plan.cells.push_back({ci, fused, prefix + "none trace-shade=" + toString(fused.traceShade)});
-      }
+      // The unsorted wavefront with each other value of an axis that changes it (compaction, trace and shade):
+      // a baseline of its own, labelled "none <flag>=<value>".
+      auto unsortedVariants = [&](const std::vector<std::string>& values, const std::string& flag, auto field) {
+        for (const std::string& value : values) {
+          Settings other = withFlag(plain, flag, value);
+          if (other.*field != plain.*field)
+            plan.cells.push_back({ci, other, prefix + "none " + flag.substr(2) + "=" + toString(other.*field)});
+        }
+      };
+      unsortedVariants(axes.compactions, "--compaction", &Settings::compaction);
+      unsortedVariants(axes.traceShades, "--trace-shade", &Settings::traceShade);
       for (const std::string& strategy : axes.strategies) {
         Settings st = withFlag(plain, "--strategy", strategy);
         if (st.strategy == KeyStrategy::None) continue;

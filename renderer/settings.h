@@ -209,8 +209,10 @@ struct Settings {
   bool fusesKeys() const { return sorts() && tracer == Tracer::Compute && strategy != KeyStrategy::Oracle &&
                                   (fusion == Fusion::Keys || fusion == Fusion::Both); }
   bool fusesGather() const { return sorts() && tracer == Tracer::Compute && (fusion == Fusion::Gather || fusion == Fusion::Both); }
-  // Settings::compaction as this tracer applies it: only the compute wavefront compacts.
+  // Settings::traceShade as this tracer applies it: only the compute wavefront, and not while counting SIMT
+  // lanes (the counting trace variant).
   bool fusesTraceShade() const { return traceShade == TraceShade::Fused && kernel == Kernel::Wavefront && tracer == Tracer::Compute && !countSimt; }
+  // Settings::compaction as this tracer applies it: only the compute wavefront compacts.
   bool compacts() const { return compaction == Compaction::Shade && kernel == Kernel::Wavefront && tracer == Tracer::Compute; }
   bool sorts() const { return kernel == Kernel::Wavefront && strategy != KeyStrategy::None && sort != SortAlgorithm::None; }
   // SER runs only in the rt megakernel; elsewhere the setting is kept but does nothing.

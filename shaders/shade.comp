@@ -26,16 +26,11 @@
 #include "path_shading.glsl"
 #include "path_stage.glsl"
 #include "keys.glsl"
+#include "ray_counting.glsl"
 
 layout(constant_id = 1) const uint kKeyStrategy = RL_KEY_NONE;
 layout(constant_id = 2) const bool kCompact = false;
 layout(constant_id = 3) const bool kTraceFirst = false;
-
-// trace.comp's ray count (RL_COUNTER_RAYS of this bounce): one atomic per subgroup for its live lanes.
-void countTracedRay(GpuFrame f) {
-  uint lanes = subgroupBallotBitCount(subgroupBallot(true));
-  if (subgroupElect()) atomicAdd(f.counters.v[pc.bounce * RL_COUNTER_STRIDE + RL_COUNTER_RAYS], lanes);
-}
 
 // keys.comp's output for slot i: the key and the slot as the sort's payload; the predicted length.
 void storeKey(GpuFrame f, uint i, PathVars p, uint id, out float len) {
@@ -91,7 +86,9 @@ void main() {
   HitRecord hit;
   if (kTraceFirst) {
     hit = traceClosest(f.scene, p.origin, p.direction, 1e30);
-    countTracedRay(f);
+    gCounters = f.counters;  // as trace.comp counts: one ray for each live lane
+    gCounterBase = pc.bounce * RL_COUNTER_STRIDE;
+    countRays(1u);
   } else {
     hit = loadHit(f.hits, i);
   }

@@ -4,14 +4,9 @@
 #ifndef RAYLAB_SIMT_COUNTING_GLSL
 #define RAYLAB_SIMT_COUNTING_GLSL
 
-#extension GL_KHR_shader_subgroup_ballot : require
-#extension GL_KHR_shader_subgroup_arithmetic : require
+#include "ray_counting.glsl"
 
 layout(constant_id = 1) const bool kCountSimt = false;
-// The counters (GpuFrame::counters) and the first slot of this bounce's RL_COUNTER_STRIDE words; set both
-// at the start of main().
-UintBuf gCounters;
-uint gCounterBase;
 #define RL_TRAVERSAL_STEP()                                                               \
   if (kCountSimt) {                                                                       \
     uint activeLanes = subgroupBallotBitCount(subgroupBallot(true));                      \
@@ -20,11 +15,5 @@ uint gCounterBase;
       atomicAdd(gCounters.v[gCounterBase + RL_COUNTER_SIMT_SLOTS], 1u);                   \
     }                                                                                     \
   }
-
-// Adds each lane's ray count to the RL_COUNTER_RAYS slot with one atomic per subgroup.
-void countRays(uint rays) {
-  uint total = subgroupAdd(rays);
-  if (subgroupElect() && total > 0u) atomicAdd(gCounters.v[gCounterBase + RL_COUNTER_RAYS], total);
-}
 
 #endif

@@ -68,9 +68,10 @@ MethodKey methodKeyOf(const Settings& s) {
 
 std::string describe(const MethodKey& k) {
   std::string tracer = k.tracer == Tracer::Rt ? " rt" : "";
-  const std::string compaction = (k.compaction != Settings{}.compaction ? " compaction " + toString(k.compaction) : "") +
-                                 (k.traceShade != Settings{}.traceShade ? " trace-shade " + toString(k.traceShade) : "");
-  if (k.baseline == Baseline::Unsorted) return "unsorted" + tracer + compaction;
+  // The wavefront's own options where they differ from the default (unsorted and sorted alike).
+  const std::string wavefront = (k.compaction != Settings{}.compaction ? " compaction " + toString(k.compaction) : "") +
+                                (k.traceShade != Settings{}.traceShade ? " trace-shade " + toString(k.traceShade) : "");
+  if (k.baseline == Baseline::Unsorted) return "unsorted" + tracer + wavefront;
   if (k.baseline == Baseline::Megakernel) {
     std::string text = "megakernel" + tracer;
     if (k.ser != Ser::Off) text += " ser-" + toString(k.ser);
@@ -92,7 +93,7 @@ std::string describe(const MethodKey& k) {
   if (k.sortBits != 0) text += " | bits " + std::to_string(k.sortBits);
   if (k.learnEvery > 1) text += " | learn 1/" + std::to_string(k.learnEvery);
   if (k.fusion != Settings{}.fusion) text += " | fused " + toString(k.fusion);
-  if (!compaction.empty()) text += " |" + compaction;
+  if (!wavefront.empty()) text += " |" + wavefront;
   return text;
 }
 
