@@ -4,7 +4,6 @@
 #include <chrono>
 #include <filesystem>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <optional>
 
@@ -14,6 +13,7 @@
 #include "app/scene_setup.h"
 #include "app/sidecar.h"
 #include "renderer/heatmap_rules.h"
+#include "renderer/checked_write.h"
 #include "renderer/path_tracer.h"
 #include "renderer/png_writer.h"
 #include "renderer/rt_tracer.h"
@@ -102,7 +102,7 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
   // A heatmap carries its legend, and says headless what it shows (or why it shows nothing).
   const HeatmapStats& heat = tracer.stats().heatmap;
   const LegendImage image = withHeatmapLegend(tracer.readImage(), s.width, s.height, heat);
-  writePng(options.out, image.width, image.height, image.rgba);
+  writePng(options.out, image.width, image.height, image.rgba);  // throws WriteError: main reports it, exit 1
   if (!heat.view.empty()) std::printf("heatmap %s\n", heatmapLegendLine(heat).c_str());
   if (!heat.emptyReason.empty())
     std::fprintf(stderr, "raylab render: heatmap %s shows nothing: %s\n", heat.view.c_str(), heat.emptyReason.c_str());
@@ -127,7 +127,7 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
                           {"rays_traced", rays},
                           {"rays_per_second", seconds > 0 ? rays / seconds : 0.0},
                           {"frames", frames}};
-    std::ofstream(options.statsPath) << doc.dump(2) << "\n";
+    writeFileChecked(options.statsPath, doc.dump(2) + "\n");  // throws WriteError: main reports it, exit 1
     std::printf("stats in %s\n", options.statsPath.c_str());
   }
   if (ctx.validationErrors() > 0) {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
-#include <fstream>
 #include <memory>
 #include <numeric>
 #include <random>
@@ -13,6 +12,7 @@
 
 #include "app/cli_options.h"
 #include "app/scene_setup.h"
+#include "renderer/checked_write.h"
 #include "renderer/reorder/gpu_sort.h"
 #include "renderer/vk/gpu_buffer.h"
 #include "renderer/vk/gpu_timer.h"
@@ -187,14 +187,17 @@ double timeOnce(const VulkanContext& ctx, GpuTimer& timer, GpuSorter& sorter, co
   return times.empty() ? 0.0 : times.front().ms;
 }
 
-void printRow(std::FILE* f, const Row& r, bool csv, const std::string& extra = "") {
+// One row: the table's line on the terminal, or a CSV line (with `extra` columns) for --csv.
+std::string formatRow(const Row& r, bool csv, const std::string& extra = "") {
   const double pairsPerSec = r.medianMs > 0 ? r.n / (r.medianMs * 1e-3) : 0.0;
+  char line[512];
   if (csv)
-    std::fprintf(f, "%s,%u,%.6f,%.6f,%.6f,%.0f,%s%s\n", r.sort.c_str(), r.n, r.medianMs, r.minMs, r.maxMs,
-                 pairsPerSec, r.ok ? "ok" : "MISMATCH", extra.c_str());
+    std::snprintf(line, sizeof(line), "%s,%u,%.6f,%.6f,%.6f,%.0f,%s", r.sort.c_str(), r.n, r.medianMs, r.minMs,
+                  r.maxMs, pairsPerSec, r.ok ? "ok" : "MISMATCH");
   else
-    std::fprintf(f, "%-8s %10u %11.4f %11.4f %11.4f %12.1f  %s\n", r.sort.c_str(), r.n, r.medianMs, r.minMs,
-                 r.maxMs, pairsPerSec * 1e-6, r.ok ? "ok" : "MISMATCH");
+    std::snprintf(line, sizeof(line), "%-8s %10u %11.4f %11.4f %11.4f %12.1f  %s", r.sort.c_str(), r.n, r.medianMs,
+                  r.minMs, r.maxMs, pairsPerSec * 1e-6, r.ok ? "ok" : "MISMATCH");
+  return line + (csv ? extra : std::string()) + "\n";
 }
 
 int runBench(const BenchOptions& o) {
@@ -252,26 +255,21 @@ int runBench(const BenchOptions& o) {
       row.minMs = ms.front();
       row.maxMs = ms.back();
       row.medianMs = ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
-      printRow(stdout, row, false);
+      std::fputs(formatRow(row, false).c_str(), stdout);
       std::fflush(stdout);
       rows.push_back(row);
     }
   }
   if (!o.csv.empty()) {
-    std::FILE* f = std::fopen(o.csv.c_str(), "w");
-    if (!f) {
-      std::fprintf(stderr, "raylab sortbench: cannot write %s\n", o.csv.c_str());
-      return kExitFailure;
-    }
-    std::fprintf(f, "sort,n,median_ms,min_ms,max_ms,pairs_per_s,check,bits,dist,repeat,device,driver\n");
+    std::string csv = "sort,n,median_ms,min_ms,max_ms,pairs_per_s,check,bits,dist,repeat,device,driver\n";
     auto quoted = [](std::string s) {
       std::replace(s.begin(), s.end(), '"', '\'');
       return "\"" + s + "\"";
     };
     const std::string extra = "," + std::to_string(o.bits) + "," + o.dist + "," + std::to_string(o.repeat) + "," +
                               quoted(dev.name) + "," + quoted(dev.driver);
-    for (const Row& r : rows) printRow(f, r, true, extra);
-    std::fclose(f);
+    for (const Row& r : rows) csv += formatRow(r, true, extra);
+    writeFileChecked(o.csv, csv);  // a WriteError is reported by runSortBenchCommand: exit 1
   }
   if (o.validate && ctx.validationErrors() > 0) {
     std::fprintf(stderr, "raylab sortbench: the validation layer reported %u errors\n", ctx.validationErrors());

@@ -1,10 +1,8 @@
 #include "app/window_command.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 
 #include "app/command_errors.h"
 #include "app/config_dir.h"
@@ -13,6 +11,7 @@
 #include "app/sidecar.h"
 #include "app/ui_script.h"
 #include "app/window/window_options.h"
+#include "renderer/checked_write.h"
 
 #ifdef RAYLAB_WITH_WINDOW
 #include "app/window/glfw_window.h"
@@ -45,9 +44,11 @@ bool isWindowValueFlag(const std::string& a) {
 
 // The frame log is opened here once, so a file that cannot be written is a usage error before any window.
 std::string checkedFrameLog(const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) throw UsageError("--frame-log: cannot write " + path + ": " + std::strerror(errno));
-  std::fclose(f);
+  try {
+    AppendFile(path, AppendFile::Start::Empty).close();
+  } catch (const WriteError& e) {
+    throw UsageError(std::string("--frame-log: ") + e.what());
+  }
   return path;
 }
 

@@ -40,6 +40,17 @@ void drawScene(const CameraModel& m, UiRequests& r) {
   }
 }
 
+// Like the load warnings, a folded list with its count; open and red, because what failed is lost.
+void drawWriteFailures(const CameraModel& m) {
+  if (m.writeFailures.empty()) return;
+  std::string header = std::to_string(m.writeFailures.size()) + " failed write" + (m.writeFailures.size() == 1 ? "" : "s") +
+                       "###writefailures";
+  if (!ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::BeginChild("write failures", ImVec2(0, 80), true, ImGuiWindowFlags_HorizontalScrollbar);
+  for (const std::string& f : m.writeFailures) errorText(f);
+  ImGui::EndChild();
+}
+
 void drawViewpoints(const CameraModel& m, UiRequests& r) {
   for (size_t i = 0; i < m.viewpoints.size(); ++i) {
     if (i > 0 && ImGui::GetContentRegionAvail().x > ImGui::CalcTextSize(m.viewpoints[i].c_str()).x + 20) ImGui::SameLine();
@@ -91,6 +102,7 @@ UiRequests drawCameraScenePanel(const CameraModel& m) {
     return r;
   }
   ImGui::TextDisabled("%s", m.deviceName.c_str());
+  drawWriteFailures(m);
   if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) drawScene(m, r);
   if (ImGui::CollapsingHeader("Viewpoints", ImGuiTreeNodeFlags_DefaultOpen)) drawViewpoints(m, r);
   if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) drawCamera(m, r);

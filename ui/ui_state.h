@@ -37,6 +37,7 @@ struct CameraModel {
   std::string cameraError; // last pasted camera that did not parse
   std::string screenshotDir;
   std::string lastScreenshot;  // what the last screenshot wrote, or why it failed
+  std::vector<std::string> writeFailures;  // every file the window could not write (shots, imgui.ini, frame log)
   std::string deviceName;
 };
 

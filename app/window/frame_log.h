@@ -4,10 +4,10 @@
 #pragma once
 
 #include <cstdint>
-#include <cstdio>
 #include <string>
 
 #include "app/window/live_render.h"
+#include "renderer/checked_write.h"
 
 namespace raylab {
 
@@ -23,16 +23,17 @@ struct UiFrameRecord {
 
 class FrameLog {
  public:
-  // Opens (truncates) `path`; throws std::runtime_error naming the file and the reason when it cannot.
+  // Opens (truncates) `path`; throws WriteError naming the file and the reason when it cannot.
   explicit FrameLog(const std::string& path);
-  ~FrameLog();
-  FrameLog(const FrameLog&) = delete;
-  FrameLog& operator=(const FrameLog&) = delete;
 
+  // One line, written whole (AppendFile: a log of a run that is killed still ends on a whole line) or
+  // WriteError. Not fsynced: one UI frame's line is not worth a disk flush.
   void write(const UiFrameRecord& r, const RenderTurn& turn);
+  void close() { file_.close(); }  // throws WriteError
+  const std::string& path() const { return file_.path(); }
 
  private:
-  std::FILE* file_ = nullptr;
+  AppendFile file_;
   uint64_t frames_ = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "app/window/imgui_layer.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include <imgui.h>
@@ -10,6 +11,7 @@
 #include "app/window/color_render_pass.h"
 #include "app/window/imgui_vulkan_compat.h"
 #include "app/window/swapchain.h"
+#include "renderer/checked_write.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
 #include "ui/settings_ini.h"
@@ -27,9 +29,8 @@ ImGuiSession::ImGuiSession(const std::string& iniPath, bool load, IniState* ini)
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::StyleColorsDark();
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = iniPath_.empty() ? nullptr : iniPath_.c_str();
-  if (!iniPath_.empty()) {  // ImGui writes the file but makes no folders (the config folder may be new)
+  ImGui::GetIO().IniFilename = nullptr;  // ImGui's own saves are unchecked: save() writes the file
+  if (!iniPath_.empty()) {  // the config folder may be new
     std::error_code error;
     std::filesystem::create_directories(std::filesystem::path(iniPath_).parent_path(), error);
   }
@@ -40,8 +41,31 @@ ImGuiSession::ImGuiSession(const std::string& iniPath, bool load, IniState* ini)
   else ImGui::LoadIniSettingsFromMemory("");
 }
 
-// DestroyContext writes imgui.ini (through the lab's handler too, so its IniState must still be alive).
-ImGuiSession::~ImGuiSession() { ImGui::DestroyContext(); }
+// The last save runs the lab's handler too, so its IniState must still be alive here.
+ImGuiSession::~ImGuiSession() {
+  if (!closed_)
+    if (std::string failure = save(); !failure.empty()) std::fprintf(stderr, "raylab: %s\n", failure.c_str());
+  ImGui::DestroyContext();
+}
+
+std::string ImGuiSession::save() {
+  size_t size = 0;
+  const char* text = ImGui::SaveIniSettingsToMemory(&size);  // also clears io.WantSaveIniSettings
+  if (iniPath_.empty()) return "";
+  try {
+    writeFileChecked(iniPath_, std::string_view(text, size));
+  } catch (const WriteError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string ImGuiSession::saveIfDue() { return ImGui::GetIO().WantSaveIniSettings ? save() : ""; }
+
+std::string ImGuiSession::close() {
+  closed_ = true;
+  return save();
+}
 
 ImGuiLayer::ImGuiLayer(const VulkanContext& ctx, GLFWwindow* window, const Swapchain& swapchain) : ctx_(ctx) {
   VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16};

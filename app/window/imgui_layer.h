@@ -18,16 +18,26 @@ struct IniState;
 
 // The ImGui context. Registers the lab's imgui.ini section in `ini` and reads the file now (before the
 // window exists: it holds the window's size and the settings to start from), unless `load` is false.
-// An empty path keeps no imgui.ini at all.
+// An empty path keeps no imgui.ini at all. ImGui itself writes no file (io.IniFilename is null): the
+// session saves imgui.ini through writeFileChecked, so a failed save is reported, never silent.
 class ImGuiSession {
  public:
   ImGuiSession(const std::string& iniPath, bool load, IniState* ini);
-  ~ImGuiSession();
+  ~ImGuiSession();  // saves imgui.ini unless close() did (a failure then goes to stderr only)
   ImGuiSession(const ImGuiSession&) = delete;
   ImGuiSession& operator=(const ImGuiSession&) = delete;
 
+  // Saves imgui.ini when ImGui asks for it (io.WantSaveIniSettings: a panel moved, at most every few
+  // seconds); returns the failure ("cannot write PATH: reason"), empty when saved or nothing was due.
+  std::string saveIfDue();
+  // The last save, at the end of the run; returns the failure, empty when saved.
+  std::string close();
+
  private:
-  std::string iniPath_;  // ImGui keeps the pointer
+  std::string save();
+
+  std::string iniPath_;
+  bool closed_ = false;
 };
 
 class ImGuiLayer {

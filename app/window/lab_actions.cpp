@@ -173,7 +173,7 @@ void LabWindow::saveScreenshots(const PresentedFrame& frame) {
       std::fprintf(stderr, "raylab: saved %s\n", path.c_str());
     } catch (const std::exception& e) {
       cameraModel_.lastScreenshot = std::string("screenshot failed: ") + e.what();
-      if (script_) throw;
+      reportWriteFailure(cameraModel_.lastScreenshot);
     }
     name.clear();
   };
@@ -183,6 +183,12 @@ void LabWindow::saveScreenshots(const PresentedFrame& frame) {
     cameraModel_.lastScreenshot = "this window cannot be read back (the surface has no TRANSFER_SRC usage)";
     pendingWindowShot_.clear();
   }
+}
+
+void LabWindow::reportWriteFailure(const std::string& message) {
+  std::fprintf(stderr, "raylab: %s\n", message.c_str());
+  cameraModel_.writeFailures.push_back(message);
+  panelsDirty_ = true;  // shown at once, not at the next input
 }
 
 }  // namespace raylab

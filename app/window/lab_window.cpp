@@ -161,9 +161,19 @@ int LabWindow::run() {
   loopMsTotal_ = msSince(started);
   vkDeviceWaitIdle(ctx_->device());
   printSummary();
+  if (std::string failure = imgui_.close(); !failure.empty()) reportWriteFailure(failure);
+  try {
+    if (frameLog_) frameLog_->close();
+  } catch (const WriteError& e) {
+    reportWriteFailure(e.what());
+  }
   if (ctx_->validationErrors() > 0) {
     std::fprintf(stderr, "raylab: %u validation errors\n", ctx_->validationErrors());
     return kExitValidation;
+  }
+  if (!cameraModel_.writeFailures.empty()) {
+    std::fprintf(stderr, "raylab: %zu writes failed (see above)\n", cameraModel_.writeFailures.size());
+    return kExitFailure;
   }
   return kExitOk;
 }
@@ -207,6 +217,7 @@ bool LabWindow::frame() {
     fillCameraModel();
     UiRequests requests = ui_.draw(settings_, view_, cameraModel_);
     ImGui::Render();
+    if (std::string failure = imgui_.saveIfDue(); !failure.empty()) reportWriteFailure(failure);
     handleRequests(requests);
     panelsDirtyNext = requests.redrawPanels;  // the correction shows in the next build
   }
@@ -243,7 +254,12 @@ bool LabWindow::frame() {
     r.presented = shown.rendered;
     r.restarted = restarted;
     r.framePaths = tracer_->framePaths();
-    frameLog_->write(r, turn);
+    try {
+      frameLog_->write(r, turn);
+    } catch (const WriteError& e) {
+      reportWriteFailure(std::string(e.what()) + " (the frame log stops here)");
+      frameLog_.reset();
+    }
   }
   if (!turn.frameDone) return true;
   // Statistics, screenshots and the script's frame count follow whole render frames only.

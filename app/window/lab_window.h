@@ -59,6 +59,9 @@ class LabWindow {
   bool gotoView(const std::string& name, std::string* error);
   bool applyCameraText(const std::string& text, std::string* error);
   void saveScreenshots(const PresentedFrame& frame);
+  // A file that could not be written: on stderr and in the scene panel; the window keeps running and
+  // exits 1 at the end (nothing lost without a word).
+  void reportWriteFailure(const std::string& message);
   void resetCamera(const Viewpoint& view);
 
   WindowOptions options_;

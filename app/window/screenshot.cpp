@@ -2,10 +2,10 @@
 
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 #include "app/heatmap_legend_image.h"
+#include "renderer/checked_write.h"
 #include "renderer/png_writer.h"
 
 namespace raylab {
@@ -25,9 +25,12 @@ std::string writeScreenshot(const std::string& dir, const std::string& name, con
   writePng(png.string(), image.width, image.height, image.rgba);
   content.image = png.filename().string();
   const fs::path json = fs::path(dir) / (name + ".json");
-  std::ofstream out(json);
-  out << makeSidecar(content).dump(2) << "\n";
-  if (!out) throw std::runtime_error("cannot write '" + json.string() + "'");
+  try {
+    writeFileChecked(json.string(), makeSidecar(content).dump(2) + "\n");
+  } catch (const WriteError&) {
+    fs::remove(png, error);  // a shot is its PNG and its sidecar, or nothing: a PNG alone cannot be re-rendered
+    throw;
+  }
   return png.string();
 }
 

@@ -8,7 +8,8 @@
 
 namespace raylab {
 
-// Writes DIR/NAME.png and DIR/NAME.json, creating DIR; returns the PNG's path. Throws std::runtime_error.
+// Writes DIR/NAME.png and DIR/NAME.json (both through writeFileChecked, and neither when one fails),
+// creating DIR; returns the PNG's path. Throws std::runtime_error (WriteError when a write failed).
 std::string writeScreenshot(const std::string& dir, const std::string& name, const std::vector<uint32_t>& rgba,
                             SidecarContent content);
 
