@@ -306,7 +306,11 @@ std::string benchHelp() {
          "  --warmup N                unmeasured frames first (default 2)\n"
          "  --reference-spp N         samples of the megakernel reference image (default 64)\n"
          "  --no-detail               skip the untimed counting frame (no SIMT/accuracy figures)\n"
-         "  --out-dir DIR             results.csv and results.jsonl (default bench-out)\n"
+         "  --out-dir DIR             results.jsonl (each cell as it ends), results.csv (at the end) and\n"
+         "                            sweep.json (the sweep and the git revision) (default bench-out)\n"
+         "  --resume DIR              continue a sweep that was killed: run only the cells not yet in\n"
+         "                            DIR/results.jsonl; the same flags as that sweep (or none: those in\n"
+         "                            DIR/sweep.json), at the same revision, else exit 2\n"
          "  --sweep FILE              the same flags as `name = value` lines\n"
          "The megakernel and the unsorted wavefront are always measured, per tracer. Charts of the results:\n"
          "  python3 app/bench_charts.py DIR   (needs matplotlib)\n";

@@ -1,0 +1,141 @@
+#include "app/bench_results.h"
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "renderer/git_revision.h"
+#include "renderer/stats_json.h"
+
+namespace raylab {
+namespace {
+
+const char* const kStages[] = {"generate", "trace", "learn", "shade", "keys", "oracle-trace", "sort", "reorder",
+                               "accumulate", "tonemap", "megakernel", "setup", "counters", "trace+shade"};
+
+// A cell's CSV columns by name, each formatted as an ostream formats it (6 significant digits).
+class CsvRow {
+ public:
+  template <typename T>
+  CsvRow& add(const std::string& column, const T& value) {
+    std::ostringstream text;
+    text << value;
+    values_[column] = text.str();
+    return *this;
+  }
+  const nlohmann::json& values() const { return values_; }
+
+ private:
+  nlohmann::json values_ = nlohmann::json::object();
+};
+
+std::string csvQuote(const std::string& s) { return "\"" + s + "\""; }
+
+nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
+                        const SceneFacts& scene, const CellResult& r) {
+  const Settings& s = cell.settings;
+  const auto& b = r.detailed.bounces;
+  CsvRow row;
+  row.add("device", csvQuote(ctx.info().name)).add("driver", csvQuote(ctx.info().driver)).add("git_revision", gitRevision());
+  row.add("scene", csvQuote(s.scene)).add("view", view).add("width", s.width).add("height", s.height);
+  row.add("bounces", s.bounces).add("spp_per_frame", s.sppPerFrame).add("kernel", toString(s.kernel));
+  row.add("tracer", toString(s.tracer)).add("ser", toString(s.ser));
+  row.add("ser_reordering_hint", s.reordersInHardware() ? ctx.info().serReorderingHint : "");
+  row.add("strategy", toString(s.strategy)).add("sort", toString(s.sort)).add("label", csvQuote(cell.label));
+  row.add("frame_ms_median", r.frameMs.median).add("frame_ms_min", r.frameMs.min).add("frame_ms_max", r.frameMs.max);
+  row.add("trace_after_first_ms", r.traceAfterFirstMs.median);
+  for (const char* st : kStages) row.add(std::string(st) + "_ms", r.stageMs.count(st) ? r.stageMs.at(st).median : 0.0);
+  // Figures of our traversal loop do not exist with the rt tracer: written as n/a, never as numbers.
+  auto loop = [&](double v) { return r.detailed.traversalStatsUnavailable.empty() ? std::to_string(v) : std::string("n/a"); };
+  row.add("rays_per_second", r.raysPerSecond);
+  row.add("simt_efficiency", loop(meanOverBounces(b, &BounceStats::simtEfficiency, false)));
+  row.add("virtual_warp_efficiency", loop(meanOverBounces(b, &BounceStats::virtualWarpEfficiency, false)));
+  row.add("virtual_warp_efficiency_after_first", loop(meanOverBounces(b, &BounceStats::virtualWarpEfficiency, true)));
+  row.add("prediction_error_mean", meanOverBounces(b, &BounceStats::predictionErrorMean, true));
+  row.add("prediction_error_median", meanOverBounces(b, &BounceStats::predictionErrorMedian, true));
+  row.add("cell_hit_rate", meanOverBounces(b, &BounceStats::cellHitRate, true));
+  row.add("key_bits", r.detailed.keyBits).add("length_cache_bytes", r.detailed.lengthCacheBytes);
+  row.add("final_rel_mse", r.finalRelMse).add("sort_policy", toString(s.sortPolicy));
+  // Which bounces the policy sorted after in the last timed frame, e.g. "YNY-" (- : the last bounce).
+  std::string sortedAfter;
+  for (size_t k = 0; k < r.sortedAfter.size(); ++k) sortedAfter += k + 1 == r.sortedAfter.size() ? '-' : r.sortedAfter[k] ? 'Y' : 'N';
+  row.add("sorted_after", sortedAfter);
+  row.add("triangles", scene.triangles).add("bvh_nodes", scene.bvhNodes).add("bvh_bytes", scene.bvhBytes);
+  row.add("scene_bytes", scene.sceneBytes).add("bvh_build_ms", scene.bvhBuildMs).add("scene_load_ms", scene.sceneLoadMs);
+  row.add("tracer_setup_ms", scene.tracerSetupMs).add("sort_bits", s.sortBits).add("learn_every", s.learnEvery);
+  row.add("fusion", toString(s.fusion)).add("compaction", toString(s.compaction)).add("trace_shade", toString(s.traceShade));
+  return row.values();
+}
+
+}  // namespace
+
+std::vector<std::string> benchCsvColumns() {
+  std::vector<std::string> columns{"device", "driver", "git_revision", "scene", "view", "width", "height", "bounces",
+                                   "spp_per_frame", "kernel", "tracer", "ser", "ser_reordering_hint", "strategy", "sort",
+                                   "label", "frame_ms_median", "frame_ms_min", "frame_ms_max", "trace_after_first_ms"};
+  for (const char* s : kStages) columns.push_back(std::string(s) + "_ms");
+  for (const char* c : {"rays_per_second", "simt_efficiency", "virtual_warp_efficiency",
+                        "virtual_warp_efficiency_after_first", "prediction_error_mean", "prediction_error_median",
+                        "cell_hit_rate", "key_bits", "length_cache_bytes", "final_rel_mse", "sort_policy", "sorted_after",
+                        "triangles", "bvh_nodes", "bvh_bytes", "scene_bytes", "bvh_build_ms", "scene_load_ms",
+                        "tracer_setup_ms", "sort_bits", "learn_every", "fusion", "compaction", "trace_shade"})
+    columns.push_back(c);
+  return columns;
+}
+
+nlohmann::json benchRecord(size_t cellIndex, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
+                           const SceneFacts& scene, const CellResult& r) {
+  return {{"cell", cellIndex},
+          {"device", toJson(ctx.info())},
+          {"git_revision", gitRevision()},
+          {"view", view},
+          {"label", cell.label},
+          {"settings", toJson(cell.settings)},
+          {"scene", toJson(scene)},
+          {"result", toJson(r)},
+          {"csv", csvRowOf(ctx, cell, view, scene, r)}};
+}
+
+BenchRecords readBenchRecords(const std::string& path) {
+  BenchRecords out;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return out;
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t start = 0;
+  for (int line = 1; start < text.size(); ++line) {
+    const size_t end = text.find('\n', start);
+    const bool last = end == std::string::npos;  // no newline: the line a kill cut off
+    nlohmann::json record = nlohmann::json::parse(text.substr(start, end == std::string::npos ? end : end - start),
+                                                  nullptr, /*allow_exceptions=*/false);
+    const bool whole = end != std::string::npos && record.is_object() && record.contains("cell") && record.contains("csv");
+    if (!whole) {
+      // A kill can cut the line being appended, and only that one: any other bad line is a damaged file.
+      if (last) {
+        out.droppedLastLine = true;
+        break;
+      }
+      throw std::runtime_error(path + ":" + std::to_string(line) + ": not a bench record (a damaged file?)");
+    }
+    out.records.push_back(std::move(record));
+    start = end + 1;
+    out.wholeBytes = start;
+  }
+  return out;
+}
+
+std::string benchCsv(const std::vector<nlohmann::json>& records) {
+  std::map<size_t, const nlohmann::json*> byCell;
+  for (const nlohmann::json& r : records) byCell[r.at("cell").get<size_t>()] = &r.at("csv");
+  const std::vector<std::string> columns = benchCsvColumns();
+  std::string csv;
+  for (size_t i = 0; i < columns.size(); ++i) csv += (i ? "," : "") + columns[i];
+  csv += "\n";
+  for (const auto& [cell, values] : byCell) {
+    for (size_t i = 0; i < columns.size(); ++i) csv += (i ? "," : "") + values->value(columns[i], std::string());
+    csv += "\n";
+  }
+  return csv;
+}
+
+}  // namespace raylab

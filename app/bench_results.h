@@ -1,0 +1,38 @@
+// What `raylab bench` keeps of its cells. results.jsonl gets one JSON line per finished cell, appended and
+// fsynced as the cell ends, so a killed sweep keeps what it measured (and `--resume` continues from it);
+// results.csv is made from the JSONL alone when the sweep ends: each line carries its CSV columns as the
+// bench formatted them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/bench_measure.h"
+#include "app/bench_sweep.h"
+#include "renderer/vk/vk_context.h"
+
+namespace raylab {
+
+// One results.jsonl line: "cell" (its index in the plan), device, git_revision, view, label, settings,
+// scene, result, and "csv" (column name -> the CSV's text).
+nlohmann::json benchRecord(size_t cellIndex, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
+                           const SceneFacts& scene, const CellResult& r);
+
+struct BenchRecords {
+  std::vector<nlohmann::json> records;  // in file order
+  size_t wholeBytes = 0;                // the file's prefix of whole lines: what a resume keeps
+  bool droppedLastLine = false;         // the last line was cut off (no newline, or not JSON): a kill
+};
+// Reads results.jsonl (a missing file holds no records). A cut-off last line is dropped; any other line
+// that is not a record throws std::runtime_error naming the file and line.
+BenchRecords readBenchRecords(const std::string& path);
+
+// The CSV's columns, in order.
+std::vector<std::string> benchCsvColumns();
+// results.csv: the header, then one row per cell in plan order (by "cell"; of a cell recorded twice, the
+// last record).
+std::string benchCsv(const std::vector<nlohmann::json>& records);
+
+}  // namespace raylab
