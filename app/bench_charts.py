@@ -30,6 +30,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
+from checked_write import write_with  # noqa: E402  (app/checked_write.py, beside this script)
+
 STAGES = ["generate", "trace", "learn", "shade", "keys", "oracle-trace", "sort", "reorder",
           "accumulate", "tonemap", "megakernel", "setup", "counters", "trace+shade"]
 
@@ -44,6 +46,11 @@ def load(folder):
             key = (j["settings"]["scene"], j["view"], j["label"])
             curves[key] = (j["result"]["error_curve_ms"], j["result"]["error_curve_rel_mse"])
     return rows, curves
+
+
+def save(fig, path):
+    """A chart is all there under its name or not there: a failed write exits non-zero naming it."""
+    write_with(path, lambda f: fig.savefig(f, dpi=110, format="png"))
 
 
 L2_BYTES = 50e6  # the H200's L2
@@ -83,7 +90,7 @@ def stacked_stages(rows, title, path):
     ax.legend(fontsize=7, ncol=2)
     plt.setp(ax.get_xticklabels(), rotation=45, ha="right", fontsize=7)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save(fig, path)
     plt.close(fig)
 
 
@@ -103,7 +110,7 @@ def speed_accuracy(rows, title, path):
         ax.set_ylabel("prediction error / scene diagonal (mean)")
     fig.suptitle(f"Speed against accuracy — {title}")
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save(fig, path)
     plt.close(fig)
 
 
@@ -120,7 +127,7 @@ def equal_time(rows, curves, title, path):
     ax.set_title(f"Equal-time image error — {title}")
     ax.legend(fontsize=6)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save(fig, path)
     plt.close(fig)
 
 
@@ -138,7 +145,7 @@ def coherence(rows, title, path):
     ax.set_title(f"Traversal coherence — {title}")
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save(fig, path)
     plt.close(fig)
 
 
@@ -162,7 +169,7 @@ def tracers(rows, title, path):
                  + (f"\nSER reordering hint: {', '.join(hint)}" if hint else ""), fontsize=9)
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save(fig, path)
     plt.close(fig)
 
 
@@ -240,7 +247,7 @@ def crossover_triangles(rows, methods, title, path):
     axes[0][-1].legend(fontsize=7)
     fig.suptitle(f"Where does sorting pay? {title}", fontsize=10)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save(fig, path)
     plt.close(fig)
 
 
@@ -263,7 +270,7 @@ def crossover_bounces(rows, methods, title, path):
     axes[0][-1].legend(fontsize=7)
     fig.suptitle(f"Sorting and the megakernel against path length — {title}", fontsize=10)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save(fig, path)
     plt.close(fig)
 
 

@@ -43,13 +43,14 @@ std::string resolvedTarget(const std::string& path) {
   return target;
 }
 
-// A device or FIFO takes the bytes as they come: nothing to rename, nothing to fsync.
-void writeInPlace(const std::string& path, std::string_view bytes) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
-  if (fd < 0) fail(path, "", errno);
+// A device or FIFO takes the bytes as they come: nothing to rename, nothing to fsync. `named` is what the
+// messages call it.
+void writeInPlace(const std::string& target, const std::string& named, std::string_view bytes) {
+  const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) fail(named, "", errno);
   int error = writeAll(fd, bytes);
   if (::close(fd) != 0 && error == 0) error = errno;
-  if (error != 0) fail(path, "", error);
+  if (error != 0) fail(named, "", error);
 }
 
 // What a new file gets from open(..., 0666): mkstemp makes 0600, which would hide results from other users.
@@ -63,9 +64,10 @@ mode_t newFileMode() {
 
 void writeFileChecked(const std::string& path, std::string_view bytes) {
   const std::string target = resolvedTarget(path);
+  const std::string named = target == path ? path : path + " (a link to " + target + ")";  // what was asked for
   struct stat st {};
   const bool exists = ::stat(target.c_str(), &st) == 0;
-  if (exists && !S_ISREG(st.st_mode)) return writeInPlace(target, bytes);
+  if (exists && !S_ISREG(st.st_mode)) return writeInPlace(target, named, bytes);
 
   std::filesystem::path folder = std::filesystem::path(target).parent_path();
   if (folder.empty()) folder = ".";
@@ -74,7 +76,7 @@ void writeFileChecked(const std::string& path, std::string_view bytes) {
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   const int fd = ::mkstemp(name.data());
-  if (fd < 0) fail(path, "cannot create a temporary file in " + folder.string(), errno);
+  if (fd < 0) fail(named, "cannot create a temporary file in " + folder.string(), errno);
   const std::string temp = name.data();
 
   int error = ::fchmod(fd, exists ? (st.st_mode & 07777) : newFileMode()) == 0 ? 0 : errno;
@@ -85,7 +87,7 @@ void writeFileChecked(const std::string& path, std::string_view bytes) {
   if (error == 0 && ::rename(temp.c_str(), target.c_str()) != 0) error = errno, step = "rename";
   if (error != 0) {
     ::unlink(temp.c_str());
-    fail(path, step, error);
+    fail(named, step, error);
   }
   // The rename is durable once the folder is: best effort, not every file system syncs folders.
   const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);

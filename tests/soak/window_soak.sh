@@ -60,9 +60,11 @@ code=0
 seconds=$(( $(date +%s) - start ))
 [ $code -eq 0 ] || { echo "window_soak: the window exited $code" >&2; tail -20 "$out/soak-stderr.txt" >&2; exit 1; }
 
-python3 - "$out" "$frames" "$warm" "$seconds" <<'PY'
+python3 - "$out" "$frames" "$warm" "$seconds" "$(dirname "$0")/../../app" <<'PY'
 import json, sys
 out, frames, warm, seconds = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+sys.path.insert(0, sys.argv[5])
+from checked_write import write_text  # app/checked_write.py: all of soak.json or none, else exit non-zero
 reports, series = {}, []
 for line in open(out + '/soak-stdout.txt'):
     line = line.strip()
@@ -86,7 +88,7 @@ result = {
     'series': series,
     'second_half_growth_kib': end_r['vm_rss_kib'] - series[len(series) // 2][1],
 }
-json.dump(result, open(out + '/soak.json', 'w'), indent=1)
+write_text(out + '/soak.json', json.dumps(result, indent=1))
 print('soak: %(frames)d frames, window %(window)s, render %(render)s, %(device)s (%(driver)s), %(seconds)d s: '
       'VmRSS %(warm_rss_kib)d KiB at frame %(warm_frame)d, %(end_rss_kib)d KiB at the end (%(growth_kib)+d KiB), '
       'peak %(peak_rss_kib)d KiB; second half %(second_half_growth_kib)+d KiB' % result)

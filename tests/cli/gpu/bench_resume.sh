@@ -3,6 +3,7 @@
 # SIGKILLed after some cells and then run with `--resume DIR` measures only the missing cells (a cut-off
 # last line is dropped) and ends with the same cells and the same non-timing columns as a sweep that was
 # never interrupted. `--resume` refuses, with exit 2, a different sweep or a folder of another revision.
+# bench_charts.py, run on the finished folder, stops non-zero naming a chart it cannot write.
 #
 # Timing columns, which no two runs share: frame_ms_*, trace_after_first_ms, every *_ms stage column,
 # rays_per_second, bvh_build_ms, scene_load_ms, tracer_setup_ms. Everything else (settings, labels,
@@ -13,6 +14,7 @@
 # not. Strategies without a length cache only: a cache learns over the warm-up, which is timed (>= 0.5 s).
 set -eu
 raylab="$1"
+source_dir="$2"
 dir=$(mktemp -d)
 pid=
 trap '[ -n "$pid" ] && kill -9 $pid 2>/dev/null; rm -rf "$dir"' EXIT
@@ -82,3 +84,21 @@ set -e
 [ $rc -eq 2 ] || { echo "FAIL: a folder of another revision was resumed (exit $rc)"; cat "$dir/revision.log"; exit 1; }
 grep -q "measured at revision 0000000" "$dir/revision.log" || { echo "FAIL: no reason"; cat "$dir/revision.log"; exit 1; }
 echo "ok: --resume refuses another sweep and another revision with exit 2"
+
+# The charts are written with the same care (app/checked_write.py): one that cannot be written (here a link
+# to /dev/full, written in place) stops bench_charts.py non-zero, naming it.
+if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
+  chart="$dir/whole/coherence_cornell-front.png"
+  ln -s /dev/full "$chart"
+  set +e
+  /usr/bin/python3 "$source_dir/app/bench_charts.py" "$dir/whole" >"$dir/charts.log" 2>&1
+  rc=$?
+  set -e
+  [ $rc -ne 0 ] && grep -q "cannot write $chart: No space left on device" "$dir/charts.log" ||
+    { echo "FAIL: bench_charts.py exited $rc on a chart it could not write"; cat "$dir/charts.log"; exit 1; }
+  [ -c /dev/full ] || { echo "FAIL: /dev/full was replaced"; exit 1; }
+  [ -s "$dir/whole/stages_cornell-front.png" ] || { echo "FAIL: the charts before it were not written"; exit 1; }
+  echo "ok: bench_charts.py exits $rc naming the chart it could not write"
+else
+  echo "matplotlib missing: the charts' write failure is not checked"
+fi
