@@ -2,9 +2,32 @@
 
 #include <cerrno>
 #include <cstring>
+#include <map>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 namespace raylab {
+namespace {
+
+// A completed render frame as headless `raylab render --stats` measures it: GPU and wall time, each
+// stage's total over the bounces, and which bounces were sorted after and why (the sort policy's plan).
+nlohmann::json frameJson(const FrameStats& stats, const Settings& settings) {
+  std::map<std::string, double> stages;
+  for (const StageTime& t : stats.stages) stages[t.stage] += t.ms;
+  nlohmann::json sorted = nlohmann::json::array(), reasons = nlohmann::json::array();
+  for (const BounceStats& b : stats.bounces) sorted.push_back(b.sortedAfter), reasons.push_back(b.sortReason);
+  return {{"frame", stats.frameIndex},
+          {"gpu_frame_ms", stats.frameMs},
+          {"wall_ms", stats.wallMs},
+          {"strategy", toString(settings.strategy)},
+          {"sort_policy", toString(settings.sortPolicy)},
+          {"stages", stages},
+          {"sorted_after", sorted},
+          {"sort_reasons", reasons}};
+}
+
+}  // namespace
 
 FrameLog::FrameLog(const std::string& path) : file_(std::fopen(path.c_str(), "w")) {
   if (!file_) throw std::runtime_error("cannot write --frame-log " + path + ": " + std::strerror(errno));
@@ -14,13 +37,17 @@ FrameLog::~FrameLog() {
   if (file_) std::fclose(file_);
 }
 
-void FrameLog::write(const UiFrameRecord& r, const RenderTurn& turn) {
+void FrameLog::write(const UiFrameRecord& r, const RenderTurn& turn, const Settings& settings) {
   std::fprintf(file_,
                "{\"ui_frame\":%llu,\"ui_ms\":%.3f,\"render_ms\":%.3f,\"frame_done\":%s,\"preview\":%s,"
-               "\"restarted\":%s,\"panels\":%s,\"presented\":%s,\"slice_paths\":%u,\"frame_paths\":%u,\"preview_width\":%u,\"preview_height\":%u}\n",
+               "\"changed\":%s,\"restarted\":%s,\"panels\":%s,\"presented\":%s,\"steps\":%u,\"frame_steps\":%u,"
+               "\"frame_paths\":%u,\"preview_width\":%u,\"preview_height\":%u",
                static_cast<unsigned long long>(frames_++), r.uiMs, turn.renderMs, turn.frameDone ? "true" : "false",
-               turn.preview ? "true" : "false", r.restarted ? "true" : "false", r.panels ? "true" : "false",
-               r.presented ? "true" : "false", turn.slicePaths, r.framePaths, turn.previewWidth, turn.previewHeight);
+               turn.preview ? "true" : "false", r.changed ? "true" : "false", r.restarted ? "true" : "false",
+               r.panels ? "true" : "false", r.presented ? "true" : "false", turn.steps, turn.frameSteps, r.framePaths,
+               turn.previewWidth, turn.previewHeight);
+  if (turn.frameDone) std::fprintf(file_, ",\"frame\":%s", frameJson(*turn.frameDone, settings).dump().c_str());
+  std::fprintf(file_, "}\n");
   std::fflush(file_);  // a log of a run that is killed still ends on a whole line
 }
 

@@ -211,7 +211,8 @@ bool LabWindow::frame() {
     panelsDirtyNext = requests.redrawPanels;  // the correction shows in the next build
   }
   updateCamera(seconds);
-  const bool restarted = syncTracer();
+  bool changed = false;
+  const bool restarted = syncTracer(&changed);
   if (restarted) live_->restarted();
   updateHeatmapHover(*tracer_, heatmapShown(settings_) != HeatmapView::None);
 
@@ -241,11 +242,13 @@ bool LabWindow::frame() {
     r.uiMs = msSince(start);
     r.panels = drawPanels;
     r.presented = shown.rendered;
+    r.changed = changed;
     r.restarted = restarted;
     r.framePaths = tracer_->framePaths();
-    frameLog_->write(r, turn);
+    frameLog_->write(r, turn, tracer_->settings());
   }
   if (!turn.frameDone) return true;
+  noteSlowStep();
   // Statistics, screenshots and the script's frame count follow whole render frames only.
   ui_.onFrame(tracer_->settings(), *turn.frameDone);
   ++frames_;
@@ -256,7 +259,7 @@ bool LabWindow::frame() {
 }
 
 // The render is the window's size times the resolution scale; the renderer restarts only what must.
-bool LabWindow::syncTracer() {
+bool LabWindow::syncTracer(bool* changedOut) {
   const VkExtent2D extent = swapchain_->extent();
   Settings want = settings_;
   auto scaled = [&](uint32_t size) {
@@ -275,10 +278,26 @@ bool LabWindow::syncTracer() {
     if (!sameCamera(camera_.viewpoint(), tracer_->camera())) tracer_->setCamera(camera_.viewpoint()), changed = true;
   }
   tracer_->setDetailedStats(view_.detailedStats);
+  if (changedOut) *changedOut = changed;
   int w = 0, h = 0;
   window_->windowSize(&w, &h);
   ini_.width = w, ini_.height = h;
   return changed && tracer_->accumulatedFrames() == 0;  // a change that kept the image needs no preview
+}
+
+// The Timing panel's line where one step of the frame is dearer than the whole render budget: the UI frame
+// that renders it waits for it, so the UI cannot keep its rate there.
+void LabWindow::noteSlowStep() {
+  const StepTime& slow = live_->slowestStep();
+  view_.slowStageNote.clear();
+  if (slow.ms <= live_->budgetMs()) return;
+  char text[200];
+  std::snprintf(text, sizeof(text),
+                "%s%s%s takes %.0f ms, more than the %.0f ms render budget: the UI waits for it (%.1f Hz then)",
+                slow.name.c_str(), slow.bounce >= 0 ? " of bounce " : "",
+                slow.bounce >= 0 ? std::to_string(slow.bounce).c_str() : "", slow.ms, live_->budgetMs(),
+                1000.0 / slow.ms);
+  view_.slowStageNote = text;
 }
 
 void LabWindow::updateCamera(float seconds) { camera_.update(input_->cameraInput(seconds)); }

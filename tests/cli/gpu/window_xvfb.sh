@@ -48,7 +48,7 @@ heatmaps=$(sed -n 's/.*must be one of \([a-z|-]*\).*/\1/p' <<<"$probe" | tr '|' 
   echo "screenshot-window window"
   echo "quit"
 } >script.txt
-size=(--size 160x90 --scale 1 --screenshot-dir shots)
+size=(--window-size 160x90 --scale 1 --screenshot-dir shots)
 start=$(date +%s)
 xvfb "${size[@]}" --script script.txt >run.log 2>&1 || { echo "FAIL: the scripted window exited $?"; tail -20 run.log; exit 1; }
 if grep -q "validation error" run.log; then echo "FAIL: validation errors"; grep "validation error" run.log | head; exit 1; fi
@@ -92,7 +92,7 @@ sanitized=0
 ldd "$raylab" | grep -q libasan && sanitized=1
 timing_ok=0
 for attempt in 1 2 3; do
-  xvfb --size 320x180 --scale 1 --render-budget-ms 1000 --screenshot-dir shots --script timing.txt >timing.log 2>&1 ||
+  xvfb --window-size 320x180 --scale 1 --render-budget-ms 1000 --screenshot-dir shots --script timing.txt >timing.log 2>&1 ||
     { echo "FAIL: timing run"; tail timing.log; exit 1; }
   "$raylab" render --settings shots/timing.json --stats timing-headless.json --out timing-headless.png >>timing.log 2>&1 ||
     { echo "FAIL: headless timing run"; tail timing.log; exit 1; }
@@ -133,9 +133,11 @@ assert json.load(open('shots/remembered.json'))['settings']['bounces'] == 4, 'ho
 # Unasked files go to the config folder ($XDG_CONFIG_HOME/raylab), never the working directory.
 mkdir -p cwd cfg
 printf 'wait 1\nscreenshot default-place\nquit\n' >place.txt
-(cd cwd && XDG_CONFIG_HOME="$dir/cfg" timeout 120 xvfb-run -a -s "-screen 0 1280x720x24" "$raylab" --size 160x90 \
+(cd cwd && XDG_CONFIG_HOME="$dir/cfg" timeout 120 xvfb-run -a -s "-screen 0 1280x720x24" "$raylab" --window-size 160x90 \
    --script ../place.txt >../place.log 2>&1) || { echo "FAIL: default-place run"; tail place.log; exit 1; }
 [ -s cfg/raylab/screenshots/default-place.png ] || { echo "FAIL: screenshot not in the config folder"; ls -R cfg cwd; exit 1; }
+grep -qF '$XDG_CONFIG_HOME/raylab/screenshots' "$repo/README.md" ||
+  { echo "FAIL: README.md does not say screenshots go to \$XDG_CONFIG_HOME/raylab/screenshots"; exit 1; }
 [ -z "$(ls -A cwd)" ] || { echo "FAIL: the window wrote into the working directory: $(ls -A cwd)"; exit 1; }
 
 # A scene file that cannot be loaded exits 3 from a script as from the command line.
