@@ -190,7 +190,7 @@ bool LabWindow::frame() {
   // The panels are rebuilt and the window presented only when something on it may have changed: input
   // within the last kPanelSettleSeconds (ImGui's hover delays and animations play out in it), a script or
   // panel change of settings, a preview or restart in the last UI frame, or completed render frames not yet
-  // shown, at most every kImageRefreshSeconds. Other UI frames only render their slice: on lavapipe a
+  // shown, at most every kImageRefreshSeconds. Other UI frames only render their steps: on lavapipe a
   // presented window costs tens of milliseconds whether or not the panels are rebuilt (docs/lab-window.md),
   // which the UI frames of a live render cannot afford each time.
   if (input_->takeActivity()) lastInput_ = now;
@@ -216,9 +216,9 @@ bool LabWindow::frame() {
   if (restarted) live_->restarted();
   updateHeatmapHover(*tracer_, heatmapShown(settings_) != HeatmapView::None);
 
-  // This UI frame's share of the render (a slice or a preview), then the panels over what is shown. A
+  // This UI frame's share of the render (frame steps or a preview), then the panels over what is shown. A
   // window screenshot waits for a UI frame that completed a render frame, so it shows that frame.
-  // A UI frame that presents spends the panels' time and a present besides its slice: the slice gets less.
+  // A UI frame that presents spends the panels' time and a present besides its steps: the steps get less.
   const RenderTurn turn = live_->turn(*tracer_, scene_.scene, drawPanels ? msSince(panelsStart) + presentMs_ : 0.0);
   const bool capture = turn.frameDone && !pendingWindowShot_.empty();
   // A restart or preview changes what the panels show: they are rebuilt next UI frame. A completed frame's
@@ -230,7 +230,7 @@ bool LabWindow::frame() {
     const auto presentStart = std::chrono::steady_clock::now();
     shown = presenter_->drawFrame(live_->shown(*tracer_), ImGui::GetDrawData(), capture,
                                   heatmapShown(settings_) != HeatmapView::None);
-    presentMs_ += 0.5 * (msSince(presentStart) - presentMs_);  // smoothed: one slow present does not starve slices
+    presentMs_ += 0.5 * (msSince(presentStart) - presentMs_);  // smoothed: one slow present does not starve the steps
     recreate_ = shown.recreateSwapchain;
     panelsDirty_ = panelsDirty_ || recreate_;
     lastPresent_ = now;

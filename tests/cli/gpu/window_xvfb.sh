@@ -82,10 +82,10 @@ assert json.load(open('shots/remembered.json'))['settings']['strategy'] == 'none
 # a factor of 260). What time stays outside the stages is shown as its own bar; it must stay under 5%.
 # On a loaded CPU the gaps between stages (the driver's thread waiting for a core) can pass 5% for a while:
 # up to three tries, each with the window and then headless, and one must meet it. The original fault read 4%.
-# The whole frame in one slice (--render-budget-ms 1000, as on a fast device): a window that renders in slices
-# keeps drawing its panels between them, and on two loaded cores that thread's time shows up as gaps inside
-# the slices' GPU spans (stage sums over slices are tested in tests/gpu/test_render_invariant.cpp and
-# window_frame_log.sh). Under AddressSanitizer the host side runs several times slower while the driver's
+# The whole frame in one submission (--render-budget-ms 1000, as on a fast device): a window that renders a
+# frame's steps over several UI frames keeps drawing its panels between them, and on two loaded cores that
+# thread's time shows up as gaps inside the submissions' GPU spans (frames in steps are tested in
+# tests/gpu/test_render_invariant.cpp, window_frame_log.sh and window_matches_headless.sh). Under AddressSanitizer the host side runs several times slower while the driver's
 # threads do not, so there the figures are printed, not judged.
 printf 'set bounces 4\nwait 3\nscreenshot timing\nquit\n' >timing.txt
 sanitized=0
