@@ -6,9 +6,11 @@ usage: python3 app/frame_log_report.py FRAME_LOG [--skip N] [--json]
   --json     one JSON object instead of the text table
 Reports, over the UI frames: p50/p95/max of ui_ms (and the UI rate they mean), the render work per UI
 frame, whole render frames completed, the window's own cost (ui_ms - render_ms) in the UI frames that
-rebuilt the panels and presented, and after each change that restarted the accumulation ("restarted"):
-time to preview (the UI frames from the change up to and including the first one that showed a preview or
-a completed frame) and time to the first whole frame (up to the first frame_done). A line that is not a
+rebuilt the panels and presented, and after each change of settings or camera ("changed", whether or not it
+restarted the accumulation: a strategy, grid, clamp or policy change keeps the image; older logs have only
+"restarted"): time to preview (the UI frames from the change up to and including the first one that showed
+a preview or a completed frame, which after a change is one rendered with the new settings) and time to the
+first whole frame (up to the first frame_done). A line that is not a
 JSON object with the required fields stops the report with a message naming the line (exit 1).
 """
 import json
@@ -41,15 +43,20 @@ def load(path):
     return frames
 
 
+def changed(row):
+    """The UI frame changed the settings or the camera (a restart is a change too)."""
+    return bool(row.get("changed") or row.get("restarted"))
+
+
 def latencies(frames):
-    """(time to preview, time to whole frame) in ms for each change that restarted the accumulation."""
+    """(time to preview, time to whole frame) in ms for each change of settings or camera."""
     previews, wholes = [], []
     for i, row in enumerate(frames):
-        if not row.get("restarted"):
+        if not changed(row):
             continue
         elapsed, preview = 0.0, None
         for later in frames[i:]:
-            if later is not row and later.get("restarted"):
+            if later is not row and changed(later):
                 break  # changed again before it finished: counts neither
             elapsed += later["ui_ms"]
             if preview is None and (later.get("preview") or later["frame_done"]):
@@ -78,7 +85,7 @@ def report(frames):
         "changes": len(previews),
     }
     # UI frames that rebuilt the panels and presented (the window's own cost shows in these; the others
-    # only rendered their slice). Logs of windows that present every frame have no "panels" field.
+    # only rendered their steps). Logs of windows that present every frame have no "panels" field.
     drawn = [r["ui_ms"] - r["render_ms"] for r in frames if r.get("panels", True) and r.get("presented", True)]
     if drawn:
         out.update({"panel_frames": len(drawn), "panel_ms_p50": percentile(drawn, 50),

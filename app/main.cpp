@@ -13,15 +13,22 @@
 
 namespace {
 
+// Every mode, then the window's own options and the render options it shares with `raylab render`: each
+// option once (a mode's own options: raylab MODE --help).
 void printHelp() {
-  std::puts(
+  std::printf(
       "raylab: a lab for ray reordering in a wavefront path tracer\n\n"
       "usage:\n"
-      "  raylab [options]            open the interactive lab (needs a display)\n"
+      "  raylab [options]            open the interactive lab (without a display: render headless instead)\n"
       "  raylab render [options]     render headless to a PNG (raylab render --help)\n"
-      "  raylab sortbench [options]  time the GPU sorts alone\n"
-      "  raylab bench [options]      sweep strategies and sorts, write CSV/JSON (charts: app/bench_charts.py)\n"
-      "  raylab devices              list Vulkan devices and whether each can run --tracer rt and --ser");
+      "  raylab sortbench [options]  time the GPU sorts alone (raylab sortbench --help)\n"
+      "  raylab bench [options]      sweep strategies and sorts, write CSV/JSON (raylab bench --help;\n"
+      "                              charts: app/bench_charts.py)\n"
+      "  raylab devices              list Vulkan devices and whether each can run --tracer rt and --ser\n"
+      "  raylab help, --help, -h     this text\n\n"
+      "%s\nrender options (raylab render's; the window takes the settings among them, and --out and --stats\n"
+      "where it renders headless for want of a display):\n%s",
+      raylab::windowOptionsHelp().c_str(), raylab::commonOptionsHelp().c_str());
 }
 
 }  // namespace
@@ -38,7 +45,7 @@ int main(int argc, char** argv) {
       for (const std::string& line : raylab::VulkanContext::describeDevices()) std::puts(line.c_str());
       return raylab::kExitOk;
     }
-    if (mode == "help" || mode == "--help" || (!args.empty() && args[0] == "--help")) {
+    if (mode == "help" || mode == "-h" || (!args.empty() && (args[0] == "--help" || args[0] == "-h"))) {
       printHelp();
       return raylab::kExitOk;
     }

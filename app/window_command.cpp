@@ -22,9 +22,10 @@ namespace {
 
 const char* const kWindowHelp =
     "window options:\n"
-    "  --size WxH             window size (default 1280x720, or as last closed)\n"
+    "  --window-size WxH      window size (default 1280x720, or as last closed); the window renders at its\n"
+    "                         size times --scale (--size, the resolution, only where raylab renders headless\n"
+    "                         for want of a display)\n"
     "  --scale S              render resolution / window resolution, 0.05..2 (default 1; 0.25 on CPU devices)\n"
-    "  --settings FILE.json   start from a screenshot's sidecar (its settings and camera)\n"
     "  --script FILE          run UI actions from FILE, then quit (see app/ui_script.h)\n"
     "  --screenshot-dir DIR   where F12 / Shift+F12 and scripts save (default CONFIG/screenshots)\n"
     "  --ini FILE             layout and last settings (default CONFIG/imgui.ini; none for scripts)\n"
@@ -33,11 +34,12 @@ const char* const kWindowHelp =
     "  --frame-log FILE       write one JSON line per UI frame: ui_ms, render_ms, frame_done, preview, ...\n"
     "                         (python3 app/frame_log_report.py FILE reports p50/p95 and time to preview)\n"
     "  --render-budget-ms MS  render work per UI frame, 1..1000 (default 40): a frame that takes longer\n"
-    "                         renders in slices over several UI frames, after a coarse preview\n";
+    "                         renders its stages over several UI frames, after a coarse preview\n";
 
 // The window's own flags that take a value; everything else is a render flag.
 bool isWindowValueFlag(const std::string& a) {
-  for (const char* flag : {"--script", "--screenshot-dir", "--ini", "--scale", "--frame-log", "--render-budget-ms"})
+  for (const char* flag :
+       {"--script", "--screenshot-dir", "--ini", "--scale", "--frame-log", "--render-budget-ms", "--window-size"})
     if (a == flag) return true;
   return false;
 }
@@ -50,6 +52,14 @@ std::string checkedFrameLog(const std::string& path) {
     throw UsageError(std::string("--frame-log: ") + e.what());
   }
   return path;
+}
+
+// --window-size WxH: within what a window system could give (the render's own limit, 8192, per side).
+void parseWindowSize(const std::string& text, WindowOptions& o) {
+  const size_t x = text.find('x');
+  if (x == std::string::npos) throw UsageError("--window-size expects WxH (e.g. 1280x720), got '" + text + "'");
+  o.width = int(parseUint("--window-size width", text.substr(0, x), 1, SettingLimits::kMaxSize));
+  o.height = int(parseUint("--window-size height", text.substr(x + 1), 1, SettingLimits::kMaxSize));
 }
 
 void printUsage(const std::string& error) {
@@ -78,6 +88,7 @@ WindowOptions parseWindowOptions(const std::vector<std::string>& args) {
     else if (a == "--screenshot-dir") o.screenshotDir = valueOf(rest, i);
     else if (a == "--ini") o.iniPath = valueOf(rest, i), iniGiven = true;
     else if (a == "--reset") o.reset = true;
+    else if (a == "--window-size") parseWindowSize(valueOf(rest, i), o);
     else if (a == "--scale") o.scale = parseFloat("--scale", valueOf(rest, i), 0.05f, 2.0f);
     else if (a == "--frame-log") o.frameLog = checkedFrameLog(valueOf(rest, i));
     else if (a == "--render-budget-ms") o.renderBudgetMs = parseFloat("--render-budget-ms", valueOf(rest, i), 1.0f, 1000.0f);
@@ -91,7 +102,6 @@ WindowOptions parseWindowOptions(const std::vector<std::string>& args) {
     }
     if (isWindowValueFlag(args[i])) ++i;
     else if (args[i] != "--reset") o.renderArgs.push_back(args[i]);
-    if (args[i] == "--size") o.width = int(o.common.settings.width), o.height = int(o.common.settings.height);
   }
   if (!o.script.empty() && !iniGiven) o.iniPath.clear();  // scripted runs neither read nor write imgui.ini
   if (!o.script.empty()) loadScript(o.script);            // a broken script stops here, before any window
@@ -134,10 +144,6 @@ bool haveDisplayVariable() {
 std::string windowOptionsHelp() { return kWindowHelp; }
 
 int runWindowCommand(const std::vector<std::string>& args) {
-  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
-    std::printf("usage: raylab [options]\n%s%s", kWindowHelp, commonOptionsHelp().c_str());
-    return kExitOk;
-  }
   WindowOptions options;
   const int parsed = withCommandErrors(printUsage, [&] {
     options = parseWindowOptions(args);

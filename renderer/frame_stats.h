@@ -21,11 +21,12 @@ struct BounceStats {
   double simtEfficiency = -1.0;         // device subgroups, counting mode only (-1: not measured)
   double virtualWarpEfficiency = -1.0;  // W = 32 from per-path traversal iterations (-1: not measured)
   double meanTraversalSteps = 0.0;
-  // Key prediction (filled when sorting with a spatial key and stats are requested)
+  // Key prediction (filled when stats are requested for a bounce whose rays were keyed and sorted; -1, null
+  // in JSON, on the others: there is no prediction to measure there)
   double predictionErrorMean = -1.0;    // |estimated - actual end point| / scene diagonal
   double predictionErrorMedian = -1.0;
   double cellHitRate = -1.0;            // estimated cell == actual cell
-  uint32_t distinctKeys = 0;
+  int64_t distinctKeys = -1;
   // Sort policy (wavefront with a strategy): whether the paths were sorted after this bounce, and why.
   bool sortedAfter = false;
   std::string sortReason;

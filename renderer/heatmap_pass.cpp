@@ -57,8 +57,8 @@ HeatmapPass::HeatmapPass(const VulkanContext& ctx, uint32_t pixelCount)
       range_(ctx, 4 * RL_HEAT_RANGE_SLOTS, MemoryKind::HostVisible),
       probeReadback_(ctx, 4 * (1 + RL_HEAT_PROBE_STRIDE), MemoryKind::HostVisible) {}
 
-void HeatmapPass::beginFrame(VkCommandBuffer cmd, const Settings& settings, VkDeviceAddress keyParams,
-                             const gpu::GpuKeyGrid* grid, bool hasCache) {
+void HeatmapPass::configure(const Settings& settings, VkDeviceAddress keyParams, const gpu::GpuKeyGrid* grid,
+                            bool hasCache) {
   view_ = heatmapShown(settings);
   bounce_ = heatmapBounceShown(settings);
   width_ = settings.width;
@@ -82,6 +82,9 @@ void HeatmapPass::beginFrame(VkCommandBuffer cmd, const Settings& settings, VkDe
   } else {
     rangeFixed_ = false;
   }
+}
+
+void HeatmapPass::recordClear(VkCommandBuffer cmd) {
   if (view_ == HeatmapView::None) return;
   heat_.recordFill(cmd, RL_HEAT_EMPTY);
   // Minima start at the largest float (cells: the largest uint), maxima and counts at 0.

@@ -25,12 +25,13 @@ class HeatmapPass {
   HeatmapPass(const VulkanContext& ctx, uint32_t pixelCount);
 
   // The frame loop's calls: which view is shown and at which bounce is decided here (heatmap_rules.h: an
-  // unavailable view is never gathered). beginFrame() takes the view, the bounce and the colouring from
-  // the settings and clears. keyParams: KeyStage::paramsAddress() while sorting, else 0, with its grid
-  // (nullptr without); hasCache: the key stage holds a length cache (a second guard: the cache views read
-  // it only then).
-  void beginFrame(VkCommandBuffer cmd, const Settings& settings, VkDeviceAddress keyParams,
-                  const gpu::GpuKeyGrid* grid, bool hasCache);
+  // unavailable view is never gathered). configure() takes the view, the bounce and the colouring from the
+  // settings when the frame's steps are made (the steps ask readsAfterTrace/readsAfterSort), and
+  // recordClear() clears when the frame starts on the GPU. keyParams: KeyStage::paramsAddress() while
+  // sorting, else 0, with its grid (nullptr without); hasCache: the key stage holds a length cache (a
+  // second guard: the cache views read it only then).
+  void configure(const Settings& settings, VkDeviceAddress keyParams, const gpu::GpuKeyGrid* grid, bool hasCache);
+  void recordClear(VkCommandBuffer cmd);
   // After the trace of `bounce` (the trace's own views, cell hits and the cache views).
   // Whether afterTrace of `bounce` reads the trace's hits and steps (so trace and shade must stay apart).
   bool readsAfterTrace(uint32_t bounce) const;

@@ -11,14 +11,6 @@ namespace raylab {
 
 class VulkanContext;
 
-// The paths one submission works on: the whole frame, or a slice of it (PathTracer::recordSlice): path ids
-// first .. first + count - 1, in slots 0 .. count - 1 (GpuFrame::firstPath, GpuFrame::pathCount). Per-path
-// readbacks of a slice go to the slice's part of a whole frame's readback, at `first`.
-struct PathRange {
-  uint32_t first = 0;
-  uint32_t count = 0;
-};
-
 struct PathBuffers {
   // Nothing here depends on the bounce count: the counters have room for RL_MAX_BOUNCES.
   PathBuffers(const VulkanContext& ctx, uint32_t width, uint32_t height, uint32_t sppPerFrame);

@@ -78,7 +78,7 @@ void PathTracer::allocate() {
 
 void PathTracer::restartAccumulation() {
   frameIndex_ = 0;
-  sliceNext_ = sliceEnd_ = 0;
+  abandonFrame();
   ctx_.submitAndWait([&](VkCommandBuffer cmd) { buffers_->accumulation.recordFill(cmd, 0); });
 }
 
@@ -90,7 +90,7 @@ void PathTracer::checkSupported(const Settings& settings) const {
 
 // The one place a change of settings or camera is acted on; every part gets the same SettingsChange.
 void PathTracer::apply(const SettingsChange& change) {
-  sliceNext_ = sliceEnd_ = 0;  // a partial frame was made with the old settings or camera: start it again
+  abandonFrame();  // a partial frame was made with the old settings or camera: start it again
   if (change.reallocate) allocate();
   if (usesRt() && !rt_) rt_ = std::make_unique<RtTracer>(ctx_, *scene_);
   pathSorter_->apply(settings_, camera_.position, buffers_->pathCount, change);
@@ -112,67 +112,53 @@ void PathTracer::setCamera(const Viewpoint& camera) {
   apply(SettingsChange::cameraMove(settings_));
 }
 
-// A heatmap gathers each slice's paths into their own pixels (the value range and counts add up over the
-// slices), so most views render in slices like the image. Two depend on the whole frame's order: sort-key
-// ranks (a key's place among all of the bounce's sorted keys) and warp efficiency (the 32 slots a path
-// shares a warp with).
-bool PathTracer::needsWholeFrames() const {
-  const HeatmapView view = heatmapShown(settings_);
-  return (view == HeatmapView::SortKey && settings_.heatmapKeyColour == HeatmapKeyColour::Rank) ||
-         view == HeatmapView::WarpEfficiency;
-}
-
 void PathTracer::setDetailedStats(bool on) {
-  if (on != detailedStats_) sliceNext_ = sliceEnd_ = 0;
+  if (on != detailedStats_) abandonFrame();
   detailedStats_ = on;
 }
 
-// One frame: generate, the bounces, accumulate, then tonemap (or the heatmap instead).
+// The steps are built again for the next frame: its plan, fusions and state sets may differ.
+void PathTracer::abandonFrame() {
+  steps_.clear();
+  nextStep_ = 0;
+  recorded_.clear();
+}
+
+// One frame: generate, the bounces, accumulate, then tonemap (or the heatmap instead): all its steps.
 void PathTracer::recordFrame(VkCommandBuffer cmd) {
-  sliceNext_ = 0;  // a partial frame, if any, is abandoned
-  recordSlice(cmd, buffers_->pathCount);
+  abandonFrame();  // a partial frame, if any, is abandoned
+  recordSteps(cmd, UINT32_MAX);
 }
 
-uint32_t PathTracer::recordSlice(VkCommandBuffer cmd, uint32_t paths) {
-  const uint32_t total = buffers_->pathCount;
-  if (needsWholeFrames()) sliceNext_ = 0, paths = total;
-  const uint32_t first = sliceNext_;
-  const uint32_t count = std::clamp(paths, 1u, total - first);
-  const bool starts = first == 0, ends = first + count == total;
-  if (starts) {
-    framePlan_ = settings_.sorts() ? sortPolicy_.plan(settings_.sortPolicy, settings_.bounces) : SortPlan{};
-    sliceStages_.clear();
-    sliceGpuMs_ = sliceWallMs_ = 0.0;
+std::span<const FrameStep> PathTracer::pendingSteps() {
+  if (steps_.empty()) buildSteps();
+  return std::span<const FrameStep>(steps_).subspan(nextStep_);
+}
+
+uint32_t PathTracer::recordSteps(VkCommandBuffer cmd, uint32_t count) {
+  const std::span<const FrameStep> pending = pendingSteps();
+  if (nextStep_ == 0) {
+    frameStages_.clear();
+    frameGpuMs_ = frameWallMs_ = 0.0;
   }
+  const uint32_t n = std::clamp<uint32_t>(count, 1u, uint32_t(pending.size()));
   timer_.reset(cmd);
-  // Every command of the slice is inside a timed stage, so the stages account for the frame's GPU time.
-  recordStage(cmd, &timer_, "setup", [&] {
-    recordFrameBlock(cmd, first, count);
-    if (starts) {
-      buffers_->counters.recordFill(cmd, 0);  // the frame's counters sum over its slices
-      computeBarrier(cmd);
-      const bool sorting = settings_.sorts();
-      heatmap_->beginFrame(cmd, settings_, sorting ? pathSorter_->keys().paramsAddress() : 0,
-                           sorting ? &pathSorter_->keys().grid().gpu : nullptr, sorting && pathSorter_->keys().hasCache());
-    }
-  });
-  const gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0};
-  if (settings_.kernel == Kernel::Megakernel)
-    recordMegakernel(cmd, push, {first, count});
-  else
-    recordWavefront(cmd, push, {first, count});
-  if (ends) {
-    recordStage(cmd, &timer_, "accumulate", [&] { accumulate_.dispatchThreads(cmd, push, buffers_->pixelCount); });
-    if (!heatmap_->colorize(cmd, *buffers_, &timer_))
-      recordStage(cmd, &timer_, "tonemap", [&] { tonemap_.dispatchThreads(cmd, push, buffers_->pixelCount); });
-    recordCountersToHost(cmd);
+  recorded_.clear();
+  // Every command of a step is inside a timed stage, so the stages account for the frame's GPU time.
+  for (uint32_t i = 0; i < n; ++i) {
+    const FrameStep& step = pending[i];
+    const uint32_t firstScope = timer_.scopeCount();
+    timer_.setBounce(step.bounce);
+    step.record(cmd);
+    recorded_.push_back({nextStep_ + i, firstScope, timer_.scopeCount()});
   }
-  sliceEnd_ = first + count;
-  return count;
+  timer_.setBounce(-1);
+  nextStep_ += n;
+  return n;
 }
 
-// The GpuFrame block every stage reads (addresses, camera, frame parameters, the slice's paths).
-void PathTracer::recordFrameBlock(VkCommandBuffer cmd, uint32_t firstPath, uint32_t paths) {
+// The GpuFrame block every stage reads (addresses, camera, frame parameters, the frame's paths).
+void PathTracer::recordFrameBlock(VkCommandBuffer cmd) {
   gpu::GpuFrame frame = buffers_->addresses();
   frame.camera = makeGpuCamera(camera_, settings_.width, settings_.height);
   frame.scene = scene_->block();
@@ -181,8 +167,7 @@ void PathTracer::recordFrameBlock(VkCommandBuffer cmd, uint32_t firstPath, uint3
   frame.width = settings_.width;
   frame.height = settings_.height;
   frame.sppPerFrame = settings_.sppPerFrame;
-  frame.pathCount = paths;
-  frame.firstPath = firstPath;
+  frame.pathCount = buffers_->pathCount;
   frame.frameIndex = frameIndex_;
   frame.bounceCount = settings_.bounces;
   frame.seed = settings_.seed;
@@ -197,133 +182,15 @@ void PathTracer::recordFrameBlock(VkCommandBuffer cmd, uint32_t firstPath, uint3
   computeBarrier(cmd);
 }
 
-void PathTracer::recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push, PathRange slice) {
-  const uint32_t n = slice.count;
-  const ComputePipeline& megakernel = settings_.countSimt ? megakernelCounting_ : megakernel_;
-  recordStage(cmd, &timer_, "megakernel", [&] {
-    if (!usesRt()) {
-      megakernel.dispatchThreads(cmd, push, n);
-    } else if (settings_.ser == Ser::Off) {
-      rt_->megakernel(cmd, push, n);
-    } else {
-      // The hint: the top bits (at most 16) of the key Settings::strategy gives each ray.
-      const KeyStrategy hint = settings_.ser == Ser::Hint ? settings_.strategy : KeyStrategy::None;
-      const uint32_t bits = hint == KeyStrategy::None ? 0 : spatialKeyBits(hint, pathSorter_->keys().grid().gpu);
-      gpu::RtSerPush ser{push.frame, hint == KeyStrategy::None ? 0 : pathSorter_->keys().paramsAddress(),
-                         bits > 16 ? bits - 16 : 0, std::min(bits, 16u)};
-      rt_->serMegakernel(cmd, ser, hint, n);
-    }
-  });
-  if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, 0, slice);
-  heatmap_->afterMegakernel(cmd, *buffers_, &timer_);
-}
-
-const ComputePipeline& PathTracer::shadeVariant(bool compact, bool traceFirst) {
-  if (!compact && !traceFirst) return shade_;
-  std::optional<ComputePipeline>& p = shadeVariants_[compact ? 1 : 0][traceFirst ? 1 : 0];
-  if (!p)
-    p.emplace(ctx_, "shade", sizeof(gpu::PathStagePush), kGroup,
-              std::vector<uint32_t>{static_cast<uint32_t>(KeyStrategy::None), compact ? 1u : 0u, traceFirst ? 1u : 0u});
-  return *p;
-}
-
-const ComputePipeline& PathTracer::gatheringTrace(bool counting) {
-  std::optional<ComputePipeline>& p = gatheringTrace_[counting ? 1 : 0];
-  if (!p) p.emplace(ctx_, "trace", sizeof(gpu::PathStagePush), kGroup, std::vector<uint32_t>{counting ? 1u : 0u, 1u});
-  return *p;
-}
-
-// The bounce loop: trace, learn, shade, then keys, sort and reorder before the next bounce where the sort
-// policy's plan says so (learn only for rays that were sorted). Trace and shade are dispatched indirectly
-// over the live paths: all of them until a sort has moved the finished paths behind the live ones
-// (GpuFrame::live); a bounce that does not sort keeps the last sort's order and live count.
-// Settings::fusion folds the keys into shade and the reorder into the next trace: the stage times then
-// report them as part of "shade" and "trace", since they are no longer passes of their own.
-// Settings::compaction: every shade but the last bounce's packs the live paths into the other state set and
-// its own block of GpuFrame::live, which becomes the live block (the copy is timed as part of "shade"), and
-// gives the slots it visited the dead key, so keys, sort and reorder after it see a live prefix with dead
-// keys behind it as after a sort. Not where shade makes the keys (Settings::fusion keys): a path's key would
-// have to go to its new slot, which another subgroup may be marking dead.
-void PathTracer::recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, PathRange slice) {
-  const uint32_t n = slice.count;
-  const bool sorting = settings_.sorts();
-  const ComputePipeline& trace = settings_.countSimt ? traceCounting_ : trace_;
-  const VkBuffer live = buffers_->live.handle();
-  const VkDeviceSize liveDispatch = PathBuffers::kLiveDispatchOffset;
-  bool gatherInTrace = false;  // the last sort's reorder is left to this bounce's trace
-  recordStage(cmd, &timer_, "generate", [&] { generate_.dispatchThreads(cmd, push, n); });
-  for (uint32_t b = 0; b < settings_.bounces; ++b) {
-    timer_.setBounce(static_cast<int>(b));
-    push.bounce = b;
-    const bool sortedBefore = sorting && b > 0 && framePlan_.sortAfter[b - 1];
-    const bool sortAfter = sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b];
-    const bool keysInShade = sortAfter && settings_.fusesKeys();
-    const bool compacts = settings_.compacts() && !keysInShade && b + 1 < settings_.bounces;
-    // shade.comp as this bounce needs it; `traceFirst`: it also does the trace (Settings::traceShade).
-    auto shade = [&](bool traceFirst) {
-      if (compacts) {
-        shadeVariant(true, traceFirst).dispatchIndirect(cmd, push, live, liveDispatch);
-        computeBarrier(cmd);
-        const VkBufferCopy packed{PathBuffers::liveAppendOffset(b), 0, PathBuffers::kLiveBlockBytes};
-        vkCmdCopyBuffer(cmd, live, live, 1, &packed);
-      } else {
-        (keysInShade ? pathSorter_->shadeWithKeys() : shadeVariant(false, traceFirst))
-            .dispatchIndirect(cmd, push, live, liveDispatch);
-      }
-    };
-    // One dispatch for trace and shade where nothing between them reads the hits: no reorder in this trace,
-    // no keys in shade, no learning from sorted rays, no detailed statistics, no heatmap of this bounce.
-    const bool learns = sortedBefore && usesLengthCache(settings_.strategy);
-    if (settings_.fusesTraceShade() && !gatherInTrace && !keysInShade && !learns && !detailedStats_ &&
-        !heatmap_->readsAfterTrace(b)) {
-      recordStage(cmd, &timer_, "trace+shade", [&] { shade(true); });
-    } else {
-      recordStage(cmd, &timer_, "trace", [&] {
-        if (usesRt())
-          rt_->traceRays(cmd, push, n);  // every path; the shader skips those past the live count
-        else if (gatherInTrace)
-          gatheringTrace(settings_.countSimt).dispatchThreads(cmd, push, n);  // every slot: it finds the live count
-        else
-          trace.dispatchIndirect(cmd, push, live, liveDispatch);
-      });
-      if (gatherInTrace) push.stateSet = 1u - push.stateSet, gatherInTrace = false;
-      if (detailedStats_ && !usesRt()) recordStepsReadback(cmd, b, slice);
-      if (sorting)
-        pathSorter_->recordAfterTrace(cmd, *buffers_, slice, push.stateSet, b, sortedBefore, detailedStats_, &timer_);
-      heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, &timer_);
-      recordStage(cmd, &timer_, "shade", [&] {
-        if (usesRt())
-          rt_->shade(cmd, push, n);
-        else
-          shade(false);
-      });
-    }
-    if (compacts) push.stateSet = 1u - push.stateSet;
-    if (sortAfter) {
-      pathSorter_->recordKeys(cmd, *buffers_, slice, push.stateSet, b, keysInShade, detailedStats_, &timer_);
-      heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, &timer_);
-      pathSorter_->recordSort(cmd, *buffers_, n, &timer_);
-      // The sort-rank heatmap reads the reordered set right after the sort: that bounce gathers on its own.
-      gatherInTrace = settings_.fusesGather() && !heatmap_->readsAfterSort(b);
-      if (!gatherInTrace) {
-        push.stateSet = pathSorter_->recordGather(cmd, *buffers_, n, push.stateSet, &timer_);
-        heatmap_->afterSort(cmd, *buffers_, push.stateSet, b, &timer_);
-      }
-    }
-  }
-  timer_.setBounce(-1);
-}
-
 // Detailed mode: keeps this trace's per-path traversal steps (the next trace overwrites them) for the
-// virtual warp efficiency, in dispatch order: a slice's slots go to its part of the frame's readback, so the
-// warps are those of the whole frame where slices are whole warps (LiveRender's are whole work groups).
-// Released again by gatherCounters(): only the frame that asked holds them.
-void PathTracer::recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce, PathRange slice) {
+// virtual warp efficiency, in dispatch order. Released again by gatherCounters(): only the frame that asked
+// holds them.
+void PathTracer::recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce) {
   ScopedStage s(&timer_, cmd, "counters");
   if (stepsReadback_.size() <= bounce) stepsReadback_.resize(bounce + 1);
   if (stepsReadback_[bounce].size() != buffers_->hitSteps.size())
     stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
-  VkBufferCopy steps{0, VkDeviceSize(slice.first) * 4, VkDeviceSize(slice.count) * 4};
+  VkBufferCopy steps{0, 0, VkDeviceSize(buffers_->pathCount) * 4};
   vkCmdCopyBuffer(cmd, buffers_->hitSteps.handle(), stepsReadback_[bounce].handle(), 1, &steps);
   computeBarrier(cmd);
 }
@@ -351,44 +218,50 @@ const FrameStats& PathTracer::renderFrame() {
 }
 
 const FrameStats& PathTracer::finishFrame(double wallMs) {
-  const FrameStats* whole = finishSlice(wallMs);
-  if (!whole) throw VulkanError("finishFrame after a slice that did not end the frame");
+  const FrameStats* whole = finishSteps(wallMs);
+  if (!whole) throw VulkanError("finishFrame after steps that did not end the frame");
   return *whole;
 }
 
-const FrameStats* PathTracer::finishSlice(double wallMs) {
-  addSliceStages(timer_.collect());
-  sliceGpuMs_ += timer_.spanMs();
-  sliceWallMs_ += wallMs;
-  const bool ends = sliceEnd_ == buffers_->pathCount;
-  sliceNext_ = ends ? 0 : sliceEnd_;
-  return ends ? &completeFrame() : nullptr;
+const FrameStats* PathTracer::finishSteps(double wallMs) {
+  const std::vector<StageTime> stages = timer_.collect();
+  lastStepTimes_.clear();
+  for (const RecordedStep& r : recorded_) {
+    StepTime t{steps_[r.step].name, steps_[r.step].bounce, 0.0};
+    for (uint32_t s = r.firstScope; s < r.endScope && s < stages.size(); ++s) t.ms += stages[s].ms;
+    lastStepTimes_.push_back(std::move(t));
+  }
+  recorded_.clear();
+  addStepStages(stages);
+  frameGpuMs_ += timer_.spanMs();
+  frameWallMs_ += wallMs;
+  if (steps_.empty() || nextStep_ < steps_.size()) return nullptr;
+  steps_.clear();
+  nextStep_ = 0;
+  return &completeFrame();
 }
 
-// A slice's stage times join the frame's: the same (stage, bounce) adds up, so a frame in slices reports the
-// stages a whole frame would, and their sum still matches the GPU time (the sum of the slices' spans).
-void PathTracer::addSliceStages(const std::vector<StageTime>& slice) {
-  if (sliceStages_.empty()) {
-    sliceStages_ = slice;
-    return;
-  }
-  for (const StageTime& t : slice) {
-    auto same = std::find_if(sliceStages_.begin(), sliceStages_.end(),
+// A submission's stage times join the frame's: the same (stage, bounce) adds up (the detailed readbacks'
+// "counters"), so the frame reports the stages a whole frame would, and their sum still matches the GPU
+// time (the sum of the submissions' spans).
+void PathTracer::addStepStages(const std::vector<StageTime>& stages) {
+  for (const StageTime& t : stages) {
+    auto same = std::find_if(frameStages_.begin(), frameStages_.end(),
                              [&](const StageTime& s) { return s.stage == t.stage && s.bounce == t.bounce; });
-    if (same != sliceStages_.end())
+    if (same != frameStages_.end())
       same->ms += t.ms;
     else
-      sliceStages_.push_back(t);
+      frameStages_.push_back(t);
   }
 }
 
 const FrameStats& PathTracer::completeFrame() {
   stats_ = FrameStats{};
   stats_.frameIndex = frameIndex_;
-  stats_.wallMs = sliceWallMs_;
-  stats_.stages = std::move(sliceStages_);
-  sliceStages_.clear();
-  stats_.frameMs = sliceGpuMs_;
+  stats_.wallMs = frameWallMs_;
+  stats_.stages = std::move(frameStages_);
+  frameStages_.clear();
+  stats_.frameMs = frameGpuMs_;
   gatherCounters();
   if (settings_.sorts()) {
     pathSorter_->finishFrame(stats_, detailedStats_);

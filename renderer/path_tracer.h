@@ -4,11 +4,13 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "renderer/reorder/sort_policy.h"
 #include "renderer/vk/compute_pipeline.h"
 #include "renderer/frame_stats.h"
+#include "renderer/frame_steps.h"
 #include "renderer/gpu_scene.h"
 #include "renderer/vk/gpu_timer.h"
 #include "renderer/path_buffers.h"
@@ -46,24 +48,23 @@ class PathTracer {
   // Records, submits and waits for one frame.
   const FrameStats& renderFrame();
 
-  // A frame in slices, one submission each, so a window can stay live while a frame renders: a slice is the
-  // next `paths` path ids (clamped to what is left of the frame), generated, traced through every bounce
-  // (sorted within the slice, which the invariant allows: a path's id, not its slot, picks its pixel, random
-  // numbers and results entry) and shaded into results. The first slice clears the frame's counters; the
-  // last one accumulates, tonemaps and copies the counters out, so the image after the last slice is bit for
-  // bit the whole-frame render's. finishSlice() after each slice completed: it adds the slice's stage times
-  // and wall time to the frame's, and returns the whole frame's stats after the last slice (else nullptr).
-  // Any change of settings or camera abandons a partial frame (its paths are rendered again).
-  // Returns the paths the slice holds.
-  uint32_t recordSlice(VkCommandBuffer cmd, uint32_t paths);
-  const FrameStats* finishSlice(double wallMs);
-  // Paths of a whole frame, and the first path id of the next slice (0: the next slice starts a frame).
+  // A frame in steps, so a window can stay live while a frame renders: the frame's work is an ordered list
+  // of steps (FrameStep: setup, generate, each bounce's trace, learn, heatmap, shade, keys, sort, reorder,
+  // then accumulate, tonemap, counters), each over the whole frame, exactly what recordFrame records, so a
+  // step computes what it computes in a whole frame (a sort sorts all of its bounce's live paths) and the
+  // image, the stage times and the sort policy's inputs are those of a whole frame. recordSteps() records
+  // the next `count` steps (at least one, at most what is left of the frame) into one submission;
+  // finishSteps() after it completed adds their stage times and wall time to the frame's and returns the
+  // whole frame's stats after its last step (else nullptr). Any change of settings or camera abandons a
+  // partial frame (its steps are recorded again). Returns the steps recorded.
+  uint32_t recordSteps(VkCommandBuffer cmd, uint32_t count);
+  const FrameStats* finishSteps(double wallMs);
+  // The steps of the frame not recorded yet (the whole frame's when none was: the frame's sort plan is made
+  // then), and the GPU time of each step of the last finished submission, for a caller that budgets them.
+  std::span<const FrameStep> pendingSteps();
+  uint32_t frameSteps() const { return uint32_t(steps_.size()); }
+  const std::vector<StepTime>& lastStepTimes() const { return lastStepTimes_; }
   uint32_t framePaths() const { return buffers_->pathCount; }
-  uint32_t nextSlicePath() const { return sliceNext_; }
-  // Heatmap views that depend on the whole frame's path order (sort-key ranks, warp efficiency) render in
-  // one slice (recordSlice records the whole frame whatever it is asked for); other views and detailed
-  // statistics gather each slice's part.
-  bool needsWholeFrames() const;
 
   // Detailed statistics (per-path steps, prediction accuracy) cost readbacks; off for timed runs.
   void setDetailedStats(bool on);
@@ -96,12 +97,20 @@ class PathTracer {
   void apply(const SettingsChange& change);
   void checkSupported(const Settings& settings) const;
   bool usesRt() const { return settings_.tracer == Tracer::Rt; }
-  void recordFrameBlock(VkCommandBuffer cmd, uint32_t firstPath, uint32_t paths);
-  void recordMegakernel(VkCommandBuffer cmd, const gpu::PathStagePush& push, PathRange slice);
-  void recordWavefront(VkCommandBuffer cmd, gpu::PathStagePush push, PathRange slice);
-  void addSliceStages(const std::vector<StageTime>& slice);
+  void recordFrameBlock(VkCommandBuffer cmd);
+  // The frame's steps (frame_steps.cpp): the plan, then the steps of the kernel in use.
+  void buildSteps();
+  void addStep(const char* name, int bounce, std::function<void(VkCommandBuffer)> record);
+  void buildMegakernelSteps(const gpu::PathStagePush& push);
+  void buildWavefrontSteps(gpu::PathStagePush push);
+  void buildBounceSteps(uint32_t bounce, gpu::PathStagePush& push, bool& gatherInTrace);
+  void buildSortSteps(uint32_t bounce, bool keysInShade, gpu::PathStagePush& push, bool& gatherInTrace);
+  void recordShade(VkCommandBuffer cmd, const gpu::PathStagePush& push, uint32_t bounce, bool traceFirst);
+  void buildEndSteps(const gpu::PathStagePush& push);
+  void abandonFrame();
+  void addStepStages(const std::vector<StageTime>& stages);
   const FrameStats& completeFrame();
-  void recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce, PathRange slice);
+  void recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce);
   void recordCountersToHost(VkCommandBuffer cmd);
   void gatherCounters();
   uint32_t countedBounces() const;
@@ -128,11 +137,18 @@ class PathTracer {
   SortPlan framePlan_;  // which bounces the frame being recorded sorts after
   FrameStats stats_;
   uint32_t frameIndex_ = 0;
-  // The frame being rendered in slices: the next slice's first path, the one recorded last (its end), and
-  // the stage times and wall time summed over the slices completed so far.
-  uint32_t sliceNext_ = 0, sliceEnd_ = 0;
-  std::vector<StageTime> sliceStages_;
-  double sliceGpuMs_ = 0.0, sliceWallMs_ = 0.0;
+  // The frame being rendered in steps: its steps (empty: none built yet), the next one to record, those
+  // the last submission recorded (and the timer scopes each began with), and the stage times and wall time
+  // summed over the submissions completed so far.
+  std::vector<FrameStep> steps_;
+  uint32_t nextStep_ = 0;
+  struct RecordedStep {
+    uint32_t step, firstScope, endScope;
+  };
+  std::vector<RecordedStep> recorded_;
+  std::vector<StepTime> lastStepTimes_;
+  std::vector<StageTime> frameStages_;
+  double frameGpuMs_ = 0.0, frameWallMs_ = 0.0;
   bool detailedStats_ = false;
   std::vector<std::vector<uint32_t>> stepsPerBounce_;
   std::vector<GpuBuffer> stepsReadback_;

@@ -218,7 +218,7 @@ json toJson(const FrameStats& s) {
                        {"prediction_error_mean", opt(x.predictionErrorMean)},
                        {"prediction_error_median", opt(x.predictionErrorMedian)},
                        {"cell_hit_rate", opt(x.cellHitRate)},
-                       {"distinct_keys", x.distinctKeys},
+                       {"distinct_keys", x.distinctKeys < 0 ? json(nullptr) : json(x.distinctKeys)},
                        {"sorted_after", x.sortedAfter},
                        {"sort_reason", x.sortReason}});
   }

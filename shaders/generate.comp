@@ -1,6 +1,5 @@
 #version 460
-// Bounce 0 setup: one camera path per (pixel, sample), its id = pixel * sppPerFrame + sample; slot i of a
-// slice holds path firstPath + i (GpuFrame::pathCount).
+// Bounce 0 setup: one camera path per (pixel, sample), its id = pixel * sppPerFrame + sample.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
@@ -15,8 +14,7 @@ void main() {
   if (i == 0u) writeLivePaths(f.live, f.pathCount);
   if (i >= f.pathCount) return;
   GpuPathState s = f.state[pc.stateSet];
-  uint id = f.firstPath + i;
-  uint rng = rngSeed(id, f.frameIndex, 0u, f.seed, RL_RNG_CAMERA);
-  PathVars p = cameraPath(f.camera, id / f.sppPerFrame, f.width, f.height, rng);
-  storePath(s, i, p, id);
+  uint rng = rngSeed(i, f.frameIndex, 0u, f.seed, RL_RNG_CAMERA);
+  PathVars p = cameraPath(f.camera, i / f.sppPerFrame, f.width, f.height, rng);
+  storePath(s, i, p, i);
 }

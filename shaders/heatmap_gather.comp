@@ -61,7 +61,7 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= f.pathCount) return;
   GpuPathState s = f.state[pc.stateSet];
-  uint id = pc.megakernel != 0u ? f.firstPath + i : pathId(s, i);  // megakernel slot i: this slice's path i
+  uint id = pc.megakernel != 0u ? i : pathId(s, i);  // megakernel slot i: path i
   bool alive = pc.megakernel != 0u || (i < f.live.v[RL_LIVE_COUNT] && id != RL_DEAD_PATH);
   if (!alive || id % f.sppPerFrame != 0u) return;
   uint pixel = id / f.sppPerFrame;

@@ -13,8 +13,8 @@ void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   gCounters = f.counters;
   gCounterBase = 0u;  // every bounce counts in bounce 0's slots
-  uint id = f.firstPath + gl_GlobalInvocationID.x;  // this slice's paths (GpuFrame::pathCount)
-  if (gl_GlobalInvocationID.x >= f.pathCount) {
+  uint id = gl_GlobalInvocationID.x;
+  if (id >= f.pathCount) {
     countRays(0u);
     return;
   }

@@ -5,8 +5,8 @@
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
-  if (gl_LaunchIDEXT.x >= f.pathCount) return;
-  uint id = f.firstPath + gl_LaunchIDEXT.x;  // this slice's paths (GpuFrame::pathCount)
+  uint id = gl_LaunchIDEXT.x;
+  if (id >= f.pathCount) return;
   uint rng = rngSeed(id, f.frameIndex, 0u, f.seed, RL_RNG_CAMERA);
   PathVars p = cameraPath(f.camera, id / f.sppPerFrame, f.width, f.height, rng);
   uint rays = 0u;

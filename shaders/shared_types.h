@@ -198,16 +198,11 @@ struct GpuFrame {
   uint width;
   uint height;
   uint sppPerFrame;
-  // Paths of this submission: the whole frame, or one slice of it (PathTracer::recordSlice). A slice is the
-  // path ids firstPath .. firstPath + pathCount - 1 in slots 0 .. pathCount - 1; a path's id, never its slot,
-  // picks its pixel, random numbers and results entry, so slices add up to the whole frame bit for bit.
   uint pathCount;
   uint frameIndex;
   uint bounceCount;
   uint seed;
   float exposure;
-  uint firstPath;
-  uint pad0;
 };
 
 #ifndef __cplusplus

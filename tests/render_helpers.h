@@ -31,15 +31,15 @@ inline std::vector<glm::vec3> renderRadiance(const VulkanContext& ctx, const Sce
   return tracer.readRadiance();
 }
 
-// Renders one frame in slices of growing size (97, 161, 225, ... paths, one submission each, as the window
-// does) and returns the accumulated radiance; `slices` gets how many there were.
-inline std::vector<glm::vec3> renderRadianceInSlices(const VulkanContext& ctx, const Scene& scene, const Settings& settings,
-                                                     const Viewpoint& view, uint32_t& slices) {
+// Renders one frame in steps, a growing number per submission (1, 2, 3, ... steps, one submission each, as
+// the window does) and returns the accumulated radiance; `submissions` gets how many there were.
+inline std::vector<glm::vec3> renderRadianceInSteps(const VulkanContext& ctx, const Scene& scene, const Settings& settings,
+                                                    const Viewpoint& view, uint32_t& submissions) {
   PathTracer parts(ctx, scene, settings, view);
-  slices = 0;
-  for (const FrameStats* done = nullptr; !done; ++slices) {
-    ctx.submitAndWait([&](VkCommandBuffer cmd) { parts.recordSlice(cmd, 97 + 64 * slices); });
-    done = parts.finishSlice(1.0);
+  submissions = 0;
+  for (const FrameStats* done = nullptr; !done; ++submissions) {
+    ctx.submitAndWait([&](VkCommandBuffer cmd) { parts.recordSteps(cmd, 1 + submissions); });
+    done = parts.finishSteps(1.0);
   }
   return parts.readRadiance();
 }

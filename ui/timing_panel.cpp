@@ -144,6 +144,11 @@ void drawTimingPanel(const TimingHistory& history, const FrameStats& stats, Sett
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("mean (min..max) of the last %zu frames", n);
   // Rays and time of the same (last) frame.
   ImGui::Text("last frame %.2f ms GPU: %.3g rays/s; %u spp", stats.frameMs, stats.raysPerSecond, stats.samplesPerPixel);
+  if (!view.slowStageNote.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 190, 80, 255));
+    ImGui::TextWrapped("%s", view.slowStageNote.c_str());
+    ImGui::PopStyleColor();
+  }
   ImGui::Checkbox("detailed stats", &view.detailedStats);
   ImGui::SameLine();
   ImGui::Checkbox("count SIMT lanes", &settings.countSimt);

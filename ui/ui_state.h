@@ -19,6 +19,9 @@ struct ViewOptions {
   // Why the device cannot run the rt tracer / SER (empty: it can); the window fills them from its device,
   // the method panel greys the options out with the reason.
   std::string rtUnavailable;
+  // Set by the window where one stage of a frame is dearer than its render budget (the Timing panel says
+  // so: the UI cannot turn faster than that stage); empty where every stage fits.
+  std::string slowStageNote;
   std::string serUnavailable;
   static constexpr float kMinScale = 0.05f;
   static constexpr float kMaxScale = 2.0f;

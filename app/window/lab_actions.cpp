@@ -99,7 +99,7 @@ bool LabWindow::applyCameraText(const std::string& text, std::string* error) {
 }
 
 // Runs the script's actions due now. A screenshot ends the turn: it is taken of the render frame completed
-// next (several UI frames later when the frame renders in slices), and the script waits for it.
+// next (several UI frames later when the frame renders in steps), and the script waits for it.
 bool LabWindow::runScript() {
   if (!pendingRenderShot_.empty() || !pendingWindowShot_.empty()) return true;
   if (script_->finished()) return false;

@@ -200,7 +200,7 @@ bool LabWindow::frame() {
   // The panels are rebuilt and the window presented only when something on it may have changed: input
   // within the last kPanelSettleSeconds (ImGui's hover delays and animations play out in it), a script or
   // panel change of settings, a preview or restart in the last UI frame, or completed render frames not yet
-  // shown, at most every kImageRefreshSeconds. Other UI frames only render their slice: on lavapipe a
+  // shown, at most every kImageRefreshSeconds. Other UI frames only render their steps: on lavapipe a
   // presented window costs tens of milliseconds whether or not the panels are rebuilt (docs/lab-window.md),
   // which the UI frames of a live render cannot afford each time.
   if (input_->takeActivity()) lastInput_ = now;
@@ -222,13 +222,14 @@ bool LabWindow::frame() {
     panelsDirtyNext = requests.redrawPanels;  // the correction shows in the next build
   }
   updateCamera(seconds);
-  const bool restarted = syncTracer();
+  bool changed = false;
+  const bool restarted = syncTracer(&changed);
   if (restarted) live_->restarted();
   updateHeatmapHover(*tracer_, heatmapShown(settings_) != HeatmapView::None);
 
-  // This UI frame's share of the render (a slice or a preview), then the panels over what is shown. A
+  // This UI frame's share of the render (frame steps or a preview), then the panels over what is shown. A
   // window screenshot waits for a UI frame that completed a render frame, so it shows that frame.
-  // A UI frame that presents spends the panels' time and a present besides its slice: the slice gets less.
+  // A UI frame that presents spends the panels' time and a present besides its steps: the steps get less.
   const RenderTurn turn = live_->turn(*tracer_, scene_.scene, drawPanels ? msSince(panelsStart) + presentMs_ : 0.0);
   const bool capture = turn.frameDone && !pendingWindowShot_.empty();
   // A restart or preview changes what the panels show: they are rebuilt next UI frame. A completed frame's
@@ -240,7 +241,7 @@ bool LabWindow::frame() {
     const auto presentStart = std::chrono::steady_clock::now();
     shown = presenter_->drawFrame(live_->shown(*tracer_), ImGui::GetDrawData(), capture,
                                   heatmapShown(settings_) != HeatmapView::None);
-    presentMs_ += 0.5 * (msSince(presentStart) - presentMs_);  // smoothed: one slow present does not starve slices
+    presentMs_ += 0.5 * (msSince(presentStart) - presentMs_);  // smoothed: one slow present does not starve the steps
     recreate_ = shown.recreateSwapchain;
     panelsDirty_ = panelsDirty_ || recreate_;
     lastPresent_ = now;
@@ -252,16 +253,18 @@ bool LabWindow::frame() {
     r.uiMs = msSince(start);
     r.panels = drawPanels;
     r.presented = shown.rendered;
+    r.changed = changed;
     r.restarted = restarted;
     r.framePaths = tracer_->framePaths();
     try {
-      frameLog_->write(r, turn);
+      frameLog_->write(r, turn, tracer_->settings());
     } catch (const WriteError& e) {
       reportWriteFailure(std::string(e.what()) + " (the frame log stops here)");
       frameLog_.reset();
     }
   }
   if (!turn.frameDone) return true;
+  noteSlowStep();
   // Statistics, screenshots and the script's frame count follow whole render frames only.
   ui_.onFrame(tracer_->settings(), *turn.frameDone);
   ++frames_;
@@ -272,7 +275,7 @@ bool LabWindow::frame() {
 }
 
 // The render is the window's size times the resolution scale; the renderer restarts only what must.
-bool LabWindow::syncTracer() {
+bool LabWindow::syncTracer(bool* changedOut) {
   const VkExtent2D extent = swapchain_->extent();
   Settings want = settings_;
   auto scaled = [&](uint32_t size) {
@@ -291,10 +294,26 @@ bool LabWindow::syncTracer() {
     if (!sameCamera(camera_.viewpoint(), tracer_->camera())) tracer_->setCamera(camera_.viewpoint()), changed = true;
   }
   tracer_->setDetailedStats(view_.detailedStats);
+  if (changedOut) *changedOut = changed;
   int w = 0, h = 0;
   window_->windowSize(&w, &h);
   ini_.width = w, ini_.height = h;
   return changed && tracer_->accumulatedFrames() == 0;  // a change that kept the image needs no preview
+}
+
+// The Timing panel's line where one step of the frame is dearer than the whole render budget: the UI frame
+// that renders it waits for it, so the UI cannot keep its rate there.
+void LabWindow::noteSlowStep() {
+  const StepTime& slow = live_->slowestStep();
+  view_.slowStageNote.clear();
+  if (slow.ms <= live_->budgetMs()) return;
+  char text[200];
+  std::snprintf(text, sizeof(text),
+                "%s%s%s takes %.0f ms, more than the %.0f ms render budget: the UI waits for it (%.1f Hz then)",
+                slow.name.c_str(), slow.bounce >= 0 ? " of bounce " : "",
+                slow.bounce >= 0 ? std::to_string(slow.bounce).c_str() : "", slow.ms, live_->budgetMs(),
+                1000.0 / slow.ms);
+  view_.slowStageNote = text;
 }
 
 void LabWindow::updateCamera(float seconds) { camera_.update(input_->cameraInput(seconds)); }

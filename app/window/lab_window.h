@@ -44,8 +44,11 @@ class LabWindow {
   void openWindow();
   bool frame();
   void recreateSwapchain();
-  bool syncTracer();  // true when the render restarted its accumulation
+  // True when the render restarted its accumulation; `changed`: the settings or camera changed (a change
+  // of strategy, grid, clamp or policy keeps accumulating, yet the frame log records it as a change).
+  bool syncTracer(bool* changed = nullptr);
   void updateCamera(float seconds);
+  void noteSlowStep();
   void fillCameraModel();
   void printSummary() const;
 

@@ -12,19 +12,14 @@
 namespace raylab {
 namespace {
 
-// Slices are whole work groups of paths; the first slice, before any measurement, is small enough for any
-// device (4096 paths: a few milliseconds on two lavapipe cores at 4 bounces).
-constexpr uint32_t kSliceGranule = RL_PATH_GROUP_SIZE;
-constexpr uint32_t kFirstSlicePaths = 4096;
-constexpr uint32_t kCostBlock = 1024;
 // The preview's width and height are the render's divided by 2..16; 4 before anything was measured.
 constexpr uint32_t kMinPreviewDivisor = 2, kMaxPreviewDivisor = 16, kFirstPreviewDivisor = 4;
-// Smoothing of the measured milliseconds per path: a new measurement counts half, so a setting that makes
-// paths dearer (more bounces) is followed within two or three UI frames.
+// Smoothing of the measured costs: a new measurement counts half, so a setting that makes a step dearer
+// is followed within two or three frames.
 constexpr double kSmoothing = 0.5;
-// A slice keeps at least this share of the budget whatever the rest of the UI frame costs, so the render
+// The steps keep at least this share of the budget whatever the rest of the UI frame costs, so the render
 // still progresses while the panels are busy.
-constexpr double kMinSliceShare = 0.25;
+constexpr double kMinStepShare = 0.25;
 
 double smoothed(double previous, double measured) {
   return previous > 0.0 ? previous + kSmoothing * (measured - previous) : measured;
@@ -42,40 +37,51 @@ void LiveRender::sceneChanged() {
   showingPreview_ = false;
 }
 
-bool LiveRender::wholeFrameFits(const PathTracer& tracer) const {
-  return msPerPath_ > 0.0 && double(tracer.framePaths()) * msPerPath_ <= budgetMs_;
+// The step's own measurement, else the mean of its kind at the other bounces (a bounce the sort policy
+// sorts for the first time), else none.
+double LiveRender::predictedMs(const FrameStep& step, uint32_t paths) const {
+  if (auto it = msPerPath_.find({step.name, step.bounce}); it != msPerPath_.end()) return it->second * paths;
+  double sum = 0.0;
+  int n = 0;
+  for (const auto& [key, perPath] : msPerPath_)
+    if (key.first == step.name) sum += perPath, ++n;
+  return n > 0 ? sum / n * paths : -1.0;
 }
 
-// As many paths from the next slice's first as the cost per path of their blocks (or, where not measured,
-// the smoothed average) says fit `budgetMs`, in whole work groups.
-uint32_t LiveRender::slicePaths(const PathTracer& tracer, double budgetMs) const {
-  const uint32_t total = tracer.framePaths(), first = tracer.nextSlicePath();
-  if (msPerPath_ <= 0.0) return std::min(kFirstSlicePaths, total);
-  if (first == 0 && double(total) * msPerPath_ <= budgetMs) return total;
-  double spent = 0.0;
-  uint32_t end = first;
-  while (end < total) {
-    const size_t block = end / kCostBlock;
-    const uint32_t blockEnd = std::min<uint32_t>(total, uint32_t(block + 1) * kCostBlock);
-    const double cost = block < blockMsPerPath_.size() && blockMsPerPath_[block] > 0.0 ? blockMsPerPath_[block] : msPerPath_;
-    const double all = double(blockEnd - end) * cost;
-    if (spent + all > budgetMs) {
-      end += uint32_t((budgetMs - spent) / cost);
-      break;
-    }
-    spent += all;
-    end = blockEnd;
+double LiveRender::wholeFrameMs(PathTracer& tracer) const {
+  if (tracer.pendingSteps().size() != tracer.frameSteps()) return -1.0;  // part of a frame is done
+  double ms = submitMs_;
+  for (const FrameStep& step : tracer.pendingSteps()) {
+    const double predicted = predictedMs(step, tracer.framePaths());
+    if (predicted < 0.0) return -1.0;
+    ms += predicted;
   }
-  if (end >= total) return total - first;
-  return std::max(kSliceGranule, (end - first) / kSliceGranule * kSliceGranule);
+  return ms;
 }
 
-void LiveRender::learnSliceCost(const PathTracer& tracer, uint32_t first, uint32_t paths, double ms) {
-  const double perPath = ms / paths;
-  msPerPath_ = smoothed(msPerPath_, perPath);
-  blockMsPerPath_.resize((tracer.framePaths() + kCostBlock - 1) / kCostBlock, 0.0);
-  for (uint32_t b = first / kCostBlock; b < blockMsPerPath_.size() && b * kCostBlock < first + paths; ++b)
-    blockMsPerPath_[b] = perPath;
+// As many of the next steps as their predicted costs say fit `budgetMs`, at least one; a step nothing
+// predicts is taken only first, and so measured alone.
+uint32_t LiveRender::stepsThatFit(PathTracer& tracer, double budgetMs) const {
+  double spent = submitMs_;
+  uint32_t n = 0;
+  for (const FrameStep& step : tracer.pendingSteps()) {
+    const double predicted = predictedMs(step, tracer.framePaths());
+    if (n > 0 && (predicted < 0.0 || spent + predicted > budgetMs)) break;
+    spent += std::max(0.0, predicted);
+    ++n;
+  }
+  return std::max(n, 1u);
+}
+
+void LiveRender::learnStepCosts(const PathTracer& tracer, double wallMs) {
+  double gpuMs = 0.0;
+  for (const StepTime& t : tracer.lastStepTimes()) {
+    double& perPath = msPerPath_[{t.name, t.bounce}];
+    perPath = smoothed(perPath, t.ms / tracer.framePaths());
+    gpuMs += t.ms;
+    if (t.ms > frameSlowest_.ms) frameSlowest_ = t;
+  }
+  submitMs_ = smoothed(submitMs_, std::max(0.0, wallMs - gpuMs));
 }
 
 RenderTurn LiveRender::turn(PathTracer& tracer, const Scene& scene, double otherWorkMs) {
@@ -83,24 +89,26 @@ RenderTurn LiveRender::turn(PathTracer& tracer, const Scene& scene, double other
   if (previewDue_) {
     previewDue_ = false;
     showingPreview_ = false;
-    blockMsPerPath_.assign(blockMsPerPath_.size(), 0.0);  // another view or setting: other costs
     // A frame that fits the budget is shown whole in this very UI frame: no preview needed.
-    if (!wholeFrameFits(tracer) && !tracer.needsWholeFrames()) {
+    const double whole = wholeFrameMs(tracer);
+    if (whole < 0.0 || whole > budgetMs_) {
       renderPreview(tracer, scene, &turn);
       return turn;  // the preview was this UI frame's render work
     }
   }
-  const uint32_t want = slicePaths(tracer, std::max(kMinSliceShare * budgetMs_, budgetMs_ - otherWorkMs));
-  const uint32_t first = tracer.nextSlicePath();
+  const uint32_t want = stepsThatFit(tracer, std::max(kMinStepShare * budgetMs_, budgetMs_ - otherWorkMs));
+  turn.frameSteps = tracer.frameSteps();
   const auto start = std::chrono::steady_clock::now();
   ctx_.submitAndWait([&](VkCommandBuffer cmd) {
     tinyPass_->record(cmd);
-    turn.slicePaths = tracer.recordSlice(cmd, want);
+    turn.steps = tracer.recordSteps(cmd, want);
   });
   turn.renderMs = msSince(start);
-  learnSliceCost(tracer, tracer.needsWholeFrames() ? 0 : first, turn.slicePaths, turn.renderMs);
-  turn.frameDone = tracer.finishSlice(turn.renderMs);
+  turn.frameDone = tracer.finishSteps(turn.renderMs);
+  learnStepCosts(tracer, turn.renderMs);
   if (turn.frameDone) {
+    slowestStep_ = frameSlowest_;
+    frameSlowest_ = StepTime{};
     showingPreview_ = false;
     ++version_;
   }
@@ -109,10 +117,11 @@ RenderTurn LiveRender::turn(PathTracer& tracer, const Scene& scene, double other
 
 // One whole frame of a small tracer of the same scene and camera: 1 sample per pixel, no sorting (the image
 // is the same), no heatmap, the compute tracer, its size divided until it fits the budget.
-void LiveRender::renderPreview(const PathTracer& tracer, const Scene& scene, RenderTurn* turn) {
+void LiveRender::renderPreview(PathTracer& tracer, const Scene& scene, RenderTurn* turn) {
   const Settings& full = tracer.settings();
   uint32_t divisor = kFirstPreviewDivisor;
-  const double perPath = previewMsPerPath_ > 0.0 ? previewMsPerPath_ : msPerPath_;
+  const double whole = wholeFrameMs(tracer);
+  const double perPath = previewMsPerPath_ > 0.0 ? previewMsPerPath_ : whole > 0.0 ? whole / tracer.framePaths() : 0.0;
   if (perPath > 0.0) {
     const double pixels = double(full.width) * full.height;
     divisor = uint32_t(std::ceil(std::sqrt(pixels * perPath / budgetMs_)));

@@ -116,7 +116,7 @@ PresentedFrame Presenter::drawFrame(const ShownImage& shown, ImDrawData* ui, boo
 void Presenter::record(VkCommandBuffer cmd, const ShownImage& shown, ImDrawData* ui, uint32_t index, bool capture,
                        bool nearest) {
   // The render image changes only when a render frame completes or a preview is made; most UI frames of a
-  // sliced render only blit it again.
+  // render in steps only blit it again.
   if (shown.version != imageVersion_) recordCopy(cmd, shown);
   imageVersion_ = shown.version;
   recordBlit(cmd, index, nearest);

@@ -1,4 +1,4 @@
-// Wall time of the window's own steps (UI frames, render slices, presents), in milliseconds.
+// Wall time of the window's own steps (UI frames, render steps, presents), in milliseconds.
 #pragma once
 
 #include <chrono>

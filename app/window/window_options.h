@@ -18,7 +18,7 @@ struct WindowOptions {
   std::string screenshotDir;            // --screenshot-dir DIR; default configDir()/screenshots
   std::string iniPath;                 // --ini FILE; default configDir()/imgui.ini; scripts none unless given
   bool reset = false;                  // --reset: ignore imgui.ini (it is rewritten on exit)
-  int width = 0, height = 0;           // --size: the window's size; 0: remembered or default
+  int width = 0, height = 0;           // --window-size: the window's size; 0: remembered or default
   std::optional<float> scale;          // --scale: render size / window size
   std::string frameLog;                // --frame-log FILE: one JSON line per UI frame (frame_log.h)
   double renderBudgetMs = 40.0;        // --render-budget-ms: render work per UI frame (live_render.h)

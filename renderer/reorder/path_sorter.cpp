@@ -67,26 +67,31 @@ PathSorter::Capture& PathSorter::captureOf(uint32_t bounce, uint32_t framePaths)
   return *captures_[bounce];
 }
 
-void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, PathRange slice,
-                                    uint32_t stateSet, uint32_t bounce, bool learn, bool detailed, StageTimer* timer) {
-  const uint32_t n = slice.count;
-  const VkDeviceSize at = slice.first;
-  if (bounce > 0 && learn) keys_.recordLearn(cmd, buffers.frameBlock.address(), stateSet, bounce, n, timer);
-  if (!detailed || bounce == 0) return;
+void PathSorter::beginFrame() {
+  for (auto& c : captures_)
+    if (c) c->haveRays = c->haveKeys = false;
+}
+
+void PathSorter::recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
+                                  uint32_t bounce, bool keyed, bool detailed, StageTimer* timer) {
+  const uint32_t n = buffers.pathCount;
+  if (bounce == 0 || !keyed) return;
+  keys_.recordLearn(cmd, buffers.frameBlock.address(), stateSet, bounce, n, timer);
+  if (!detailed) return;
   // The rays of this bounce with the predictions made for them, before shading overwrites them.
   Capture& c = captureOf(bounce, buffers.pathCount);
   const GpuBuffer* state = buffers.state[stateSet];
-  copyInto(cmd, state[RL_STATE_ORIGIN], c.origin, VkDeviceSize(n) * 16, at * 16);
-  copyInto(cmd, state[RL_STATE_DIRECTION], c.direction, VkDeviceSize(n) * 16, at * 16);
-  copyInto(cmd, state[RL_STATE_THROUGHPUT], c.throughput, VkDeviceSize(n) * 16, at * 16);
-  copyInto(cmd, buffers.hitT, c.hitT, VkDeviceSize(n) * 4, at * 4);
+  copyInto(cmd, state[RL_STATE_ORIGIN], c.origin, VkDeviceSize(n) * 16, 0);
+  copyInto(cmd, state[RL_STATE_DIRECTION], c.direction, VkDeviceSize(n) * 16, 0);
+  copyInto(cmd, state[RL_STATE_THROUGHPUT], c.throughput, VkDeviceSize(n) * 16, 0);
+  copyInto(cmd, buffers.hitT, c.hitT, VkDeviceSize(n) * 4, 0);
   c.haveRays = true;
   computeBarrier(cmd);
 }
 
-void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, PathRange slice, uint32_t stateSet,
-                              uint32_t bounce, bool madeInShade, bool detailed, StageTimer* timer) {
-  const uint32_t n = slice.count;
+void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
+                            uint32_t bounce, bool madeInShade, bool detailed, StageTimer* timer) {
+  const uint32_t n = buffers.pathCount;
   // Over the live prefix only: past it, buffers.keys holds the dead keys the last sort moved there (every
   // slot is live until a frame's first sort, and the keys pass then covers them all).
   if (!madeInShade)
@@ -95,7 +100,7 @@ void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, Pat
   if (detailed) {
     // Keys made now sort the rays of the next bounce.
     Capture& c = captureOf(bounce + 1, buffers.pathCount);
-    copyInto(cmd, buffers.keys, c.keys, VkDeviceSize(n) * 4, VkDeviceSize(slice.first) * 4);
+    copyInto(cmd, buffers.keys, c.keys, VkDeviceSize(n) * 4, 0);
     c.haveKeys = true;
     computeBarrier(cmd);
   }
@@ -135,7 +140,9 @@ void PathSorter::finishFrame(FrameStats& stats, bool detailed) {
   if (!detailed) return;
   stats.lengthCacheOccupancy = keys_.cacheOccupancy();
   for (size_t b = 1; b < captures_.size() && b < stats.bounces.size(); ++b) {
-    if (!captures_[b] || !captures_[b]->haveRays) continue;
+    // Only bounces whose rays were keyed this frame: elsewhere the predicted length is whatever the path
+    // state held (auto's unsorted bounces showed 4e25 errors), so they keep the stats' "not measured".
+    if (!captures_[b] || !captures_[b]->haveRays || !captures_[b]->haveKeys) continue;
     Capture& c = *captures_[b];
     size_t n = c.hitT.size() / 4;
     // Unpacked from the path-state layout (shared_types.h, RL_STATE_*): predicted length in throughput.w,

@@ -36,15 +36,17 @@ class PathSorter {
   // the sorter the settings ask for; the sorter's scratch is only held while sorting.
   void apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths, const SettingsChange& change);
 
-  // Every call works on the paths of `slice` (the whole frame, or the slice PathTracer::recordSlice records:
-  // a slice sorts only its own paths); detailed readbacks go to the slice's part of the frame's.
-  // After the trace of `bounce`: the learn stage (when `learn`: these rays were keyed and sorted), and in
-  // detailed mode the accuracy readbacks.
-  void recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, PathRange slice, uint32_t stateSet,
-                        uint32_t bounce, bool learn, bool detailed, StageTimer* timer);
+  // Every call works on all the frame's paths (buffers.pathCount).
+  // A frame starts: no readback of an earlier (possibly abandoned) frame counts for it.
+  void beginFrame();
+  // After the trace of `bounce` whose rays were keyed and sorted (`keyed`; a call without does nothing):
+  // the learn stage, and in detailed mode the accuracy readbacks. Bounces without keys have no prediction,
+  // so they have no accuracy figures (null in the stats, never stale readbacks).
+  void recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
+                        uint32_t bounce, bool keyed, bool detailed, StageTimer* timer);
   // After shading `bounce`: the keys of the next rays (in buffers.keys, current set order), unless shade made
   // them (`madeInShade`, Settings::fusesKeys); the detailed readback of the keys either way.
-  void recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, PathRange slice, uint32_t stateSet,
+  void recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
                   uint32_t bounce, bool madeInShade, bool detailed, StageTimer* timer);
   // Sorts the live prefix's pairs in place (buffers.keys, buffers.values).
   void recordSort(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t paths, StageTimer* timer);

@@ -28,6 +28,8 @@ class GpuTimer : public StageTimer {
   std::vector<StageTime> collect();
   // GPU time from the first scope's start to the last scope's end, as of the last collect().
   double spanMs() const { return spanMs_; }
+  // Scopes begun since reset(); collect() returns one entry per scope, in this order.
+  uint32_t scopeCount() const { return static_cast<uint32_t>(scopes_.size()); }
 
  private:
   struct Scope {

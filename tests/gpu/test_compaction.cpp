@@ -114,17 +114,17 @@ TEST_F(Compaction, SortsBeforeAndAfterCompactions) {
   }
 }
 
-// The window renders in slices: each slice compacts its own slots.
-TEST_F(Compaction, SlicedCompactedFramesRenderTheWholeFrameImage) {
+// The window renders a frame in steps over several submissions: the compactions carry over between them.
+TEST_F(Compaction, CompactedFramesInStepsRenderTheWholeFrameImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("openings");
   Settings s = smallFrame(37, 19, 4);
   s.compaction = raylab::Compaction::Shade;
   const std::vector<glm::vec3> whole = renderRadiance(ctx(), scene, s, view);
-  uint32_t slices = 0;
-  const std::vector<glm::vec3> sliced = renderRadianceInSlices(ctx(), scene, s, view, slices);
-  EXPECT_GT(slices, 2u);
-  expectSameImage(sliced, whole, "compacted, in slices,");
+  uint32_t submissions = 0;
+  const std::vector<glm::vec3> stepped = renderRadianceInSteps(ctx(), scene, s, view, submissions);
+  EXPECT_GT(submissions, 2u);
+  expectSameImage(stepped, whole, "compacted, in steps,");
 }
 
 }  // namespace

@@ -95,7 +95,7 @@ TEST_P(FusedStages, FusedStagesKeepKeysAndStatistics) {
         EXPECT_EQ(g.virtualWarpEfficiency, e.virtualWarpEfficiency) << what << " bounce " << b;
         EXPECT_EQ(g.meanTraversalSteps, e.meanTraversalSteps) << what << " bounce " << b;
       }
-      EXPECT_GT(separate.bounces[2].distinctKeys, 0u) << what << ": keys were read back";
+      EXPECT_GT(separate.bounces[2].distinctKeys, 0) << what << ": keys were read back";
     }
   }
 }
@@ -129,8 +129,8 @@ TEST_P(FusedStages, SortKeyHeatmapsAreTheSeparatePassesHeatmaps) {
   }
 }
 
-// The window renders in slices: each slice's fused stages work on its own slots and live prefix.
-TEST_P(FusedStages, SlicedFusedFramesRenderTheWholeFrameImage) {
+// The window renders a frame in steps over several submissions: the fused stages' state carries over.
+TEST_P(FusedStages, FusedFramesInStepsRenderTheWholeFrameImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
   Settings s = smallFrame(37, 19, 4);
@@ -138,10 +138,10 @@ TEST_P(FusedStages, SlicedFusedFramesRenderTheWholeFrameImage) {
   s.sort = GetParam();
   s.fusion = Fusion::Both;
   const std::vector<glm::vec3> whole = renderRadiance(ctx(), scene, s, view);
-  uint32_t slices = 0;
-  const std::vector<glm::vec3> sliced = renderRadianceInSlices(ctx(), scene, s, view, slices);
-  EXPECT_GT(slices, 2u);
-  expectSameImage(sliced, whole, "average fused both, in slices,");
+  uint32_t submissions = 0;
+  const std::vector<glm::vec3> stepped = renderRadianceInSteps(ctx(), scene, s, view, submissions);
+  EXPECT_GT(submissions, 2u);
+  expectSameImage(stepped, whole, "average fused both, in steps,");
 }
 
 INSTANTIATE_TEST_SUITE_P(Sorts, FusedStages, ::testing::Values(SortAlgorithm::Radix, SortAlgorithm::Bitonic),

@@ -94,30 +94,35 @@ TEST_P(SortInvariant, SortingFewerKeyBitsRendersTheUnsortedImage) {
   }
 }
 
-// A frame rendered in slices (PathTracer::recordSlice, what the window does to stay live) is the whole-frame
-// render bit for bit: uneven slice sizes (one path, a part of a work group, several groups, then the rest),
-// each slice sorted on its own, over two frames (the second uses what the caches learned in the first), for
-// the unsorted wavefront, every sort policy's sorted wavefront and the megakernel. Rays and stage names of a
-// sliced frame are those of the whole frame, so its statistics describe whole frames.
-std::vector<glm::vec3> renderSlicedRadiance(const VulkanContext& ctx, const Scene& scene, const Settings& settings,
-                                            const Viewpoint& view, std::vector<FrameStats>* frames,
-                                            bool detailed = false) {
-  const uint32_t sizes[] = {1, 37, 300, 64, 1000};
+// A frame rendered in steps (PathTracer::recordSteps, several submissions, what the window does to stay
+// live) is the whole-frame render bit for bit: uneven numbers of steps per submission (one, then several),
+// over two frames (the second uses what the caches learned in the first), for the unsorted wavefront, every
+// sort policy's sorted wavefront and the megakernel. Every step is recorded exactly once, each submission
+// reports the GPU time of each step it recorded, and the rays and stage names of a frame in steps are those
+// of the whole frame, so its statistics describe whole frames.
+std::vector<glm::vec3> renderSteppedRadiance(const VulkanContext& ctx, const Scene& scene, const Settings& settings,
+                                             const Viewpoint& view, std::vector<FrameStats>* frames,
+                                             bool detailed = false) {
+  const uint32_t counts[] = {1, 3, 2, 5, 1};
   PathTracer tracer(ctx, scene, settings, view);
   tracer.setDetailedStats(detailed);
-  size_t next = 0;
   for (uint32_t f = 0; f < settings.frames; ++f) {
+    size_t next = 0;
     const FrameStats* done = nullptr;
-    uint32_t slices = 0;
+    uint32_t submissions = 0, steps = 0;
+    const uint32_t frameSteps = uint32_t(tracer.pendingSteps().size());
+    EXPECT_EQ(frameSteps, tracer.frameSteps()) << "a frame starts with all its steps pending";
     while (!done) {
-      const uint32_t first = tracer.nextSlicePath();
-      EXPECT_EQ(first == 0, slices == 0) << "a frame starts with its first slice";
-      ctx.submitAndWait([&](VkCommandBuffer cmd) { tracer.recordSlice(cmd, sizes[next++ % std::size(sizes)]); });
-      done = tracer.finishSlice(1.0);
-      ++slices;
+      uint32_t recorded = 0;
+      ctx.submitAndWait([&](VkCommandBuffer cmd) { recorded = tracer.recordSteps(cmd, counts[next++ % std::size(counts)]); });
+      done = tracer.finishSteps(1.0);
+      EXPECT_EQ(tracer.lastStepTimes().size(), recorded) << "a time for each step of the submission";
+      steps += recorded;
+      ++submissions;
     }
-    EXPECT_GT(slices, 2u);
-    EXPECT_EQ(done->wallMs, double(slices)) << "wall time sums over the slices";
+    EXPECT_GT(submissions, 2u);
+    EXPECT_EQ(steps, frameSteps) << "every step once";
+    EXPECT_EQ(done->wallMs, double(submissions)) << "wall time sums over the submissions";
     frames->push_back(*done);
   }
   return tracer.readRadiance();
@@ -131,7 +136,7 @@ std::vector<std::pair<std::string, int>> stageNames(const FrameStats& s) {
   return names;
 }
 
-TEST_P(SortInvariant, SlicedFramesRenderTheWholeFrameImage) {
+TEST_P(SortInvariant, SteppedFramesRenderTheWholeFrameImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
   Settings base = smallFrame(37, 19, 4);
@@ -153,69 +158,68 @@ TEST_P(SortInvariant, SlicedFramesRenderTheWholeFrameImage) {
     PathTracer whole(ctx(), scene, s, view);
     FrameStats wholeStats;
     for (uint32_t f = 0; f < s.frames; ++f) wholeStats = whole.renderFrame();
-    std::vector<FrameStats> sliced;
-    std::vector<glm::vec3> radiance = renderSlicedRadiance(ctx(), scene, s, view, &sliced);
+    std::vector<FrameStats> stepped;
+    std::vector<glm::vec3> radiance = renderSteppedRadiance(ctx(), scene, s, view, &stepped);
     std::vector<glm::vec3> expected = whole.readRadiance();
     const std::string what = toString(s.kernel) + " " + toString(s.strategy) + " " + toString(s.sortPolicy);
-    expectSameImage(radiance, expected, what + ", in slices,");
-    ASSERT_EQ(sliced.size(), s.frames);
-    EXPECT_EQ(sliced.back().raysTraced, wholeStats.raysTraced) << what;
-    EXPECT_EQ(sliced.back().samplesPerPixel, wholeStats.samplesPerPixel) << what;
+    expectSameImage(radiance, expected, what + ", in steps,");
+    ASSERT_EQ(stepped.size(), s.frames);
+    EXPECT_EQ(stepped.back().raysTraced, wholeStats.raysTraced) << what;
+    EXPECT_EQ(stepped.back().samplesPerPixel, wholeStats.samplesPerPixel) << what;
     if (s.sortPolicy != SortPolicy::Auto) {  // auto's second frame sorts where its (timed) costs say
-      EXPECT_EQ(stageNames(sliced.back()), stageNames(wholeStats)) << what;
+      EXPECT_EQ(stageNames(stepped.back()), stageNames(wholeStats)) << what;
     }
+    // The stage list has one entry per stage and bounce, as a whole frame's: a sort is one sort of the bounce.
+    EXPECT_EQ(stageNames(stepped.back()).size(), stepped.back().stages.size()) << what;
   }
 }
 
-// Heatmaps in slices: a view that does not depend on the whole frame's path order gathers each slice's paths
-// into their own pixels (the value range and pixel counts add up over the slices), so the sliced frame's
-// heatmap image is the whole frame's bit for bit, for the wavefront and the megakernel; the two that do
-// depend on it (sort-key ranks, warp efficiency) render the whole frame whatever slice is asked for. Fixed
-// keys: a key that learns would learn between slices.
-TEST_P(SortInvariant, SlicedHeatmapsAreTheWholeFrameHeatmap) {
+// Heatmaps in steps: every view, including those that depend on the whole frame's path order (sort-key
+// ranks, warp efficiency), is the whole frame's heatmap image bit for bit, for the wavefront and the
+// megakernel. Without compaction, whose packing order depends on timing (the warp efficiency reads the slot
+// order). Fixed keys: a key that learns might learn in another order.
+TEST_P(SortInvariant, SteppedHeatmapsAreTheWholeFrameHeatmap) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
   Settings base = smallFrame(37, 19, 3);
   base.strategy = KeyStrategy::Fixed;
   base.sort = GetParam();
   base.heatmapBounce = 1;
-  const std::pair<HeatmapView, Kernel> sliced[] = {{HeatmapView::TraversalSteps, Kernel::Wavefront},
-                                                   {HeatmapView::SortKey, Kernel::Wavefront},
-                                                   {HeatmapView::CellHit, Kernel::Wavefront},
-                                                   {HeatmapView::TraversalSteps, Kernel::Megakernel}};
-  for (auto [heatmap, kernel] : sliced) {
+  base.compaction = Compaction::None;
+  struct Case {
+    HeatmapView heatmap;
+    Kernel kernel;
+    HeatmapKeyColour keyColour;
+  };
+  const Case cases[] = {{HeatmapView::TraversalSteps, Kernel::Wavefront, HeatmapKeyColour::Cell},
+                        {HeatmapView::SortKey, Kernel::Wavefront, HeatmapKeyColour::Cell},
+                        {HeatmapView::SortKey, Kernel::Wavefront, HeatmapKeyColour::Rank},
+                        {HeatmapView::WarpEfficiency, Kernel::Wavefront, HeatmapKeyColour::Cell},
+                        {HeatmapView::CellHit, Kernel::Wavefront, HeatmapKeyColour::Cell},
+                        {HeatmapView::TraversalSteps, Kernel::Megakernel, HeatmapKeyColour::Cell}};
+  for (const Case& c : cases) {
     Settings s = base;
-    s.heatmap = heatmap;
-    s.kernel = kernel;
-    const std::string what = toString(heatmap) + " " + toString(kernel);
+    s.heatmap = c.heatmap;
+    s.kernel = c.kernel;
+    s.heatmapKeyColour = c.keyColour;
+    const std::string what = toString(c.heatmap) + " " + toString(c.kernel) + " " + toString(c.keyColour);
     PathTracer whole(ctx(), scene, s, view);
     whole.renderFrame();
     PathTracer parts(ctx(), scene, s, view);
-    ASSERT_FALSE(parts.needsWholeFrames()) << what;
-    uint32_t slices = 0;
-    for (const FrameStats* done = nullptr; !done; ++slices) {
-      ctx().submitAndWait([&](VkCommandBuffer cmd) { parts.recordSlice(cmd, 100); });
-      done = parts.finishSlice(1.0);
+    uint32_t submissions = 0;
+    for (const FrameStats* done = nullptr; !done; ++submissions) {
+      ctx().submitAndWait([&](VkCommandBuffer cmd) { parts.recordSteps(cmd, 2); });
+      done = parts.finishSteps(1.0);
     }
-    EXPECT_GT(slices, 2u) << what;
-    EXPECT_EQ(parts.readImage(), whole.readImage()) << what << ": the sliced heatmap differs";
-  }
-  for (HeatmapView heatmap : {HeatmapView::SortKey, HeatmapView::WarpEfficiency}) {
-    Settings s = base;
-    s.heatmap = heatmap;
-    s.heatmapKeyColour = HeatmapKeyColour::Rank;
-    PathTracer tracer(ctx(), scene, s, view);
-    EXPECT_TRUE(tracer.needsWholeFrames()) << toString(heatmap);
-    ctx().submitAndWait([&](VkCommandBuffer cmd) { tracer.recordSlice(cmd, 100); });
-    EXPECT_NE(tracer.finishSlice(1.0), nullptr) << toString(heatmap) << ": one slice is the whole frame";
+    EXPECT_GT(submissions, 2u) << what;
+    EXPECT_EQ(parts.readImage(), whole.readImage()) << what << ": the heatmap in steps differs";
   }
 }
 
-// Detailed statistics of a sliced frame are read back slice by slice into the whole frame's readbacks:
-// unsorted, slot order is path order, so the per-bounce warp efficiency and traversal steps equal the whole
-// frame's exactly (wavefront and megakernel); sorted with a key that learns nothing (fixed), the cell-hit
-// rate and distinct keys do too (prediction is per path; only the sort order within a slice differs).
-TEST_P(SortInvariant, SlicedFramesKeepDetailedStatistics) {
+// Detailed statistics of a frame in steps are those of the whole frame exactly: unsorted, the per-bounce warp
+// efficiency and traversal steps (wavefront and megakernel); sorted with a key that learns nothing (fixed),
+// every accuracy figure too (each sort sorts the whole bounce, as in a whole frame).
+TEST_P(SortInvariant, SteppedFramesKeepDetailedStatistics) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
   Settings base = smallFrame(37, 19, 3);
@@ -231,26 +235,26 @@ TEST_P(SortInvariant, SlicedFramesKeepDetailedStatistics) {
     PathTracer whole(ctx(), scene, s, view);
     whole.setDetailedStats(true);
     const FrameStats expected = whole.renderFrame();
-    std::vector<FrameStats> sliced;
-    renderSlicedRadiance(ctx(), scene, s, view, &sliced, true);
-    const FrameStats& got = sliced.back();
+    std::vector<FrameStats> stepped;
+    renderSteppedRadiance(ctx(), scene, s, view, &stepped, true);
+    const FrameStats& got = stepped.back();
     const std::string what = toString(s.kernel) + " " + toString(s.strategy);
     ASSERT_EQ(got.bounces.size(), expected.bounces.size()) << what;
     for (size_t b = 0; b < got.bounces.size(); ++b) {
       const BounceStats &g = got.bounces[b], &e = expected.bounces[b];
       EXPECT_EQ(g.rays, e.rays) << what << " bounce " << b;
-      if (s.sorts()) {
-        if (b > 0) {
-          EXPECT_GE(e.cellHitRate, 0.0) << what << " bounce " << b << ": measured";
-        }
-        EXPECT_EQ(g.cellHitRate, e.cellHitRate) << what << " bounce " << b;
-        EXPECT_EQ(g.distinctKeys, e.distinctKeys) << what << " bounce " << b;
-        EXPECT_EQ(g.predictionErrorMedian, e.predictionErrorMedian) << what << " bounce " << b;
-      } else {
+      EXPECT_EQ(g.virtualWarpEfficiency, e.virtualWarpEfficiency) << what << " bounce " << b;
+      EXPECT_EQ(g.meanTraversalSteps, e.meanTraversalSteps) << what << " bounce " << b;
+      if (s.kernel == Kernel::Wavefront) {
         EXPECT_GT(e.virtualWarpEfficiency, 0.0) << what << " bounce " << b;
-        EXPECT_EQ(g.virtualWarpEfficiency, e.virtualWarpEfficiency) << what << " bounce " << b;
-        EXPECT_EQ(g.meanTraversalSteps, e.meanTraversalSteps) << what << " bounce " << b;
       }
+      if (s.sorts() && b > 0) {
+        EXPECT_GE(e.cellHitRate, 0.0) << what << " bounce " << b << ": measured";
+      }
+      EXPECT_EQ(g.cellHitRate, e.cellHitRate) << what << " bounce " << b;
+      EXPECT_EQ(g.distinctKeys, e.distinctKeys) << what << " bounce " << b;
+      EXPECT_EQ(g.predictionErrorMean, e.predictionErrorMean) << what << " bounce " << b;
+      EXPECT_EQ(g.predictionErrorMedian, e.predictionErrorMedian) << what << " bounce " << b;
     }
   }
 }

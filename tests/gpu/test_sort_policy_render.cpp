@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "renderer/path_tracer.h"
+#include "renderer/stats_json.h"
 #include "scenes/procedural.h"
 #include "tests/gpu_test.h"
 #include "tests/render_helpers.h"
@@ -64,6 +65,56 @@ TEST_F(SortPolicyRender, NeverSortsNothingAndAlwaysEveryBounceButTheLast) {
   const FrameStats& always = tracer.renderFrame();
   EXPECT_TRUE(always.bounces[0].sortedAfter && always.bounces[1].sortedAfter);
   EXPECT_FALSE(always.bounces[2].sortedAfter);
+}
+
+// Accuracy figures exist only where they were measured: a bounce whose rays were not keyed (auto's unsorted
+// bounces) has no prediction, so its prediction error, cell-hit rate and distinct keys are null in the stats,
+// never whatever the readback buffers or the path state held (they read 4e25 errors and 0.96 hit rates).
+// Auto's second frame explores unsorted right after a sorted one; then a cost history in which sorting never
+// pays makes it sort nothing.
+TEST_F(SortPolicyRender, UnsortedBouncesOfAutoHaveNoAccuracyFigures) {
+  Scene scene = makeTemple();
+  Settings s = smallFrame(40, 20, 4);
+  s.strategy = KeyStrategy::TwoPoint;
+  s.sortPolicy = SortPolicy::Auto;
+  PathTracer tracer(ctx(), scene, s, *scene.findViewpoint("hall"));
+  tracer.setDetailedStats(true);
+  const FrameStats sorted = tracer.renderFrame();
+  for (size_t b = 1; b < sorted.bounces.size(); ++b) {
+    EXPECT_GE(sorted.bounces[b].predictionErrorMean, 0.0) << "bounce " << b << " was keyed: measured";
+    EXPECT_GT(sorted.bounces[b].distinctKeys, 0) << "bounce " << b;
+  }
+  auto expectNoFigures = [](const FrameStats& f, const std::string& what) {
+    const nlohmann::json j = toJson(f);
+    ASSERT_EQ(j["bounces"].size(), 4u) << what;
+    for (const nlohmann::json& b : j["bounces"]) {
+      ASSERT_FALSE(b["sorted_after"].get<bool>()) << what;
+      for (const char* field : {"prediction_error_mean", "prediction_error_median", "cell_hit_rate", "distinct_keys"})
+        EXPECT_TRUE(!b.contains(field) || b[field].is_null()) << what << " bounce " << b["bounce"] << " " << field
+                                                               << " = " << b[field];
+    }
+  };
+  expectNoFigures(tracer.renderFrame(), "explore: unsorted");
+  // A history in which sorting costs far more than it saves: auto sorts nothing from then on.
+  SortPolicyModel& model = tracer.sortPolicy();
+  model.reset();
+  for (bool sorts : {true, false}) {
+    SortPlan plan;
+    plan.sortAfter = {sorts, sorts, sorts, false};
+    plan.reasons.assign(4, "history");
+    std::vector<StageTime> stages;
+    for (int b = 0; b < 4; ++b) {
+      stages.push_back({"trace", b, 10.0});
+      stages.push_back({"shade", b, 10.0});
+      if (sorts && b < 3) stages.push_back({"sort", b, 1000.0});
+    }
+    model.record(plan, stages);
+  }
+  for (int f = 0; f < 2; ++f) {
+    ASSERT_FALSE(tracer.sortPolicy().plan(SortPolicy::Auto, 4).any()) << "the history makes auto sort nothing";
+    // (An unsorted frame updates only the unsorted estimates: the cost of 1000 ms stays.)
+    expectNoFigures(tracer.renderFrame(), "auto sorting nothing, frame " + std::to_string(f));
+  }
 }
 
 }  // namespace raylab::test

@@ -55,7 +55,7 @@ every=$(( (frames - warm) / 10 > block ? (frames - warm) / 10 : block ))
 
 start=$(date +%s)
 code=0
-(cd "$out" && xvfb-run -a -s "-screen 0 640x480x24" "$raylab" --size 160x90 --scale 1 --screenshot-dir "$out" \
+(cd "$out" && xvfb-run -a -s "-screen 0 640x480x24" "$raylab" --window-size 160x90 --scale 1 --screenshot-dir "$out" \
    --script "$out/soak-script.txt" >"$out/soak-stdout.txt" 2>"$out/soak-stderr.txt") || code=$?
 seconds=$(( $(date +%s) - start ))
 [ $code -eq 0 ] || { echo "window_soak: the window exited $code" >&2; tail -20 "$out/soak-stderr.txt" >&2; exit 1; }

@@ -66,6 +66,22 @@ expect 2 --render-budget-ms 0
 expect 2 --render-budget-ms soon
 expect 0 bench --help
 expect 0 render --help
+expect 2 --window-size 1280
+expect 2 --window-size 0x720
+expect 2 --window-size 1280x100000
+# raylab --help, -h and help list every mode and the window's own options, each option named once: the
+# window's size is --window-size, --size is only the resolution.
+for h in --help -h help; do
+  out=$(timeout 60 "$raylab" $h 2>&1); got=$?
+  [ $got -eq 0 ] || { echo "FAIL: raylab $h exited $got"; fail=1; }
+  for word in "raylab render" "raylab sortbench" "raylab bench" "raylab devices" --window-size --scale --script \
+      --screenshot-dir --ini --reset --frame-log --render-budget-ms --strategy --sort-policy; do
+    grep -qF -- "$word" <<<"$out" || { echo "FAIL: raylab $h does not list $word"; fail=1; }
+  done
+  grep -q -- "^  --size WxH *resolution" <<<"$out" || { echo "FAIL: raylab $h: --size is not the resolution"; fail=1; }
+  dup=$(grep -oE -- "^  --[a-z-]+" <<<"$out" | sort | uniq -d)
+  [ -z "$dup" ] || { echo "FAIL: raylab $h lists more than once: $dup"; fail=1; }
+done
 # (That the documented limits themselves are accepted needs a render: tests/cli/gpu/accepted_limits.sh.)
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT

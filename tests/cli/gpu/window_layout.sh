@@ -29,7 +29,7 @@ wait 2
 screenshot-window reset
 quit
 S
-xvfb --size 1280x720 --script resize.txt >resize.log 2>&1 || { echo "FAIL: the resize run exited $?"; tail -20 resize.log; exit 1; }
+xvfb --window-size 1280x720 --script resize.txt >resize.log 2>&1 || { echo "FAIL: the resize run exited $?"; tail -20 resize.log; exit 1; }
 grep -q "validation error" resize.log && { echo "FAIL: validation errors"; grep "validation error" resize.log | head; exit 1; }
 
 # Panels dragged about on a big screen and saved: Timing far off to the right, Scene and camera collapsed at
@@ -51,7 +51,7 @@ Size=1800,1000
 Collapsed=0
 S
 printf 'wait 2\nscreenshot-window from-ini\nreset-layout\nwait 2\nscreenshot-window ini-reset\nquit\n' >ini.txt
-xvfb --size 1280x720 --ini big-screen.ini --script ini.txt >ini.log 2>&1 || { echo "FAIL: the ini run exited $?"; tail -20 ini.log; exit 1; }
+xvfb --window-size 1280x720 --ini big-screen.ini --script ini.txt >ini.log 2>&1 || { echo "FAIL: the ini run exited $?"; tail -20 ini.log; exit 1; }
 
 python3 - <<'PY'
 import json

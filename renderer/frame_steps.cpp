@@ -1,0 +1,219 @@
+// The frame loop as a list of steps (PathTracer::buildSteps): every stage of a frame is one FrameStep over the
+// whole frame, in the order a whole frame records them. The host-side decisions (which bounces sort, which
+// state set each stage reads, which dispatches are fused) are made here, once per frame, and each step's
+// closure keeps the ones it needs, so recording the steps over several submissions records exactly the
+// commands of one.
+#include "renderer/path_tracer.h"
+
+#include "renderer/heatmap_pass.h"
+#include "renderer/heatmap_rules.h"
+#include "renderer/reorder/key_functions.h"
+#include "renderer/reorder/path_sorter.h"
+#include "renderer/rt_tracer.h"
+#include "renderer/vk/stage_timer.h"
+
+namespace raylab {
+
+namespace {
+
+constexpr uint32_t kGroup = RL_PATH_GROUP_SIZE;
+
+}  // namespace
+
+const ComputePipeline& PathTracer::shadeVariant(bool compact, bool traceFirst) {
+  if (!compact && !traceFirst) return shade_;
+  std::optional<ComputePipeline>& p = shadeVariants_[compact ? 1 : 0][traceFirst ? 1 : 0];
+  if (!p)
+    p.emplace(ctx_, "shade", sizeof(gpu::PathStagePush), kGroup,
+              std::vector<uint32_t>{static_cast<uint32_t>(KeyStrategy::None), compact ? 1u : 0u, traceFirst ? 1u : 0u});
+  return *p;
+}
+
+const ComputePipeline& PathTracer::gatheringTrace(bool counting) {
+  std::optional<ComputePipeline>& p = gatheringTrace_[counting ? 1 : 0];
+  if (!p) p.emplace(ctx_, "trace", sizeof(gpu::PathStagePush), kGroup, std::vector<uint32_t>{counting ? 1u : 0u, 1u});
+  return *p;
+}
+
+void PathTracer::addStep(const char* name, int bounce, std::function<void(VkCommandBuffer)> record) {
+  steps_.push_back({name, bounce, std::move(record)});
+}
+
+// The frame's sort plan, the heatmap's view for it, then setup, the kernel's steps and the end of the frame.
+void PathTracer::buildSteps() {
+  steps_.clear();
+  nextStep_ = 0;
+  const bool sorting = settings_.sorts();
+  framePlan_ = sorting ? sortPolicy_.plan(settings_.sortPolicy, settings_.bounces) : SortPlan{};
+  heatmap_->configure(settings_, sorting ? pathSorter_->keys().paramsAddress() : 0,
+                      sorting ? &pathSorter_->keys().grid().gpu : nullptr, sorting && pathSorter_->keys().hasCache());
+  addStep("setup", -1, [this](VkCommandBuffer cmd) {
+    recordStage(cmd, &timer_, "setup", [&] {
+      recordFrameBlock(cmd);
+      buffers_->counters.recordFill(cmd, 0);
+      computeBarrier(cmd);
+      heatmap_->recordClear(cmd);
+      pathSorter_->beginFrame();  // no readback of an abandoned frame is taken for this one's
+    });
+  });
+  const gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0};
+  if (settings_.kernel == Kernel::Megakernel)
+    buildMegakernelSteps(push);
+  else
+    buildWavefrontSteps(push);
+  buildEndSteps(push);
+}
+
+void PathTracer::buildMegakernelSteps(const gpu::PathStagePush& push) {
+  addStep("megakernel", -1, [this, push](VkCommandBuffer cmd) {
+    const uint32_t n = buffers_->pathCount;
+    const ComputePipeline& megakernel = settings_.countSimt ? megakernelCounting_ : megakernel_;
+    recordStage(cmd, &timer_, "megakernel", [&] {
+      if (!usesRt()) {
+        megakernel.dispatchThreads(cmd, push, n);
+      } else if (settings_.ser == Ser::Off) {
+        rt_->megakernel(cmd, push, n);
+      } else {
+        // The hint: the top bits (at most 16) of the key Settings::strategy gives each ray.
+        const KeyStrategy hint = settings_.ser == Ser::Hint ? settings_.strategy : KeyStrategy::None;
+        const uint32_t bits = hint == KeyStrategy::None ? 0 : spatialKeyBits(hint, pathSorter_->keys().grid().gpu);
+        gpu::RtSerPush ser{push.frame, hint == KeyStrategy::None ? 0 : pathSorter_->keys().paramsAddress(),
+                           bits > 16 ? bits - 16 : 0, std::min(bits, 16u)};
+        rt_->serMegakernel(cmd, ser, hint, n);
+      }
+    });
+  });
+  if (detailedStats_ && !usesRt()) addStep("counters", -1, [this](VkCommandBuffer cmd) { recordStepsReadback(cmd, 0); });
+  if (heatmapShown(settings_) != HeatmapView::None)
+    addStep("heatmap", -1, [this](VkCommandBuffer cmd) { heatmap_->afterMegakernel(cmd, *buffers_, &timer_); });
+}
+
+// The bounce loop: trace, learn, shade, then keys, sort and reorder before the next bounce where the sort
+// policy's plan says so (learn only for rays that were sorted). Trace and shade are dispatched indirectly
+// over the live paths: all of them until a sort has moved the finished paths behind the live ones
+// (GpuFrame::live); a bounce that does not sort keeps the last sort's order and live count.
+// Settings::fusion folds the keys into shade and the reorder into the next trace: the stage times then
+// report them as part of "shade" and "trace", since they are no longer passes of their own.
+void PathTracer::buildWavefrontSteps(gpu::PathStagePush push) {
+  addStep("generate", -1, [this, push](VkCommandBuffer cmd) {
+    recordStage(cmd, &timer_, "generate", [&] { generate_.dispatchThreads(cmd, push, buffers_->pathCount); });
+  });
+  bool gatherInTrace = false;  // the last sort's reorder is left to this bounce's trace
+  for (uint32_t b = 0; b < settings_.bounces; ++b) {
+    push.bounce = b;
+    buildBounceSteps(b, push, gatherInTrace);
+  }
+}
+
+// shade.comp as bounce `bounce` needs it; `traceFirst`: it also does the trace (Settings::traceShade).
+// Settings::compaction: every shade but the last bounce's packs the live paths into the other state set and
+// its own block of GpuFrame::live, which becomes the live block (the copy is timed as part of "shade"), and
+// gives the slots it visited the dead key, so keys, sort and reorder after it see a live prefix with dead
+// keys behind it as after a sort. Not where shade makes the keys (Settings::fusion keys): a path's key would
+// have to go to its new slot, which another subgroup may be marking dead.
+void PathTracer::recordShade(VkCommandBuffer cmd, const gpu::PathStagePush& push, uint32_t bounce, bool traceFirst) {
+  const bool sortAfter = settings_.sorts() && bounce + 1 < settings_.bounces && framePlan_.sortAfter[bounce];
+  const bool keysInShade = sortAfter && settings_.fusesKeys();
+  const bool compacts = settings_.compacts() && !keysInShade && bounce + 1 < settings_.bounces;
+  const VkBuffer live = buffers_->live.handle();
+  const VkDeviceSize liveDispatch = PathBuffers::kLiveDispatchOffset;
+  if (usesRt()) {
+    rt_->shade(cmd, push, buffers_->pathCount);
+  } else if (compacts) {
+    shadeVariant(true, traceFirst).dispatchIndirect(cmd, push, live, liveDispatch);
+    computeBarrier(cmd);
+    const VkBufferCopy packed{PathBuffers::liveAppendOffset(bounce), 0, PathBuffers::kLiveBlockBytes};
+    vkCmdCopyBuffer(cmd, live, live, 1, &packed);
+  } else {
+    (keysInShade ? pathSorter_->shadeWithKeys() : shadeVariant(false, traceFirst))
+        .dispatchIndirect(cmd, push, live, liveDispatch);
+  }
+}
+
+void PathTracer::buildBounceSteps(uint32_t b, gpu::PathStagePush& push, bool& gatherInTrace) {
+  const int bounce = static_cast<int>(b);
+  const bool sorting = settings_.sorts();
+  const bool sortedBefore = sorting && b > 0 && framePlan_.sortAfter[b - 1];
+  const bool sortAfter = sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b];
+  const bool keysInShade = sortAfter && settings_.fusesKeys();
+  const bool compacts = settings_.compacts() && !keysInShade && b + 1 < settings_.bounces;
+  // One dispatch for trace and shade where nothing between them reads the hits: no reorder in this trace,
+  // no keys in shade, no learning from sorted rays, no detailed statistics, no heatmap of this bounce.
+  const bool learns = sortedBefore && usesLengthCache(settings_.strategy);
+  if (settings_.fusesTraceShade() && !gatherInTrace && !keysInShade && !learns && !detailedStats_ &&
+      !heatmap_->readsAfterTrace(b)) {
+    addStep("trace+shade", bounce, [this, push, b](VkCommandBuffer cmd) {
+      recordStage(cmd, &timer_, "trace+shade", [&] { recordShade(cmd, push, b, true); });
+    });
+  } else {
+    addStep("trace", bounce, [this, push, gathers = gatherInTrace](VkCommandBuffer cmd) {
+      const uint32_t n = buffers_->pathCount;
+      recordStage(cmd, &timer_, "trace", [&] {
+        if (usesRt())
+          rt_->traceRays(cmd, push, n);  // every path; the shader skips those past the live count
+        else if (gathers)
+          gatheringTrace(settings_.countSimt).dispatchThreads(cmd, push, n);  // every slot: it finds the live count
+        else
+          (settings_.countSimt ? traceCounting_ : trace_)
+              .dispatchIndirect(cmd, push, buffers_->live.handle(), PathBuffers::kLiveDispatchOffset);
+      });
+    });
+    if (gatherInTrace) push.stateSet = 1u - push.stateSet, gatherInTrace = false;
+    if (detailedStats_ && !usesRt())
+      addStep("counters", bounce, [this, b](VkCommandBuffer cmd) { recordStepsReadback(cmd, b); });
+    // Learning and the accuracy readbacks are for rays that were keyed and sorted: other bounces have no
+    // prediction to learn from or measure.
+    if (sortedBefore && (learns || detailedStats_))
+      addStep("learn", bounce, [this, push, b, sortedBefore](VkCommandBuffer cmd) {
+        pathSorter_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, sortedBefore, detailedStats_, &timer_);
+      });
+    if (heatmap_->readsAfterTrace(b))
+      addStep("heatmap", bounce, [this, push, b](VkCommandBuffer cmd) {
+        heatmap_->afterTrace(cmd, *buffers_, push.stateSet, b, &timer_);
+      });
+    addStep("shade", bounce, [this, push, b](VkCommandBuffer cmd) {
+      recordStage(cmd, &timer_, "shade", [&] { recordShade(cmd, push, b, false); });
+    });
+  }
+  if (compacts) push.stateSet = 1u - push.stateSet;
+  if (sortAfter) buildSortSteps(b, keysInShade, push, gatherInTrace);
+}
+
+// Keys of the next rays, the sort of every live path, then the reorder unless the next trace does it. The
+// sort-rank heatmap reads the reordered set right after the sort: that bounce gathers on its own.
+void PathTracer::buildSortSteps(uint32_t b, bool keysInShade, gpu::PathStagePush& push, bool& gatherInTrace) {
+  const int bounce = static_cast<int>(b);
+  const bool heatmap = heatmapShown(settings_) != HeatmapView::None;
+  addStep("keys", bounce, [this, push, b, keysInShade](VkCommandBuffer cmd) {
+    pathSorter_->recordKeys(cmd, *buffers_, push.stateSet, b, keysInShade, detailedStats_, &timer_);
+  });
+  if (heatmap)
+    addStep("heatmap", bounce, [this, push, b](VkCommandBuffer cmd) {
+      heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, &timer_);
+    });
+  addStep("sort", bounce, [this](VkCommandBuffer cmd) { pathSorter_->recordSort(cmd, *buffers_, buffers_->pathCount, &timer_); });
+  gatherInTrace = settings_.fusesGather() && !heatmap_->readsAfterSort(b);
+  if (gatherInTrace) return;
+  addStep("reorder", bounce, [this, push](VkCommandBuffer cmd) {
+    pathSorter_->recordGather(cmd, *buffers_, buffers_->pathCount, push.stateSet, &timer_);
+  });
+  push.stateSet = 1u - push.stateSet;  // the gather's output set
+  if (heatmap)
+    addStep("heatmap", bounce, [this, push, b](VkCommandBuffer cmd) {
+      heatmap_->afterSort(cmd, *buffers_, push.stateSet, b, &timer_);
+    });
+}
+
+// Accumulate, tonemap (or the heatmap's colours), and the counters to the host.
+void PathTracer::buildEndSteps(const gpu::PathStagePush& push) {
+  addStep("accumulate", -1, [this, push](VkCommandBuffer cmd) {
+    recordStage(cmd, &timer_, "accumulate", [&] { accumulate_.dispatchThreads(cmd, push, buffers_->pixelCount); });
+  });
+  addStep("tonemap", -1, [this, push](VkCommandBuffer cmd) {
+    if (!heatmap_->colorize(cmd, *buffers_, &timer_))
+      recordStage(cmd, &timer_, "tonemap", [&] { tonemap_.dispatchThreads(cmd, push, buffers_->pixelCount); });
+  });
+  addStep("counters", -1, [this](VkCommandBuffer cmd) { recordCountersToHost(cmd); });
+}
+
+}  // namespace raylab
