@@ -45,6 +45,5 @@ void FrameLog::write(const UiFrameRecord& r, const RenderTurn& turn, const Setti
   line += "}\n";
   file_.append(line, /*durable=*/false);
 }
-}
 
 }  // namespace raylab
