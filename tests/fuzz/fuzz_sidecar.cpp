@@ -20,7 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     // Accepted: no silent wrong result, every source of Settings is held to the same checks.
     if (raylab::settingsError(s.settings)) __builtin_trap();
     if (s.camera && (!finite(s.camera->position) || !finite(s.camera->target) || !finite(s.camera->up) ||
-                     !std::isfinite(s.camera->yfovRadians)))
+                     !(s.camera->yfovRadians > 0.0f && s.camera->yfovRadians < 3.1416f) ||
+                     s.camera->position == s.camera->target))
       __builtin_trap();
   } catch (const raylab::UsageError&) {
   }
