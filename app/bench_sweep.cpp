@@ -120,6 +120,16 @@ std::string shortNumber(float v) {
 
 bool usesGrid(KeyStrategy s) { return s != KeyStrategy::None && s != KeyStrategy::DeadLast; }
 
+// Axes multiply: a sweep file of under 1 KB listing four axes 40 times each is 2.6 million cells, which
+// took minutes and gigabytes to plan before anything rendered (found by tests/fuzz). Far more cells than
+// any bench could render in a day is a mistake in the sweep, said before the plan grows that far.
+constexpr size_t kMaxCells = 10000;
+void checkCellCount(size_t cells) {
+  if (cells > kMaxCells)
+    throw UsageError("the sweep expands to more than " + std::to_string(kMaxCells) +
+                     " cells (cases x bounces x tracers x methods); sweep fewer values, or in several runs");
+}
+
 }  // namespace
 
 BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
@@ -188,6 +198,12 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
   const Settings& base = plan.common.settings;
   if (axes.tracers.empty()) axes.tracers = {toString(base.tracer)};
   if (axes.bounces.empty()) axes.bounces = {std::to_string(base.bounces)};
+  // Every group has its megakernel and unsorted cells at least.
+  checkCellCount(plan.cases.size() * axes.bounces.size() * axes.tracers.size() * 2);
+  auto addCell = [&](BenchCell cell) {
+    plan.cells.push_back(std::move(cell));
+    checkCellCount(plan.cells.size());
+  };
   for (size_t ci = 0; ci < plan.cases.size(); ++ci) {
     // One group of cells per bounce count and tracer; the runner renders a reference per bounce count.
     std::vector<Settings> groups;
@@ -204,29 +220,29 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
       Settings mega = caseBase;
       mega.kernel = Kernel::Megakernel;
       mega.strategy = KeyStrategy::None;
-      plan.cells.push_back({ci, mega, prefix + "megakernel"});
+      addCell({ci, mega, prefix + "megakernel"});
       // SER (rt megakernel only): by hit, and by hit with the hint of each --ser-hints strategy.
       for (const std::string& ser : caseBase.tracer == Tracer::Rt ? axes.sers : std::vector<std::string>{}) {
         Settings withSer = withFlag(mega, "--ser", ser);
-        if (withSer.ser == Ser::On) plan.cells.push_back({ci, withSer, prefix + "megakernel ser"});
+        if (withSer.ser == Ser::On) addCell({ci, withSer, prefix + "megakernel ser"});
         if (withSer.ser != Ser::Hint) continue;
         for (const std::string& hint : axes.serHints) {
           Settings hinted = withFlag(withSer, "--strategy", hint);
           if (hinted.strategy == KeyStrategy::None) throw UsageError("--ser-hints: a hint needs a key strategy");
-          plan.cells.push_back({ci, hinted, prefix + "megakernel ser+hint " + hint});
+          addCell({ci, hinted, prefix + "megakernel ser+hint " + hint});
         }
       }
       Settings plain = caseBase;
       plain.kernel = Kernel::Wavefront;
       plain.strategy = KeyStrategy::None;
-      plan.cells.push_back({ci, plain, prefix + "none"});
+      addCell({ci, plain, prefix + "none"});
       // The unsorted wavefront with each other value of an axis that changes it (compaction, trace and shade):
       // a baseline of its own, labelled "none <flag>=<value>".
       auto unsortedVariants = [&](const std::vector<std::string>& values, const std::string& flag, auto field) {
         for (const std::string& value : values) {
           Settings other = withFlag(plain, flag, value);
           if (other.*field != plain.*field)
-            plan.cells.push_back({ci, other, prefix + "none " + flag.substr(2) + "=" + toString(other.*field)});
+            addCell({ci, other, prefix + "none " + flag.substr(2) + "=" + toString(other.*field)});
         }
       };
       unsortedVariants(axes.compactions, "--compaction", &Settings::compaction);
@@ -239,6 +255,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
           std::vector<Settings> variants{so};
           auto expand = [&](const std::vector<std::string>& values, const char* flag, bool gridOnly = true) {
             if (values.empty() || (gridOnly && !usesGrid(so.strategy))) return;
+            checkCellCount(plan.cells.size() + variants.size() * values.size());
             std::vector<Settings> next;
             for (const Settings& v : variants)
               for (const std::string& value : values) next.push_back(withFlag(v, flag, value));
@@ -253,6 +270,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
           expand(axes.compactions, "--compaction", /*gridOnly=*/false);
           expand(axes.traceShades, "--trace-shade", /*gridOnly=*/false);
           if (usesLengthCache(so.strategy)) expand(axes.learnEvery, "--learn-every");
+          checkCellCount(plan.cells.size() + variants.size() * axes.policies.size());
           std::vector<Settings> withPolicies;
           for (const Settings& v : variants)
             for (const std::string& policy : axes.policies) withPolicies.push_back(withFlag(v, "--sort-policy", policy));
@@ -272,7 +290,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
             if (v.compaction != Settings{}.compaction) label += " compaction=" + toString(v.compaction);
             if (v.traceShade != Settings{}.traceShade) label += " trace-shade=" + toString(v.traceShade);
             if (v.learnEvery != 1) label += " learn=1/" + std::to_string(v.learnEvery);
-            plan.cells.push_back({ci, v, label});
+            addCell({ci, v, label});
           }
         }
       }

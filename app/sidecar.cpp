@@ -1,7 +1,10 @@
 #include "app/sidecar.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <limits>
+#include <stdexcept>
 
 #include "app/fly_camera.h"
 #include "app/setting_flags.h"
@@ -15,7 +18,19 @@ using nlohmann::json;
 
 json toJson(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
 
-glm::vec3 vec3From(const json& j) { return {j.at(0).get<float>(), j.at(1).get<float>(), j.at(2).get<float>()}; }
+// A camera number read as the double JSON holds: beyond float's range it would silently become inf
+// (found by tests/fuzz: a sidecar with "position": [1e300, 0, 0] rendered from infinity).
+float finiteFloat(const json& v, const std::string& what) {
+  double d = v.get<double>();
+  if (!std::isfinite(d) || std::fabs(d) > std::numeric_limits<float>::max())
+    throw std::invalid_argument("camera: '" + what + "' must be finite numbers, got " + v.dump());
+  return static_cast<float>(d);
+}
+
+glm::vec3 vec3From(const json& j, const std::string& what) {
+  if (!j.is_array() || j.size() != 3) throw std::invalid_argument("camera: '" + what + "' must be [x, y, z], got " + j.dump());
+  return {finiteFloat(j.at(0), what), finiteFloat(j.at(1), what), finiteFloat(j.at(2), what)};
+}
 
 json cameraJson(const Viewpoint& v) {
   return {{"name", v.name},         {"position", toJson(v.position)},
@@ -26,10 +41,17 @@ json cameraJson(const Viewpoint& v) {
 Viewpoint cameraFrom(const json& j) {
   Viewpoint v;
   v.name = j.value("name", std::string());
-  v.position = vec3From(j.at("position"));
-  v.target = vec3From(j.at("target"));
-  v.up = vec3From(j.at("up"));
-  v.yfovRadians = glm::radians(j.at("yfov_degrees").get<float>());
+  v.position = vec3From(j.at("position"), "position");
+  v.target = vec3From(j.at("target"), "target");
+  v.up = vec3From(j.at("up"), "up");
+  // The checks and limits of the camera's text form (cameraFromText), plus an up that is not the view axis.
+  float fov = finiteFloat(j.at("yfov_degrees"), "yfov_degrees");
+  if (!(fov > 0.5f && fov < 179.5f)) throw std::invalid_argument("camera: fov must be between 0.5 and 179.5 degrees");
+  v.yfovRadians = glm::radians(fov);
+  glm::vec3 forward = v.target - v.position;
+  if (!(glm::length(forward) >= 1e-6f)) throw std::invalid_argument("camera: the target equals the position");
+  if (!(glm::length(glm::cross(forward, v.up)) > 1e-6f * glm::length(forward) * glm::length(v.up)))
+    throw std::invalid_argument("camera: 'up' is zero or along the view direction");
   return v;
 }
 

@@ -343,6 +343,43 @@ void printWarnings(const std::string& file, const std::string& warnings) {
     std::fprintf(stderr, "warning: %s: ... and %d more warnings from tinygltf\n", file.c_str(), count - 3);
 }
 
+// tinygltf reads a URI that names a directory ("uri": ".") as a file of 2^63 bytes and allocates that (found
+// by tests/fuzz): only regular files are read, anything else is "not a file" in the load error.
+bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    if (err) *err += "'" + path + "' is not a regular file\n";
+    return false;
+  }
+  return tinygltf::ReadWholeFile(out, err, path, user);
+}
+
+// tinygltf 2.8 and later (Debian 13) also ask for a file's size first; 2.7 (Debian 12) has no such callback.
+template <class Fs>
+void setFileSizeCallback(Fs& fs) {
+  if constexpr (requires { fs.GetFileSizeInBytes; })
+    fs.GetFileSizeInBytes = [](size_t* size, std::string* err, const std::string& path, void*) {
+      std::error_code ec;
+      uintmax_t bytes = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
+      if (ec || bytes == 0) {  // tinygltf refuses empty files too
+        if (err) *err += "'" + path + "' is not a regular file with data\n";
+        return false;
+      }
+      *size = static_cast<size_t>(bytes);
+      return true;
+    };
+}
+
+void useRegularFilesOnly(tinygltf::TinyGLTF& loader) {
+  tinygltf::FsCallbacks fs{};
+  fs.FileExists = &tinygltf::FileExists;
+  fs.ExpandFilePath = &tinygltf::ExpandFilePath;
+  fs.ReadWholeFile = &readRegularFile;
+  fs.WriteWholeFile = &tinygltf::WriteWholeFile;
+  setFileSizeCallback(fs);
+  loader.SetFsCallbacks(fs);
+}
+
 }  // namespace
 
 Scene loadGltf(const std::string& path) {
@@ -352,6 +389,7 @@ Scene loadGltf(const std::string& path) {
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&gltf::storeEncodedImage, nullptr);
+  useRegularFilesOnly(loader);
   tinygltf::Model model;
   std::string err, warn;
   bool ok = false;
