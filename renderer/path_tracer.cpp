@@ -183,6 +183,7 @@ void PathTracer::recordFrameBlock(VkCommandBuffer cmd, uint32_t firstPath, uint3
   frame.sppPerFrame = settings_.sppPerFrame;
   frame.pathCount = paths;
   frame.firstPath = firstPath;
+  frame.dispatchRowGroups = ctx_.info().dispatchRowGroups;  // for the indirect sizes shaders write
   frame.frameIndex = frameIndex_;
   frame.bounceCount = settings_.bounces;
   frame.seed = settings_.seed;

@@ -8,13 +8,15 @@
 #include "simt_counting.glsl"
 #include "path_shading.glsl"
 #include "path_stage.glsl"
+#include "dispatch_index.glsl"
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   gCounters = f.counters;
   gCounterBase = 0u;  // every bounce counts in bounce 0's slots
-  uint id = f.firstPath + gl_GlobalInvocationID.x;  // this slice's paths (GpuFrame::pathCount)
-  if (gl_GlobalInvocationID.x >= f.pathCount) {
+  uint slot = flatInvocationIndex();
+  uint id = f.firstPath + slot;  // this slice's paths (GpuFrame::pathCount)
+  if (slot >= f.pathCount) {
     countRays(0u);
     return;
   }
@@ -31,7 +33,7 @@ void main() {
     shadePath(f.scene, p, hit, b, f.bounceCount, rng);
     radiance = addBounceRadiance(radiance, b, p.radiance);
   }
-  f.hits.steps.v[gl_GlobalInvocationID.x] = steps;  // by slot, in dispatch order like the wavefront's
+  f.hits.steps.v[slot] = steps;  // by slot, in dispatch order like the wavefront's
   f.results.v[id] = vec4(radiance, 1.0);
   countRays(rays);
 }

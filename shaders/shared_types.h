@@ -207,7 +207,7 @@ struct GpuFrame {
   uint seed;
   float exposure;
   uint firstPath;
-  uint pad0;
+  uint dispatchRowGroups;  // work groups in a row of a dispatch (DeviceInfo::dispatchRowGroups, dispatch_grid.h)
 };
 
 #ifndef __cplusplus
