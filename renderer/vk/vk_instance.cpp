@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/vk/validation_layer.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
 
@@ -61,6 +62,8 @@ void VulkanContext::createInstance(const ContextOptions& options) {
     if (!hasLayer(kValidationLayer))
       throw VulkanError("--validate: the Khronos validation layer is not installed (apt-get install "
                         "vulkan-validationlayers)");
+    if (options.validation == ValidationMode::GpuAssisted)
+      if (std::string why = gpuAssistedUnavailable(); !why.empty()) std::fprintf(stderr, "raylab: warning: %s\n", why.c_str());
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     // VkValidationFeaturesEXT below is an extension structure: the layer provides its extension.
