@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <fstream>
 #include <memory>
@@ -70,8 +71,10 @@ BenchOptions parseOptions(const std::vector<std::string>& args) {
     const std::string& flag = args[i];
     if (flag == "--help" || flag == "-h") throw HelpRequested{};
     if (flag == "--validate" || flag.rfind("--validate=", 0) == 0) {
-      std::optional<ValidationMode> mode = flag == "--validate" ? ValidationMode::Sync : parseValidationMode(flag.substr(11));
-      if (!mode || *mode == ValidationMode::Off) throw UsageError(flag + ": expected --validate, --validate=sync or --validate=gpu-av");
+      std::optional<ValidationMode> mode =
+          flag == "--validate" ? ValidationMode::Sync : parseValidationMode(flag.substr(std::strlen("--validate=")));
+      if (!mode || *mode == ValidationMode::Off)
+        throw UsageError(flag + ": expected --validate, --validate=sync or --validate=gpu-av");
       o.validation = *mode;
       continue;
     }

@@ -63,7 +63,8 @@ void VulkanContext::createInstance(const ContextOptions& options) {
       throw VulkanError("--validate: the Khronos validation layer is not installed (apt-get install "
                         "vulkan-validationlayers)");
     if (options.validation == ValidationMode::GpuAssisted)
-      if (std::string why = gpuAssistedUnavailable(); !why.empty()) std::fprintf(stderr, "raylab: warning: %s\n", why.c_str());
+      if (std::string why = gpuAssistedUnavailable(); !why.empty())
+        std::fprintf(stderr, "raylab: warning: %s\n", why.c_str());
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     // VkValidationFeaturesEXT below is an extension structure: the layer provides its extension.
