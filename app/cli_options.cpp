@@ -139,7 +139,9 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       {"--stats", [&](const std::string& v) { o.statsPath = v; }},
   };
   const std::map<std::string, std::function<void()>> switches = {
-      {"--validate", [&] { o.validate = true; }},
+      {"--validate", [&] { o.validation = ValidationMode::Sync; }},
+      {"--validate=sync", [&] { o.validation = ValidationMode::Sync; }},
+      {"--validate=gpu-av", [&] { o.validation = ValidationMode::GpuAssisted; }},
       {"--count-simt", [&] { s.countSimt = true; }},
   };
   for (size_t i = 0; i < args.size(); ++i) {
@@ -206,7 +208,10 @@ std::string commonOptionsHelp() {
          "                         warp-efficiency 0..1), or locked to MIN..MAX\n"
          "  --count-simt           count active subgroup lanes in traversal (slower; not for timing)\n"
          "  --device NAME          Vulkan device whose name contains NAME\n"
-         "  --validate             enable the Khronos validation layer\n"
+         "  --validate[=sync|gpu-av]  enable the Khronos validation layer: core and synchronization\n"
+         "                         checks (sync, the default), or core and GPU-assisted checks of\n"
+         "                         every buffer-device-address access (gpu-av; slow); exit 4 on an\n"
+         "                         error. RAYLAB_VALIDATE=1|sync|gpu-av does the same\n"
          "  --settings FILE.json   start from a screenshot sidecar (its settings and camera)\n"
          "  --out FILE.png         output image\n"
          "  --stats FILE.json      per-frame statistics as JSON\n";

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "renderer/settings.h"
+#include "renderer/vk/validation_mode.h"
 
 namespace raylab {
 
@@ -17,7 +18,7 @@ struct UsageError : std::runtime_error {
 struct CommonOptions {
   Settings settings;
   std::string device;     // --device NAME
-  bool validate = false;  // --validate
+  ValidationMode validation = ValidationMode::Off;  // --validate (sync), --validate=gpu-av
   std::string out;        // --out FILE.png
   std::string statsPath;  // --stats FILE.json
 };

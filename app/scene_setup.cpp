@@ -29,8 +29,14 @@ LoadedScene loadSceneForSettings(const Settings& settings) {
 ContextOptions contextOptionsFor(const CommonOptions& options) {
   ContextOptions c;
   c.deviceName = options.device;
-  const char* env = std::getenv("RAYLAB_VALIDATE");
-  c.validate = options.validate || (env && std::string(env) == "1");
+  // A flag wins over the environment (RAYLAB_VALIDATE, which ctest sets for every GPU test).
+  ValidationMode env = ValidationMode::Off;
+  try {
+    env = validationModeFromEnvironment();
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  c.validation = options.validation != ValidationMode::Off ? options.validation : env;
   return c;
 }
 

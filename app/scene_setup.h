@@ -1,5 +1,5 @@
 // What every mode does first: resolve the scene and viewpoint named in Settings, and the Vulkan context
-// options (the RAYLAB_VALIDATE environment variable turns validation on, as the tests do).
+// options (the RAYLAB_VALIDATE environment variable turns validation on, as the tests do: 1 or sync, gpu-av).
 #pragma once
 
 #include "app/cli_options.h"

@@ -54,7 +54,7 @@ bool isSwitch(const std::string& name) { return name == "count-simt"; }
 
 // Flags every mode accepts that are not render settings: skipped by the overlay.
 bool isNonSettingFlag(const std::string& name) {
-  return name == "device" || name == "validate" || name == "out" || name == "stats";
+  return name == "device" || name == "validate" || name.rfind("validate=", 0) == 0 || name == "out" || name == "stats";
 }
 
 // Parses one flag with the CLI's own parser, so a script's `set` is validated exactly as the flag is.
@@ -111,7 +111,7 @@ Settings overlaySettingFlags(const Settings& base, const std::vector<std::string
       if (i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) ++i;
       continue;
     }
-    bool takesValue = !isSwitch(name) && name != "validate";
+    bool takesValue = !isSwitch(name) && name != "validate" && name.rfind("validate=", 0) != 0;
     if (takesValue && i + 1 >= args.size()) throw UsageError(args[i] + " needs a value");
     std::string value = takesValue ? args[++i] : "on";
     if (isNonSettingFlag(name)) continue;

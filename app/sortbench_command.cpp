@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <memory>
 #include <numeric>
@@ -36,7 +37,8 @@ const char* kUsage =
     "                      radix variant, only on GPUs with forward progress; all: the three)\n"
     "  --repeat R          timed runs per (sort, n), after 2 warm-up runs (default 10)\n"
     "  --device NAME       substring of the Vulkan device name\n"
-    "  --validate          enable the Khronos validation layer (exit 1 on any error)\n"
+    "  --validate[=sync|gpu-av]  enable the Khronos validation layer with synchronization (default)\n"
+    "                      or GPU-assisted checks (exit 1 on any error)\n"
     "  --csv FILE          also write the results as CSV\n"
     "  --radix-group G     radix scatter work-group size (tuning; default: device's)\n"
     "  --radix-kpt K       radix keys per invocation (tuning; default 8)\n";
@@ -58,7 +60,7 @@ struct BenchOptions {
   std::vector<BenchSort> sorts{BenchSort::Bitonic, BenchSort::Radix};
   uint32_t repeat = 10;
   std::string device;
-  bool validate = false;
+  ValidationMode validation = ValidationMode::Off;
   std::string csv;
   GpuSorter::Tuning tuning;
 };
@@ -68,8 +70,12 @@ BenchOptions parseOptions(const std::vector<std::string>& args) {
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& flag = args[i];
     if (flag == "--help" || flag == "-h") throw HelpRequested{};
-    if (flag == "--validate") {
-      o.validate = true;
+    if (flag == "--validate" || flag.rfind("--validate=", 0) == 0) {
+      std::optional<ValidationMode> mode =
+          flag == "--validate" ? ValidationMode::Sync : parseValidationMode(flag.substr(std::strlen("--validate=")));
+      if (!mode || *mode == ValidationMode::Off)
+        throw UsageError(flag + ": expected --validate, --validate=sync or --validate=gpu-av");
+      o.validation = *mode;
       continue;
     }
     if (i + 1 >= args.size()) throw UsageError(flag + " needs a value");
@@ -202,7 +208,7 @@ std::string formatRow(const Row& r, bool csv, const std::string& extra = "") {
 
 int runBench(const BenchOptions& o) {
   ContextOptions co;
-  co.validate = o.validate;
+  co.validation = o.validation;
   co.deviceName = o.device;
   co.quiet = true;
   VulkanContext ctx(co);
@@ -271,7 +277,7 @@ int runBench(const BenchOptions& o) {
     for (const Row& r : rows) csv += formatRow(r, true, extra);
     writeFileChecked(o.csv, csv);  // a WriteError is reported by runSortBenchCommand: exit 1
   }
-  if (o.validate && ctx.validationErrors() > 0) {
+  if (o.validation != ValidationMode::Off && ctx.validationErrors() > 0) {
     std::fprintf(stderr, "raylab sortbench: the validation layer reported %u errors\n", ctx.validationErrors());
     return kExitFailure;
   }

@@ -7,10 +7,11 @@
 #extension GL_EXT_scalar_block_layout : require
 #include "shared_types.h"
 #include "path_stage.glsl"
+#include "dispatch_index.glsl"
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
-  uint pixel = gl_GlobalInvocationID.x;
+  uint pixel = flatInvocationIndex();
   if (pixel >= f.width * f.height) return;
   vec4 sum = f.accumulation.v[pixel];
   for (uint s = 0u; s < f.sppPerFrame; ++s) sum += finishedRadiance(f.results.v[pixel * f.sppPerFrame + s].xyz);

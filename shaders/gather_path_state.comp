@@ -18,12 +18,13 @@
 #include "live_paths.glsl"
 #include "path_state.glsl"
 #include "reorder_slot.glsl"
+#include "dispatch_index.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(push_constant, scalar) uniform Push { PathStagePush pc; };
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
+  uint i = flatInvocationIndex();
   GpuFrame f = FrameBuf(pc.frame).f;
   if (i >= f.pathCount) return;
   vec3 origin, direction;

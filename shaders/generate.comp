@@ -7,11 +7,12 @@
 #include "path_shading.glsl"
 #include "path_stage.glsl"
 #include "live_paths.glsl"
+#include "dispatch_index.glsl"
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
-  uint i = gl_GlobalInvocationID.x;
-  if (i == 0u) writeLivePaths(f.live, f.pathCount);
+  uint i = flatInvocationIndex();
+  if (i == 0u) writeLivePaths(f, f.pathCount);
   if (i >= f.pathCount) return;
   GpuPathState s = f.state[pc.stateSet];
   uint rng = rngSeed(i, f.frameIndex, 0u, f.seed, RL_RNG_CAMERA);

@@ -9,13 +9,14 @@
 #include "heatmap_types.h"
 #include "rng.glsl"
 #include "heatmap_colours.glsl"
+#include "dispatch_index.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(push_constant, scalar) uniform Push { HeatmapPush pc; };
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
-  uint pixel = gl_GlobalInvocationID.x;
+  uint pixel = flatInvocationIndex();
   if (pixel >= f.width * f.height) return;
   uint bits = pc.heat.v[pixel];
   vec3 c;

@@ -10,6 +10,7 @@
 #include "keys.glsl"
 #include "path_state.glsl"
 #include "heatmap_colours.glsl"
+#include "dispatch_index.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(push_constant, scalar) uniform Push { HeatmapPush pc; };
@@ -58,7 +59,7 @@ uint keyProbeCell(GpuKeyParams P, uint key) {
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
-  uint i = gl_GlobalInvocationID.x;
+  uint i = flatInvocationIndex();
   if (i >= f.pathCount) return;
   GpuPathState s = f.state[pc.stateSet];
   uint id = pc.megakernel != 0u ? i : pathId(s, i);  // megakernel slot i: path i

@@ -25,6 +25,7 @@
 #include "rng.glsl"
 #include "keys.glsl"
 #include "path_state.glsl"
+#include "dispatch_index.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(constant_id = 1) const uint kStrategy = RL_KEY_AVERAGE;
@@ -43,7 +44,7 @@ layout(push_constant, scalar) uniform Push { KeyLearnPush pc; };
   }
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
+  uint i = flatInvocationIndex();
   GpuKeyParams params = KeyParamsBuf(pc.params).p;
   GpuLengthCache cache = params.cache;
   int e = -1;

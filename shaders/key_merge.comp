@@ -12,6 +12,7 @@
 #include "key_types.h"
 #include "rng.glsl"
 #include "keys.glsl"
+#include "dispatch_index.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(constant_id = 1) const uint kStrategy = RL_KEY_AVERAGE;
@@ -20,7 +21,7 @@ layout(push_constant, scalar) uniform Push { KeyLearnPush pc; };
 float varianceOf(float count, float m2) { return count >= 2.0 ? m2 / (count - 1.0) : 0.0; }
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
+  uint i = flatInvocationIndex();
   GpuKeyParams params = KeyParamsBuf(pc.params).p;
   GpuLengthCache cache = params.cache;
   if (i >= cache.touched.v[0]) return;

@@ -10,12 +10,13 @@
 #include "rng.glsl"
 #include "keys.glsl"
 #include "path_state.glsl"
+#include "dispatch_index.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(push_constant, scalar) uniform Push { KeyPush pc; };
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
+  uint i = flatInvocationIndex();
   if (i >= pc.count) return;
   FrameBuf frame = FrameBuf(pc.frame);
   GpuPathState state = frame.f.state[pc.stateSet];

@@ -9,13 +9,14 @@
 #include "rng.glsl"
 #include "keys.glsl"
 #include "path_state.glsl"
+#include "dispatch_index.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(constant_id = 1) const uint kStrategy = RL_KEY_FIXED;
 layout(push_constant, scalar) uniform Push { KeyPush pc; };
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
+  uint i = flatInvocationIndex();
   if (i >= pc.count) return;
   FrameBuf frame = FrameBuf(pc.frame);
   // Slots past the live prefix of the last sort hold finished paths (gather_path_state.comp): their key is

@@ -4,12 +4,14 @@
 #define RAYLAB_LIVE_PATHS_GLSL
 
 #include "shared_types.h"
+#include "dispatch_index.glsl"
 
-void writeLivePaths(UintBuf live, uint n) {
-  live.v[RL_LIVE_COUNT] = n;
-  live.v[RL_LIVE_DISPATCH + 0u] = (n + RL_PATH_GROUP_SIZE - 1u) / RL_PATH_GROUP_SIZE;
-  live.v[RL_LIVE_DISPATCH + 1u] = 1u;
-  live.v[RL_LIVE_DISPATCH + 2u] = 1u;
+void writeLivePaths(GpuFrame f, uint n) {
+  uvec3 groups = dispatchGridFor(n, RL_PATH_GROUP_SIZE, f.dispatchRowGroups);
+  f.live.v[RL_LIVE_COUNT] = n;
+  f.live.v[RL_LIVE_DISPATCH + 0u] = groups.x;
+  f.live.v[RL_LIVE_DISPATCH + 1u] = groups.y;
+  f.live.v[RL_LIVE_DISPATCH + 2u] = groups.z;
 }
 
 #endif

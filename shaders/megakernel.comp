@@ -8,12 +8,13 @@
 #include "simt_counting.glsl"
 #include "path_shading.glsl"
 #include "path_stage.glsl"
+#include "dispatch_index.glsl"
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   gCounters = f.counters;
   gCounterBase = 0u;  // every bounce counts in bounce 0's slots
-  uint id = gl_GlobalInvocationID.x;
+  uint id = flatInvocationIndex();
   if (id >= f.pathCount) {
     countRays(0u);
     return;
@@ -31,7 +32,7 @@ void main() {
     shadePath(f.scene, p, hit, b, f.bounceCount, rng);
     radiance = addBounceRadiance(radiance, b, p.radiance);
   }
-  f.hits.steps.v[gl_GlobalInvocationID.x] = steps;  // by slot, in dispatch order like the wavefront's
+  f.hits.steps.v[slot] = steps;  // by slot, in dispatch order like the wavefront's
   f.results.v[id] = vec4(radiance, 1.0);
   countRays(rays);
 }

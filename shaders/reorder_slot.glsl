@@ -9,8 +9,8 @@
 
 bool reorderSlot(GpuFrame f, uint srcSet, uint i, out vec3 origin, out vec3 direction) {
   bool live = f.sortKeys.v[i] != RL_DEAD_KEY;
-  if (i == 0u && !live) writeLivePaths(f.live, 0u);
-  if (live && (i + 1u == f.pathCount || f.sortKeys.v[i + 1u] == RL_DEAD_KEY)) writeLivePaths(f.live, i + 1u);
+  if (i == 0u && !live) writeLivePaths(f, 0u);
+  if (live && (i + 1u == f.pathCount || f.sortKeys.v[i + 1u] == RL_DEAD_KEY)) writeLivePaths(f, i + 1u);
   GpuPathState dst = f.state[1u - srcSet];
   if (!live) {
     markSlotEmpty(dst, f.hits, i);

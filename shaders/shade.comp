@@ -27,6 +27,7 @@
 #include "path_stage.glsl"
 #include "keys.glsl"
 #include "ray_counting.glsl"
+#include "dispatch_index.glsl"
 
 layout(constant_id = 1) const uint kKeyStrategy = RL_KEY_NONE;
 layout(constant_id = 2) const bool kCompact = false;
@@ -57,9 +58,12 @@ void appendPath(GpuFrame f, PathVars p, uint id) {
   uint base = 0u;
   if (subgroupElect()) {
     base = atomicAdd(f.live.v[block + RL_LIVE_COUNT], n);
-    // The last subgroup to append does not know it is last: every one raises the group count to cover its
-    // own slots, so the largest (the final one) wins.
-    atomicMax(f.live.v[block + RL_LIVE_DISPATCH], (base + n + RL_PATH_GROUP_SIZE - 1u) / RL_PATH_GROUP_SIZE);
+    // The last subgroup to append does not know it is last: every one raises the dispatch size to cover its
+    // own slots, so the largest (the final one) wins. Both grid sides grow with the group count, so the
+    // maxima of each are the final count's grid.
+    uvec3 groups = dispatchGridFor(base + n, RL_PATH_GROUP_SIZE, f.dispatchRowGroups);
+    atomicMax(f.live.v[block + RL_LIVE_DISPATCH + 0u], groups.x);
+    atomicMax(f.live.v[block + RL_LIVE_DISPATCH + 1u], groups.y);
   }
   base = subgroupBroadcastFirst(base);
   if (p.alive) storePath(f.state[1u - pc.stateSet], base + subgroupBallotExclusiveBitCount(survivors), p, id);
@@ -67,7 +71,7 @@ void appendPath(GpuFrame f, PathVars p, uint id) {
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
-  uint i = gl_GlobalInvocationID.x;
+  uint i = flatInvocationIndex();
   if (i >= f.live.v[RL_LIVE_COUNT]) return;
   if (kCompact && uint64_t(f.keyParams) != 0ul) {  // key parameters are set only when the frame sorts
     f.sortKeys.v[i] = RL_DEAD_KEY;

@@ -203,6 +203,7 @@ struct GpuFrame {
   uint bounceCount;
   uint seed;
   float exposure;
+  uint dispatchRowGroups;  // work groups in a row of a dispatch (DeviceInfo::dispatchRowGroups, dispatch_grid.h)
 };
 
 #ifndef __cplusplus

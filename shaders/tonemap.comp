@@ -5,13 +5,14 @@
 #extension GL_EXT_scalar_block_layout : require
 #include "shared_types.h"
 #include "color.glsl"
+#include "dispatch_index.glsl"
 
 layout(local_size_x_id = 0) in;
 layout(push_constant, scalar) uniform Push { PathStagePush pc; };
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
-  uint pixel = gl_GlobalInvocationID.x;
+  uint pixel = flatInvocationIndex();
   if (pixel >= f.width * f.height) return;
   vec4 sum = f.accumulation.v[pixel];
   vec3 rgb = sum.w > 0.0 ? sum.xyz / sum.w : vec3(0.0);

@@ -14,6 +14,7 @@
 #include "path_stage.glsl"
 #include "live_paths.glsl"
 #include "reorder_slot.glsl"
+#include "dispatch_index.glsl"
 
 layout(constant_id = 2) const bool kGatherFirst = false;
 
@@ -30,7 +31,7 @@ void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   gCounters = f.counters;
   gCounterBase = pc.bounce * RL_COUNTER_STRIDE;
-  uint i = gl_GlobalInvocationID.x;
+  uint i = flatInvocationIndex();
   vec3 origin, direction;
   bool live;
   if (kGatherFirst) {

@@ -2,6 +2,7 @@
 
 #include <atomic>
 
+#include "renderer/vk/dispatch_size.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
 
@@ -40,7 +41,11 @@ void ComputePipeline::dispatchGroups(VkCommandBuffer cmd, const void* push, uint
 }
 
 void ComputePipeline::dispatchThreads(VkCommandBuffer cmd, const void* push, uint64_t threads) const {
-  dispatchGroups(cmd, push, static_cast<uint32_t>((threads + groupSize_ - 1) / groupSize_));
+  const DeviceInfo& device = handle_.ctx->info();
+  const DispatchSize size = dispatchSizeFor(threads, groupSize_, device.dispatchRowGroups, device.maxGroupCountY);
+  if (size.x == 0) return;
+  handle_.bindAndPush(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, push);
+  vkCmdDispatch(cmd, size.x, size.y, 1);
 }
 
 namespace {

@@ -26,9 +26,11 @@ class ComputePipeline {
   uint32_t groupSize() const { return groupSize_; }
   const std::string& name() const { return handle_.name; }
 
-  // Binds, pushes constants and dispatches enough groups to cover `threads` threads (none if zero).
+  // Binds, pushes constants and dispatches enough groups to cover `threads` threads (none if zero), in rows
+  // (dispatch_size.h): the shader finds its index with dispatch_index.glsl's flatInvocationIndex().
   void dispatchThreads(VkCommandBuffer cmd, const void* push, uint64_t threads) const;
-  // Binds, pushes constants and dispatches exactly `groups` work groups.
+  // Binds, pushes constants and dispatches exactly `groups` work groups in x, at most the device's limit
+  // (shaders that index by gl_WorkGroupID.x; the sorts split larger counts themselves).
   void dispatchGroups(VkCommandBuffer cmd, const void* push, uint32_t groups) const;
 
   // Binds, pushes constants and dispatches the group counts stored at `offset` in `args` (x, y, z uints).

@@ -12,21 +12,9 @@
 namespace raylab {
 namespace {
 
-constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
-
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
   return s;
-}
-
-bool hasLayer(const char* name) {
-  uint32_t count = 0;
-  vkEnumerateInstanceLayerProperties(&count, nullptr);
-  std::vector<VkLayerProperties> layers(count);
-  vkEnumerateInstanceLayerProperties(&count, layers.data());
-  for (const auto& l : layers)
-    if (std::strcmp(l.layerName, name) == 0) return true;
-  return false;
 }
 
 int deviceRank(VkPhysicalDeviceType type) {
@@ -53,9 +41,13 @@ VulkanContext::VulkanContext(const ContextOptions& options) {
   createInstance(options);
   pickPhysicalDevice(options);
   createDevice(options);
-  if (!options.quiet)
+  if (!options.quiet) {
+    const std::string validation = options.validation == ValidationMode::Off
+                                       ? ""
+                                       : std::string(", validation on (") + validationModeName(options.validation) + ")";
     std::fprintf(stderr, "raylab: device %s (%s), subgroup %u%s\n", info_.name.c_str(), info_.driver.c_str(),
-                 info_.subgroupSize, options.validate ? ", validation on" : "");
+                 info_.subgroupSize, validation.c_str());
+  }
 }
 
 VulkanContext::~VulkanContext() {
@@ -71,60 +63,6 @@ VulkanContext::~VulkanContext() {
     if (destroy) destroy(instance_, messenger_, nullptr);
   }
   if (instance_) vkDestroyInstance(instance_, nullptr);
-}
-
-VKAPI_ATTR VkBool32 VKAPI_CALL VulkanContext::onValidationMessage(
-    VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
-    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
-  auto* self = static_cast<VulkanContext*>(user);
-  if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) {
-    self->validationErrors_++;
-    std::fprintf(stderr, "validation error: %s\n", data->pMessage);
-  } else if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) {
-    self->validationWarnings_++;
-    std::fprintf(stderr, "validation warning: %s\n", data->pMessage);
-  }
-  return VK_FALSE;
-}
-
-void VulkanContext::createInstance(const ContextOptions& options) {
-  std::vector<const char*> extensions = options.instanceExtensions;
-  std::vector<const char*> layers;
-  if (options.validate) {
-    if (!hasLayer(kValidationLayer))
-      throw VulkanError("--validate: the Khronos validation layer is not installed (apt-get install "
-                        "vulkan-validationlayers)");
-    layers.push_back(kValidationLayer);
-    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-  }
-  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-  app.pApplicationName = "raylab";
-  app.apiVersion = VK_API_VERSION_1_2;
-
-  VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-  messengerInfo.messageSeverity =
-      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                              VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                              VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-  messengerInfo.pfnUserCallback = &VulkanContext::onValidationMessage;
-  messengerInfo.pUserData = this;
-
-  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-  info.pNext = options.validate ? &messengerInfo : nullptr;
-  info.pApplicationInfo = &app;
-  info.enabledLayerCount = static_cast<uint32_t>(layers.size());
-  info.ppEnabledLayerNames = layers.data();
-  info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
-  info.ppEnabledExtensionNames = extensions.data();
-  VK_CHECK(vkCreateInstance(&info, nullptr, &instance_));
-
-  if (options.validate) {
-    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-    if (!create) throw VulkanError("vkCreateDebugUtilsMessengerEXT is unavailable");
-    VK_CHECK(create(instance_, &messengerInfo, nullptr, &messenger_));
-  }
 }
 
 void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
@@ -162,6 +100,9 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
   info_.subgroupSize = subgroup.subgroupSize;
   info_.timestampPeriodNs = props.properties.limits.timestampPeriod;
   info_.maxGroupCountX = props.properties.limits.maxComputeWorkGroupCount[0];
+  info_.maxGroupCountY = props.properties.limits.maxComputeWorkGroupCount[1];
+  info_.dispatchRowGroups = options.dispatchRowGroups > 0 ? std::min(options.dispatchRowGroups, info_.maxGroupCountX)
+                                                          : info_.maxGroupCountX;
   info_.isCpu = props.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   vkGetPhysicalDeviceMemoryProperties(physical_, &memoryProperties_);
 }

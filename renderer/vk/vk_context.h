@@ -4,19 +4,26 @@
 
 #include <atomic>
 #include <functional>
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/vk/validation_mode.h"
+
 namespace raylab {
 
 struct ContextOptions {
-  bool validate = false;           // enable VK_LAYER_KHRONOS_validation and count its messages
+  // VK_LAYER_KHRONOS_validation with synchronization or GPU-assisted validation, its messages counted.
+  ValidationMode validation = ValidationMode::Off;
   std::string deviceName;          // substring of the device name to pick; empty: discrete GPU, else any
   std::vector<const char*> instanceExtensions;  // e.g. from glfwGetRequiredInstanceExtensions
   std::vector<const char*> deviceExtensions;    // e.g. VK_KHR_swapchain
   bool quiet = false;              // do not print the chosen device
+  // Work groups in a row of a dispatch (DeviceInfo::dispatchRowGroups); 0: the device's limit. Tests set
+  // fewer so that small renders run on several rows, as large ones do on every device.
+  uint32_t dispatchRowGroups = 0;
 };
 
 struct DeviceInfo {
@@ -26,7 +33,11 @@ struct DeviceInfo {
   uint32_t subgroupSize = 0;
   float timestampPeriodNs = 0.0f;
   bool timestamps = false;
-  uint32_t maxGroupCountX = 0;
+  uint32_t maxGroupCountX = 0;  // maxComputeWorkGroupCount[0] and [1]
+  uint32_t maxGroupCountY = 0;
+  // The row length of every dispatch made from a thread count (renderer/vk/dispatch_size.h), written into
+  // GpuFrame for the indirect sizes shaders make: maxGroupCountX, or ContextOptions::dispatchRowGroups.
+  uint32_t dispatchRowGroups = 0;
   bool isCpu = false;
 
   // Hardware-API ray tracing (the rt tracer): VK_KHR_acceleration_structure and VK_KHR_ray_tracing_pipeline
@@ -83,6 +94,9 @@ class VulkanContext {
   // Validation messages of severity warning or error seen so far (tests fail on any error).
   uint32_t validationErrors() const { return validationErrors_.load(); }
   uint32_t validationWarnings() const { return validationWarnings_.load(); }
+  // The message id and text of the latest validation error ("" before any): what a test that provokes one
+  // checks it got.
+  std::string lastValidationError() const;
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const;
 
   // For `raylab devices`: one line per device the loader sees: its name, and whether it has the rt tracer's and SER's extensions (which it lacks).
@@ -110,6 +124,8 @@ class VulkanContext {
   VkPhysicalDeviceMemoryProperties memoryProperties_{};
   std::atomic<uint32_t> validationErrors_{0};
   std::atomic<uint32_t> validationWarnings_{0};
+  mutable std::mutex lastErrorMutex_;  // the layer may call back from any thread
+  std::string lastError_;
 };
 
 }  // namespace raylab

@@ -1,0 +1,93 @@
+// A representative subset of the renderer at a tiny size, for the GPU-assisted validation ctest
+// (gpu_av.subset, RAYLAB_VALIDATE=gpu-av: every shader access through a device address is checked, which
+// is too slow for the whole suite): every key strategy once, both sorts, compaction on and off, both
+// fusions, trace and shade fused, the megakernel, every heatmap view, and the rt tracer where the device
+// has it. In the ordinary suite it runs with synchronization validation like every other test.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "renderer/heatmap_rules.h"
+#include "renderer/rt_tracer.h"
+#include "renderer/vk/validation_layer.h"
+#include "scenes/procedural.h"
+#include "tests/gpu_test.h"
+#include "tests/render_helpers.h"
+
+namespace raylab::test {
+
+class ValidationSubset : public GpuTest {
+ protected:
+  // Where the layer's GPU-assisted validation cannot instrument our shaders, say so (the gpu_av.subset
+  // ctest reports itself skipped on this text) instead of crashing or passing without checks.
+  void SetUp() override {
+    GpuTest::SetUp();
+    if (validationMode() == ValidationMode::GpuAssisted)
+      if (std::string why = gpuAssistedUnavailable(); !why.empty()) GTEST_SKIP() << "GPU-AV unavailable: " << why;
+  }
+  // 2 frames (the second uses what the caches learned), 3 bounces (two sorted), 23x13 pixels.
+  static Settings tiny() {
+    Settings s = smallFrame(23, 13, 3);
+    s.frames = 2;
+    return s;
+  }
+  void render(const Settings& s, const std::string& what) {
+    SCOPED_TRACE(what);
+    std::vector<glm::vec3> image = renderRadiance(ctx(), scene_, s, view_);
+    EXPECT_GT(moments(image).mean, 0.0) << what;
+  }
+  Scene scene_ = makeTemple();
+  Viewpoint view_ = *scene_.findViewpoint("hall");
+};
+
+TEST_F(ValidationSubset, EveryKeyStrategyWithBothSorts) {
+  int n = 0;
+  for (KeyStrategy strategy : allKeyStrategies()) {
+    Settings s = tiny();
+    s.strategy = strategy;
+    s.sort = n++ % 2 == 0 ? SortAlgorithm::Radix : SortAlgorithm::Bitonic;  // each sort meets half of them
+    render(s, toString(strategy) + " " + toString(s.sort));
+  }
+}
+
+TEST_F(ValidationSubset, CompactionFusionsAndTraceShade) {
+  for (Compaction compaction : {Compaction::None, Compaction::Shade})
+    for (Fusion fusion : {Fusion::None, Fusion::Keys, Fusion::Gather, Fusion::Both}) {
+      Settings s = tiny();
+      s.strategy = KeyStrategy::TwoPoint;
+      s.compaction = compaction;
+      s.fusion = fusion;
+      render(s, toString(compaction) + " " + toString(fusion));
+    }
+  Settings fused = tiny();
+  fused.traceShade = TraceShade::Fused;
+  render(fused, "trace+shade fused");
+  Settings megakernel = tiny();
+  megakernel.kernel = Kernel::Megakernel;
+  render(megakernel, "megakernel");
+}
+
+TEST_F(ValidationSubset, EveryHeatmapView) {
+  for (HeatmapView view : allHeatmapViews()) {
+    Settings s = tiny();
+    s.strategy = view == HeatmapView::CacheVariance ? KeyStrategy::Gaussian : KeyStrategy::Average;
+    s.heatmap = view;
+    if (heatmapUnavailable(s)) continue;  // None, or a view these settings have no data for
+    PathTracer tracer(ctx(), scene_, s, view_);
+    tracer.renderFrame();
+    EXPECT_FALSE(tracer.readImage().empty()) << toString(view);
+  }
+}
+
+TEST_F(ValidationSubset, RtTracer) {
+  Settings s = tiny();
+  s.tracer = Tracer::Rt;
+  s.strategy = KeyStrategy::TwoPoint;
+  if (std::string why = unsupportedSettings(ctx().info(), s); !why.empty()) GTEST_SKIP() << why;
+  render(s, "rt wavefront");
+  s.kernel = Kernel::Megakernel;
+  s.strategy = KeyStrategy::None;
+  render(s, "rt megakernel");
+}
+
+}  // namespace raylab::test
