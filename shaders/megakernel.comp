@@ -32,7 +32,7 @@ void main() {
     shadePath(f.scene, p, hit, b, f.bounceCount, rng);
     radiance = addBounceRadiance(radiance, b, p.radiance);
   }
-  f.hits.steps.v[slot] = steps;  // by slot, in dispatch order like the wavefront's
+  f.hits.steps.v[id] = steps;  // slot i holds path i here: in dispatch order like the wavefront's
   f.results.v[id] = vec4(radiance, 1.0);
   countRays(rays);
 }
