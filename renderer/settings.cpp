@@ -129,7 +129,7 @@ SettingsChange SettingsChange::between(const Settings& p, const Settings& n) {
   c.resetSortCosts = c.reallocate || c.resetAccumulation || c.resetCache || c.keyParameters || n.sort != p.sort ||
                      n.sortPolicy != p.sortPolicy || n.sortBits != p.sortBits || n.learnEvery != p.learnEvery ||
                      n.fusion != p.fusion || n.compaction != p.compaction || n.traceShade != p.traceShade ||
-                     n.kernel != p.kernel;
+                     n.kernel != p.kernel || n.tracer != p.tracer || n.ser != p.ser;
   return c;
 }
 

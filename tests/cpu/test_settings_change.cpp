@@ -42,6 +42,9 @@ const std::vector<Case>& cases() {
       {"exposure", [](Settings& s) { s.exposure = 2.0f; }, wants(false, false, false, false)},
       // The megakernel estimates the same integral; switching keeps accumulating, as the window does.
       {"kernel", [](Settings& s) { s.kernel = Kernel::Megakernel; }, wants(false, false, false, false)},
+      // So do the driver's traversal and SER: the same rays, other stage costs.
+      {"tracer", [](Settings& s) { s.tracer = Tracer::Rt; }, wants(false, false, false, false)},
+      {"ser", [](Settings& s) { s.ser = Ser::Hint; }, wants(false, false, false, false)},
       // Sorting never changes the image (the central invariant): strategy, sort and grid keep it.
       {"strategy", [](Settings& s) { s.strategy = KeyStrategy::Ema; }, wants(false, false, true, true)},
       {"sort", [](Settings& s) { s.sort = SortAlgorithm::Bitonic; }, wants(false, false, false, false)},
@@ -91,7 +94,7 @@ TEST(SettingsChange, EachFieldAsksForWhatItNeeds) {
   }
 }
 
-// The auto sort policy's cost history holds for one view, image, key, sort, policy and kernel only; settings
+// The auto sort policy's cost history holds for one view, image, key, sort, policy, kernel and tracer only; settings
 // that change none of those (exposure, heatmap, frame count) keep it.
 TEST(SettingsChange, SortCostsResetWhenWhatTheyMeasuredChanges) {
   const Settings base;
