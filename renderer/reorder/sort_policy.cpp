@@ -1,17 +1,19 @@
 #include "renderer/reorder/sort_policy.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace raylab {
 namespace {
 
-void blend(double& estimate, double sample) {
-  estimate = estimate < 0.0 ? sample : (1.0 - SortPolicyModel::kAlpha) * estimate + SortPolicyModel::kAlpha * sample;
-}
+constexpr double kEffectiveSamples = (2.0 - SortPolicyModel::kAlpha) / SortPolicyModel::kAlpha;  // 7
 
-std::string msText(const char* what, double a, const char* rel, double b) {
-  char text[96];
-  std::snprintf(text, sizeof(text), "%s %.3f %s cost %.3f ms", what, a, rel, b);
+std::string decisionText(double gain, bool sorts, double cost, double margin) {
+  char text[128];
+  // "gain X > cost Y ms" first: tests/cli/gpu/window_matches_headless.sh reads it.
+  int n = std::snprintf(text, sizeof(text), "gain %.3f %s cost %.3f ms", gain, sorts ? ">" : "<=", cost);
+  if (margin >= 0.0005) std::snprintf(text + n, sizeof(text) - n, " (+ margin %.3f ms)", margin);
   return text;
 }
 
@@ -23,6 +25,39 @@ bool SortPlan::any() const {
   return false;
 }
 
+// The first samples are averaged alike (weight 1/n), later ones exponentially (kAlpha), so a warm sample
+// does not sit under the first one's weight; the variance follows with the same weight.
+void SortPolicyModel::Arm::add(double sample, uint32_t frame) {
+  ++samples;
+  lastFrame = frame;
+  if (samples == 1) {
+    mean = sample, var = 0.0;
+    return;
+  }
+  const double w = std::max(kAlpha, 1.0 / samples), d = sample - mean;
+  mean += w * d;
+  var = (1.0 - w) * (var + w * d * d);
+}
+
+// The weighted variance is the population one: divided by n - 1 of the (at most kEffectiveSamples) samples
+// it stands for, it is the squared standard error of the mean.
+double SortPolicyModel::Arm::sem() const {
+  const double n = std::min(double(samples), kEffectiveSamples);
+  return n > 1.0 ? std::sqrt(var / (n - 1.0)) : 0.0;
+}
+
+// Sort after b iff its gain exceeds its cost by the margin; `why` says so with the numbers, `close` whether
+// the difference is within the margin (either way).
+bool SortPolicyModel::decide(uint32_t b, std::string& why, bool& close) const {
+  const BounceEstimate& e = estimates_[b];
+  const double cost = e.cost.mean, gain = e.unsorted.mean - (e.sorted.mean - cost);
+  const double margin = kSigmas * std::hypot(e.sorted.sem(), e.unsorted.sem());
+  const bool sorts = gain > cost + margin;
+  close = margin > 0.0 && std::abs(gain - cost) <= margin;
+  why = decisionText(gain, sorts, cost, margin);
+  return sorts;
+}
+
 SortPlan SortPolicyModel::plan(SortPolicy policy, uint32_t bounces) const {
   SortPlan p;
   p.sortAfter.assign(bounces, false);
@@ -30,22 +65,30 @@ SortPlan SortPolicyModel::plan(SortPolicy policy, uint32_t bounces) const {
   for (uint32_t b = 0; b + 1 < bounces; ++b) {
     bool s = false;
     std::string& why = p.reasons[b];
+    const BounceEstimate e = b < estimates_.size() ? estimates_[b] : BounceEstimate{};
     if (policy == SortPolicy::Always) {
       s = true, why = "always";
     } else if (policy == SortPolicy::Never) {
       s = false, why = "never";
-    } else if (frames_ % kExplorePeriod == 0) {
-      s = true, why = "explore: sorted";
-    } else if (frames_ % kExplorePeriod == 1) {
-      s = false, why = "explore: unsorted";
+    } else if (frames_ < kColdFrames) {
+      s = frames_ % 2 == 0, why = s ? "warm-up: sorted (not a sample)" : "warm-up: unsorted (not a sample)";
+    } else if (e.sorted.samples < kMinSamples || e.unsorted.samples < kMinSamples) {
+      // The arm that lacks samples; both alternately.
+      const bool sortedLacks = e.sorted.samples < kMinSamples, unsortedLacks = e.unsorted.samples < kMinSamples;
+      s = sortedLacks && (!unsortedLacks || frames_ % 2 == 0);
+      why = s ? "explore: sorted" : "explore: unsorted";
     } else {
-      BounceEstimate e = b < estimates_.size() ? estimates_[b] : BounceEstimate{};
-      if (e.cost < 0.0 || e.nextSorted < 0.0 || e.nextUnsorted < 0.0) {
-        s = true, why = "not measured yet";
+      std::string decision;
+      bool close = false;
+      const bool sorts = decide(b, decision, close);
+      const Arm& other = sorts ? e.unsorted : e.sorted;
+      const uint32_t age = frames_ - other.lastFrame;
+      if (age >= (close ? kNoisyStaleFrames : kStaleFrames)) {
+        s = !sorts;
+        why = std::string(s ? "probe: sorted" : "probe: unsorted") + ", measured " + std::to_string(age) +
+              " frames ago (" + decision + ")";
       } else {
-        double gain = e.nextUnsorted - e.nextSorted;
-        s = gain > e.cost + kMarginMs;
-        why = msText("gain", gain, s ? ">" : "<=", e.cost);
+        s = sorts, why = decision;
       }
     }
     p.sortAfter[b] = s;
@@ -54,6 +97,8 @@ SortPlan SortPolicyModel::plan(SortPolicy policy, uint32_t bounces) const {
 }
 
 void SortPolicyModel::record(const SortPlan& plan, const std::vector<StageTime>& stages) {
+  const uint32_t frame = frames_++;
+  if (frame < kColdFrames) return;  // first use: not comparable with what follows
   const size_t bounces = plan.sortAfter.size();
   std::vector<double> cost(bounces, 0.0), next(bounces, 0.0);  // per bounce b: overhead at b, work of b
   for (const StageTime& st : stages) {
@@ -68,13 +113,12 @@ void SortPolicyModel::record(const SortPlan& plan, const std::vector<StageTime>&
   for (size_t b = 0; b + 1 < bounces; ++b) {
     BounceEstimate& e = estimates_[b];
     if (plan.sortAfter[b]) {
-      blend(e.cost, cost[b]);
-      blend(e.nextSorted, next[b + 1]);
+      e.cost.add(cost[b], frame);
+      e.sorted.add(cost[b] + next[b + 1], frame);
     } else {
-      blend(e.nextUnsorted, next[b + 1]);
+      e.unsorted.add(next[b + 1], frame);
     }
   }
-  ++frames_;
 }
 
 void SortPolicyModel::reset() {

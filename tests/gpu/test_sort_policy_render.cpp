@@ -1,5 +1,5 @@
 // The sort policy inside the renderer: the plan each frame follows is reported per bounce in the stats,
-// `auto` explores (all sorted, then none) and then decides from what those frames measured, detailed frames
+// `auto` warms up and explores (all sorted, then none, alternately) and then decides from what those frames measured, detailed frames
 // teach it too, and the plan for a given cost history is the model's (the model's determinism for a cost
 // history is tests/cpu/test_sort_policy.cpp; that sorting never changes the image is test_render_invariant.cpp).
 #include <gtest/gtest.h>
@@ -24,16 +24,18 @@ TEST_F(SortPolicyRender, StatsReportThePlanEachFrameFollowed) {
   const FrameStats& f0 = tracer.renderFrame();
   ASSERT_EQ(f0.bounces.size(), 4u);
   EXPECT_TRUE(f0.bounces[0].sortedAfter);
-  EXPECT_EQ(f0.bounces[0].sortReason, "explore: sorted");
+  EXPECT_EQ(f0.bounces[0].sortReason, "warm-up: sorted (not a sample)");
   EXPECT_FALSE(f0.bounces[3].sortedAfter);
   EXPECT_EQ(f0.bounces[3].sortReason, "last bounce");
   EXPECT_GT(f0.stageTotal("sort"), 0.0);
   const FrameStats& f1 = tracer.renderFrame();
   EXPECT_FALSE(f1.bounces[1].sortedAfter);
-  EXPECT_EQ(f1.bounces[1].sortReason, "explore: unsorted");
+  EXPECT_EQ(f1.bounces[1].sortReason, "warm-up: unsorted (not a sample)");
   EXPECT_EQ(f1.stageTotal("sort"), 0.0) << "a frame that sorts no bounce records no sort";
+  for (uint32_t f = 2; f < 6; ++f)  // sorted and unsorted alternately until both have warm samples
+    EXPECT_EQ(tracer.renderFrame().bounces[0].sortReason, f % 2 == 0 ? "explore: sorted" : "explore: unsorted") << f;
   const FrameStats& f2 = tracer.renderFrame();
-  EXPECT_EQ(tracer.sortPolicy().framesSeen(), 3u) << "detailed frames teach the policy";
+  EXPECT_EQ(tracer.sortPolicy().framesSeen(), 7u) << "detailed frames teach the policy";
   for (size_t b = 0; b + 1 < f2.bounces.size(); ++b) {
     const std::string& why = f2.bounces[b].sortReason;
     EXPECT_EQ(why.rfind("gain ", 0), 0u) << "bounce " << b << ": " << why;
@@ -48,7 +50,7 @@ TEST_F(SortPolicyRender, StatsReportThePlanEachFrameFollowed) {
   tracer.applySettings(other);
   tracer.applySettings(s);
   EXPECT_EQ(tracer.sortPolicy().framesSeen(), 0u);
-  EXPECT_EQ(tracer.renderFrame().bounces[0].sortReason, "explore: sorted");
+  EXPECT_EQ(tracer.renderFrame().bounces[0].sortReason, "warm-up: sorted (not a sample)");
 }
 
 TEST_F(SortPolicyRender, NeverSortsNothingAndAlwaysEveryBounceButTheLast) {
@@ -70,7 +72,7 @@ TEST_F(SortPolicyRender, NeverSortsNothingAndAlwaysEveryBounceButTheLast) {
 // Accuracy figures exist only where they were measured: a bounce whose rays were not keyed (auto's unsorted
 // bounces) has no prediction, so its prediction error, cell-hit rate and distinct keys are null in the stats,
 // never whatever the readback buffers or the path state held (they read 4e25 errors and 0.96 hit rates).
-// Auto's second frame explores unsorted right after a sorted one; then a cost history in which sorting never
+// Auto's second frame (warm-up) is unsorted right after a sorted one; then a cost history in which sorting never
 // pays makes it sort nothing.
 TEST_F(SortPolicyRender, UnsortedBouncesOfAutoHaveNoAccuracyFigures) {
   Scene scene = makeTemple();
@@ -94,11 +96,11 @@ TEST_F(SortPolicyRender, UnsortedBouncesOfAutoHaveNoAccuracyFigures) {
                                                                << " = " << b[field];
     }
   };
-  expectNoFigures(tracer.renderFrame(), "explore: unsorted");
+  expectNoFigures(tracer.renderFrame(), "warm-up: unsorted");
   // A history in which sorting costs far more than it saves: auto sorts nothing from then on.
   SortPolicyModel& model = tracer.sortPolicy();
   model.reset();
-  for (bool sorts : {true, false}) {
+  for (bool sorts : {true, false, true, false, true, false}) {  // warm-up, then two samples of each
     SortPlan plan;
     plan.sortAfter = {sorts, sorts, sorts, false};
     plan.reasons.assign(4, "history");

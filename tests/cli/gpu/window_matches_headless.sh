@@ -7,7 +7,7 @@
 #     within 0.25x-4x,
 #   - each strategy's frame time over the unsorted one (the speed-accuracy panel's ratios) within 0.33x-3x,
 #   - the frame and every stage time within 0.2x-5x,
-#   - auto explores alike (its first two frames' plans are headless's), then decides every bounce from
+#   - auto explores alike (its first six frames' plans are headless's), then decides every bounce from
 #     measured gain and cost, and the cost it measured for each bounce's sort is headless's within 0.2x-5x.
 #     (Which way a bounce goes can differ: at this size gain and cost are a few ms, and auto's gain is the
 #     difference of one sorted and one unsorted explore frame, which this machine's noise can turn around.)
@@ -22,20 +22,22 @@ raylab="$1"
 repo="$2"
 source "$(dirname "$0")/../window_test_setup.sh"  # skips without a window; temporary folder; validation on
 size=160x90 bounces=3 frames=6
+auto_frames=10  # auto warms up (2 frames) and explores (4) before it decides
 strategies="none fixed average gaussian two-point"
 {
   echo "set bounces $bounces"
   for s in $strategies; do printf 'set strategy %s\nwait %d\n' "$s" "$frames"; done
-  printf 'set sort-policy auto\nwait %d\nquit\n' "$frames"
+  printf 'set sort-policy auto\nwait %d\nquit\n' "$auto_frames"
 } >script.txt
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$raylab" --window-size $size --scale 1 \
   --frame-log log.jsonl --script script.txt >window.log 2>&1 || { echo "FAIL: the window exited $?"; tail -20 window.log; exit 1; }
 if grep -q "validation error" window.log; then echo "FAIL: validation errors"; grep "validation error" window.log | head; exit 1; fi
 for s in $strategies auto; do
   policy=always strategy=$s
-  [ "$s" = auto ] && policy=auto strategy=two-point
+  n=$frames
+  [ "$s" = auto ] && policy=auto strategy=two-point n=$auto_frames
   timeout 300 "$raylab" render --size $size --bounces $bounces --strategy $strategy --sort-policy $policy \
-    --frames $frames --stats "$s.json" --out "$s.png" >"$s.log" 2>&1 || { echo "FAIL: render $s exited $?"; tail "$s.log"; exit 1; }
+    --frames $n --stats "$s.json" --out "$s.png" >"$s.log" 2>&1 || { echo "FAIL: render $s exited $?"; tail "$s.log"; exit 1; }
 done
 
 python3 - log.jsonl $bounces <<'PY'
@@ -90,16 +92,19 @@ for name, (w, h) in sides.items():
         if min(share) >= 0.10 or stage == "sort":
             compare(f"{name} {stage}", *ms, 0.2, 5.0)
             compare(f"{name} {stage} share", *share, 0.25, 4.0, "")
-# auto: the window's first frames explore as headless ones do (sorted, then unsorted); after that every
-# bounce but the last is decided from measured gain and cost, and the costs are headless's.
+# auto: the window's first frames warm up and explore as headless ones do (sorted and unsorted alternately);
+# after that every bounce but the last is decided from measured gain and cost (or probed, rarely), and the
+# costs are headless's.
 wa, ha = window["auto"], headless("auto")
-for i in (0, 1):
+EXPLORE = 6
+for i in range(EXPLORE):
     if wa[i]["sorted_after"] != ha[i]["sorted_after"]:
         failures.append(f"auto frame {i}: window plan {wa[i]['sorted_after']}, headless {ha[i]['sorted_after']}")
 decision = re.compile(r"gain (-?[0-9.e+-]+) (?:>|<=) cost ([0-9.e+-]+) ms")
 for b in range(BOUNCES - 1):
     costs = []
-    for side, frames in (("window", wa[2:]), ("headless", ha[2:])):
+    for side, frames in (("window", wa[EXPLORE:]), ("headless", ha[EXPLORE:])):
+        frames = [f for f in frames if not f["sort_reasons"][b].startswith("probe")]
         found = [decision.match(f["sort_reasons"][b]) for f in frames]
         if not frames or not all(found):
             failures.append(f"auto bounce {b}: {side} did not decide from measurements: "
