@@ -344,25 +344,24 @@ void printWarnings(const std::string& file, const std::string& warnings) {
 }
 
 // tinygltf reads a URI that names a directory ("uri": ".") as a file of 2^63 bytes and allocates that (found
-// by tests/fuzz): only regular files are read, anything else is "not a file" in the load error.
-bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+// by tests/fuzz; fopen opens a directory, so tinygltf's own check passes it): only regular files exist for
+// it, anything else is "File not found" in the load error, in tinygltf 2.7 (Debian 12) and 2.9 (Debian 13)
+// alike, since both look a URI up through FileExists before reading it.
+bool regularFileExists(const std::string& path, void*) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    if (err) *err += "'" + path + "' is not a regular file\n";
-    return false;
-  }
-  return tinygltf::ReadWholeFile(out, err, path, user);
+  return std::filesystem::is_regular_file(path, ec);
 }
 
-// tinygltf 2.8 and later (Debian 13) also ask for a file's size first; 2.7 (Debian 12) has no such callback.
+// tinygltf 2.8 and later (Debian 13) also ask for a file's size, and take the callbacks only when all are
+// given; 2.7 (Debian 12) has no such callback.
 template <class Fs>
 void setFileSizeCallback(Fs& fs) {
   if constexpr (requires { fs.GetFileSizeInBytes; })
     fs.GetFileSizeInBytes = [](size_t* size, std::string* err, const std::string& path, void*) {
       std::error_code ec;
-      uintmax_t bytes = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
+      const uintmax_t bytes = std::filesystem::file_size(path, ec);
       if (ec || bytes == 0) {  // tinygltf refuses empty files too
-        if (err) *err += "'" + path + "' is not a regular file with data\n";
+        if (err) *err += "'" + path + "' is empty or unreadable\n";
         return false;
       }
       *size = static_cast<size_t>(bytes);
@@ -372,9 +371,9 @@ void setFileSizeCallback(Fs& fs) {
 
 void useRegularFilesOnly(tinygltf::TinyGLTF& loader) {
   tinygltf::FsCallbacks fs{};
-  fs.FileExists = &tinygltf::FileExists;
+  fs.FileExists = &regularFileExists;
   fs.ExpandFilePath = &tinygltf::ExpandFilePath;
-  fs.ReadWholeFile = &readRegularFile;
+  fs.ReadWholeFile = &tinygltf::ReadWholeFile;
   fs.WriteWholeFile = &tinygltf::WriteWholeFile;
   setFileSizeCallback(fs);
   loader.SetFsCallbacks(fs);

@@ -28,8 +28,8 @@ struct Regression {
 };
 
 const Regression kRegressionFiles[] = {
-    {"gltf", "buffer_uri_is_folder.gltf", "is not a regular file"},
-    {"gltf", "buffer_uri_is_root_folder.gltf", "is not a regular file"},
+    {"gltf", "buffer_uri_is_folder.gltf", "File not found : ."},
+    {"gltf", "buffer_uri_is_root_folder.gltf", "File not found : /"},
     {"sidecar", "camera_position_beyond_float.json", "camera: 'position' must be finite numbers"},
     {"sidecar", "camera_target_is_position.json", "camera: the target equals the position"},
     {"sidecar", "camera_fov_zero.json", "camera: fov must be between 0.5 and 179.5 degrees"},
