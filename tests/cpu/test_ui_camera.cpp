@@ -112,9 +112,6 @@ TEST(UiCamera, TextAcceptsTheScriptFormAndRejectsJunk) {
   }
 }
 
-}  // namespace
-}  // namespace raylab
-
 TEST(UiCamera, ShortTextRoundsForReading) {
   Viewpoint v = view({1.05202198e-05f, -2.5f, 12.3456789f}, {-0.0000004f, 1.2f, 1000.0f});
   std::string text = cameraToShortText(v);
@@ -130,3 +127,6 @@ TEST(UiCamera, UnnamedViewpointIsLabelledByWhereItStands) {
   v.name = "alley";
   EXPECT_EQ(viewpointLabel(v), "alley");
 }
+
+}  // namespace
+}  // namespace raylab
