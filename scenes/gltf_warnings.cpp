@@ -3,12 +3,14 @@
 #include <tiny_gltf.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace raylab::gltf {
 namespace {
 
 constexpr const char* kNotFound = "File not found : ";  // tinygltf's words for an absent external file
+constexpr const char* kNoImage = "Failed to load external 'uri' for image[";  // its follow-up, by index
 constexpr size_t kShown = 3;                             // names or lines shown before "and N more"
 
 std::string baseName(const std::string& path) {
@@ -56,6 +58,11 @@ std::vector<std::string> summariseLoadWarnings(const std::string& warnings, cons
   std::istringstream lines(warnings);
   for (std::string line; std::getline(lines, line);) {
     if (line.empty()) continue;
+    if (line.rfind(kNoImage, 0) == 0) {
+      // The same absent file again, by image index: said once above when no material uses it.
+      const int image = std::atoi(line.c_str() + std::string(kNoImage).size());
+      if (!used.count(image)) continue;
+    }
     if (line.rfind(kNotFound, 0) != 0) {
       others.push_back(line);
       continue;

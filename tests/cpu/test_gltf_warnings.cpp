@@ -43,13 +43,16 @@ TEST(GltfWarnings, AbsentFilesAreToldApartByUse) {
       "File not found : /data/sponza/vase_plant.dds\n"
       "File not found : /data/sponza/wall.dds\n"
       "File not found : /data/sponza/textures/wall.png\n"
+      "Failed to load external 'uri' for image[1] name = [vase_plant]\n"
+      "Failed to load external 'uri' for image[0] name = [wall]\n"
       "Unknown extension MSFT_texture_dds\n";
   std::vector<std::string> lines = summariseLoadWarnings(warnings, sponzaLike());
-  ASSERT_EQ(lines.size(), 3u);
+  ASSERT_EQ(lines.size(), 4u);
   EXPECT_EQ(lines[0], "1 file(s) not found that the scene uses (drawn untextured): wall.png");
   EXPECT_EQ(lines[1], "2 image file(s) not found that no material the lab reads uses (nothing lost): "
                       "vase_plant.dds, wall.dds");
-  EXPECT_EQ(lines[2], "Unknown extension MSFT_texture_dds");
+  EXPECT_EQ(lines[2], "Failed to load external 'uri' for image[0] name = [wall]");  // a used image's: kept
+  EXPECT_EQ(lines[3], "Unknown extension MSFT_texture_dds");
 }
 
 TEST(GltfWarnings, ManyLinesAreCounted) {
