@@ -115,6 +115,30 @@ std::string cameraToText(const Viewpoint& v) {
   return text;
 }
 
+namespace {
+// A coordinate for reading, not for copying: three decimals, trailing zeros dropped, a tiny value (a float
+// that drifted off zero, 1.05e-05) shown as 0.
+std::string rounded(float value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.3f", value);
+  std::string s = text;
+  s.erase(s.find_last_not_of('0') + 1);
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+}  // namespace
+
+std::string cameraToShortText(const Viewpoint& v) {
+  return "camera " + rounded(v.position.x) + " " + rounded(v.position.y) + " " + rounded(v.position.z) + " " +
+         rounded(v.target.x) + " " + rounded(v.target.y) + " " + rounded(v.target.z) + " fov " +
+         rounded(glm::degrees(v.yfovRadians));
+}
+
+std::string viewpointLabel(const Viewpoint& v) {
+  if (!v.name.empty()) return v.name;
+  return "camera at (" + rounded(v.position.x) + ", " + rounded(v.position.y) + ", " + rounded(v.position.z) + ")";
+}
+
 std::optional<Viewpoint> cameraFromText(const std::string& text, const Viewpoint& base, std::string* error) {
   std::istringstream in(text);
   std::vector<std::string> words;

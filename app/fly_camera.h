@@ -56,6 +56,10 @@ class FlyCamera {
 
 // "camera x y z tx ty tz fov DEG": position, target and vertical field of view in degrees.
 std::string cameraToText(const Viewpoint& v);
+// The same rounded to three decimals, for reading (the panel's camera line); cameraToText is what is copied.
+std::string cameraToShortText(const Viewpoint& v);
+// The viewpoint's name, or where it stands when it has none (a moved camera saved in a sidecar).
+std::string viewpointLabel(const Viewpoint& v);
 // Parses the text form ("camera" prefix and fov optional); fills `base`'s position, target and fov.
 // Returns nothing and sets `error` when the text is not a camera.
 std::optional<Viewpoint> cameraFromText(const std::string& text, const Viewpoint& base, std::string* error);

@@ -9,6 +9,7 @@
 
 #include "app/cli_options.h"
 #include "app/command_errors.h"
+#include "app/fly_camera.h"
 #include "app/heatmap_legend_image.h"
 #include "app/scene_setup.h"
 #include "app/sidecar.h"
@@ -81,9 +82,11 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
   }
   PathTracer tracer(ctx, loaded.scene, s, loaded.view);
   tracer.setDetailedStats(!options.statsPath.empty());
-  std::fprintf(stderr, "raylab: %s/%s, %u triangles, BVH %u nodes in %.1f ms\n", loaded.scene.name.c_str(),
-               loaded.view.name.c_str(), tracer.scene().triangleCount(), tracer.scene().bvhStats().nodeCount,
-               tracer.scene().bvhStats().buildMs);
+  // A sidecar's moved camera has no name: viewpointLabel says where it stands instead.
+  const std::string view = viewpointLabel(loaded.view);
+  const std::string where = loaded.scene.name + (loaded.view.name.empty() ? ", " : "/") + view;  // temple/alley
+  std::fprintf(stderr, "raylab: %s, %u triangles, BVH %u nodes in %.1f ms\n", where.c_str(),
+               tracer.scene().triangleCount(), tracer.scene().bvhStats().nodeCount, tracer.scene().bvhStats().buildMs);
 
   nlohmann::json frames = nlohmann::json::array();
   double gpuMs = 0.0, wallMs = 0.0;
@@ -109,7 +112,7 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
   double seconds = (gpuMs > 0.0 ? gpuMs : wallMs) * 1e-3;
   std::printf("wrote %s (%ux%u, %u spp, %s, %s, %s tracer) in %.2f s wall; %.3g rays/s\n",
               std::filesystem::absolute(options.out).string().c_str(), s.width,
-              s.height, tracer.accumulatedFrames() * s.sppPerFrame, loaded.view.name.c_str(),
+              s.height, tracer.accumulatedFrames() * s.sppPerFrame, view.c_str(),
               toString(s.kernel).c_str(), toString(s.tracer).c_str(), wallMs * 1e-3, seconds > 0 ? rays / seconds : 0.0);
 
   if (!options.statsPath.empty()) {

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "scenes/gltf_internal.h"
+#include "scenes/gltf_warnings.h"
 #include "scenes/primitive_modes.h"
 
 namespace raylab {
@@ -332,17 +333,6 @@ class Converter {
   int defaultMaterial_ = -1;
 };
 
-// tinygltf's warnings, a few lines at most (Sponza alone reports two dozen absent .dds files).
-void printWarnings(const std::string& file, const std::string& warnings) {
-  std::istringstream lines(warnings);
-  std::string line;
-  int count = 0;
-  while (std::getline(lines, line))
-    if (!line.empty() && ++count <= 3) std::fprintf(stderr, "warning: %s: %s\n", file.c_str(), line.c_str());
-  if (count > 3)
-    std::fprintf(stderr, "warning: %s: ... and %d more warnings from tinygltf\n", file.c_str(), count - 3);
-}
-
 // tinygltf reads a URI that names a directory ("uri": ".") as a file of 2^63 bytes and allocates that (found
 // by tests/fuzz; fopen opens a directory, so tinygltf's own check passes it): only regular files exist for
 // it, anything else is "File not found" in the load error, in tinygltf 2.7 (Debian 12) and 2.9 (Debian 13)
@@ -398,7 +388,7 @@ Scene loadGltf(const std::string& path) {
   } catch (const std::exception& e) {  // its JSON library may throw on unexpected value types
     throw SceneLoadError(path + ": " + e.what());
   }
-  if (!warn.empty()) printWarnings(path, warn);
+  if (!warn.empty()) gltf::printLoadWarnings(path, warn, model);
   if (!ok) {
     while (!err.empty() && std::isspace(static_cast<unsigned char>(err.back()))) err.pop_back();
     throw SceneLoadError(path + ": " + (err.empty() ? std::string("tinygltf could not load the file") : err));

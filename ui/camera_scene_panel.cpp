@@ -66,8 +66,9 @@ void drawCamera(const CameraModel& m, UiRequests& r) {
   ImGui::SetNextItemWidth(120);
   if (ImGui::SliderFloat("speed", &speed, 1e-3f, 1e4f, "%.3g", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
     r.speed = speed;
-  ImGui::TextWrapped("%s", m.cameraText.c_str());
+  ImGui::TextWrapped("%s", m.cameraShortText.c_str());
   if (ImGui::Button("Copy camera")) ImGui::SetClipboardText(m.cameraText.c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("copies the exact figures (the line above is rounded)");
   ImGui::SameLine();
   if (ImGui::Button("Paste camera")) {
     const char* clip = ImGui::GetClipboardText();

@@ -7,6 +7,7 @@
 
 #include "renderer/heatmap_colours.h"
 #include "renderer/heatmap_rules.h"
+#include "ui/panel_layout.h"
 
 namespace raylab {
 namespace {
@@ -26,8 +27,15 @@ void swatch(const glm::vec3& colour, const char* text) {
   ImGui::TextUnformatted(text);
 }
 
+// Greyed text that wraps at the legend's edge rather than running out of it.
+void disabledWrapped(const char* text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("%s", text);
+  ImGui::PopStyleColor();
+}
+
 void drawRamp(const HeatmapStats& h) {
-  const float width = 260.0f, height = 14.0f;
+  const float width = std::min(260.0f, ImGui::GetContentRegionAvail().x), height = 14.0f;
   ImVec2 p = ImGui::GetCursorScreenPos();
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const int steps = 32;
@@ -68,7 +76,7 @@ void drawRangeControls(HeatmapRange& range, const HeatmapStats& h) {
 
 void drawProbe(const HeatmapProbe& q, const HeatmapStats& h) {
   if (!q.valid) {
-    ImGui::TextDisabled("hover the image for a pixel's value, key, cell and path");
+    disabledWrapped("hover the image for a pixel's value, key, cell and path");
     return;
   }
   ImGui::Text("pixel (%u, %u): %s", q.x, q.y, q.state.c_str());
@@ -115,25 +123,26 @@ const char* heatmapDescription(HeatmapView view, HeatmapKeyColour keyColour) {
   return "";
 }
 
-void drawHeatmapLegend(Settings& settings, const FrameStats& stats) {
-  if (settings.heatmap == HeatmapView::None) return;
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y - 10), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+bool drawHeatmapLegend(Settings& settings, const FrameStats& stats, const Box& box) {
+  if (settings.heatmap == HeatmapView::None) return false;
+  ImGui::SetNextWindowPos(ImVec2(box.x0, box.y0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(box.x1 - box.x0, box.y1 - box.y0), ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(0.75f);
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                                 ImGuiWindowFlags_NoNav;
-  if (ImGui::Begin("Heatmap legend", nullptr, flags)) {
+  // No title bar, move or resize: a fixed place (panel_layout.h) that never covers the panels.
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+  if (ImGui::Begin(kHeatmapLegendTitle, nullptr, flags)) {
     if (std::optional<std::string> why = heatmapUnavailable(settings)) {
       // The renderer draws the render instead (heatmapShown); say why rather than show an empty view.
       ImGui::Text("%s is not available", toString(settings.heatmap).c_str());
-      ImGui::TextUnformatted(why->c_str());
+      ImGui::TextWrapped("%s", why->c_str());
       ImGui::End();
-      return;
+      return true;
     }
     const HeatmapStats& h = stats.heatmap;
     ImGui::Text("%s, bounce %u", toString(settings.heatmap).c_str(), heatmapBounceShown(settings));
-    ImGui::TextDisabled("%s", heatmapDescription(settings.heatmap, settings.heatmapKeyColour));
+    disabledWrapped(heatmapDescription(settings.heatmap, settings.heatmapKeyColour));
     if (!h.emptyReason.empty()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "nothing to show: %s", h.emptyReason.c_str());
     if (settings.heatmap == HeatmapView::CellHit) {
       swatch(cellHitColour(true), "hit: estimated cell is the actual cell");
@@ -149,6 +158,7 @@ void drawHeatmapLegend(Settings& settings, const FrameStats& stats) {
     drawProbe(h.probe, h);
   }
   ImGui::End();
+  return true;
 }
 
 }  // namespace raylab

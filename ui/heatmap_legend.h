@@ -5,11 +5,13 @@
 
 #include "renderer/frame_stats.h"
 #include "renderer/settings.h"
+#include "ui/label_placement.h"
 
 namespace raylab {
 
-// Writes only Settings::heatmapRange (lock, min, max), clamped to the validated limits.
-void drawHeatmapLegend(Settings& settings, const FrameStats& stats);
+// In `box` (heatmapLegendBox), wrapping its text and scrolling what does not fit; false when no heatmap is
+// chosen and nothing is drawn. Writes only Settings::heatmapRange (lock, min, max), clamped to the limits.
+bool drawHeatmapLegend(Settings& settings, const FrameStats& stats, const Box& box);
 
 // One line on what a view shows, for the legend and the help.
 const char* heatmapDescription(HeatmapView view, HeatmapKeyColour keyColour);

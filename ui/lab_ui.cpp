@@ -34,7 +34,7 @@ UiRequests LabUi::draw(Settings& settings, ViewOptions& view, const CameraModel&
   }
   requests.redrawPanels = corrected;
   if (requests.resetLayout) view.resetLayout = true;
-  drawHeatmapLegend(settings, last_);
+  if (drawHeatmapLegend(settings, last_, heatmapLegendBox(display.x, display.y))) recordWindow(kHeatmapLegendTitle, layout_);
   drawHelpOverlay(&view.showHelp);
   return requests;
 }

@@ -55,6 +55,12 @@ bool sliderU32(const char* label, uint32_t& v, uint32_t lo, uint32_t hi, ImGuiSl
   return changed;
 }
 
+// A control the device cannot offer: one disabled line, why in the tooltip.
+void unavailableLine(const char* text, const std::string& why) {
+  ImGui::TextDisabled("%s", text);
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", why.c_str());
+}
+
 void drawSortSection(Settings& s, const ViewOptions& view) {
   comboSetting("strategy", s, &Settings::strategy, allKeyStrategies());
   comboSetting("sort", s, &Settings::sort, {SortAlgorithm::None, SortAlgorithm::Bitonic, SortAlgorithm::Radix, SortAlgorithm::Tile});
@@ -76,17 +82,21 @@ void drawSortSection(Settings& s, const ViewOptions& view) {
     ImGui::SetTooltip("fused: one dispatch per bounce where nothing reads the hit in between (compute wavefront)");
   comboSetting("kernel", s, &Settings::kernel, {Kernel::Wavefront, Kernel::Megakernel});
   if (s.kernel == Kernel::Megakernel) ImGui::TextDisabled("the megakernel never sorts");
-  // The rt tracer and SER need extensions the device may lack: greyed out with the reason.
-  ImGui::BeginDisabled(!view.rtUnavailable.empty());
-  comboSetting("tracer", s, &Settings::tracer, {Tracer::Compute, Tracer::Rt});
-  ImGui::EndDisabled();
-  if (!view.rtUnavailable.empty()) ImGui::TextWrapped("rt tracer unavailable: %s", view.rtUnavailable.c_str());
-  ImGui::BeginDisabled(!view.serUnavailable.empty() || s.tracer != Tracer::Rt || s.kernel != Kernel::Megakernel);
+  // The rt tracer and SER need extensions the device may lack: then each is one greyed line, the reason (a
+  // paragraph of missing extensions) on hover, so the controls below stay in view.
+  if (!view.rtUnavailable.empty()) {
+    unavailableLine(("tracer: " + toString(s.tracer) + " (rt unavailable)").c_str(), view.rtUnavailable);
+  } else {
+    comboSetting("tracer", s, &Settings::tracer, {Tracer::Compute, Tracer::Rt});
+  }
+  if (!view.serUnavailable.empty()) {
+    unavailableLine(("SER: " + toString(s.ser) + " (unavailable)").c_str(), view.serUnavailable);
+    return;
+  }
+  ImGui::BeginDisabled(s.tracer != Tracer::Rt || s.kernel != Kernel::Megakernel);
   comboEnum("SER", s.ser, {Ser::Off, Ser::On, Ser::Hint});
   ImGui::EndDisabled();
-  if (!view.serUnavailable.empty())
-    ImGui::TextWrapped("SER unavailable: %s", view.serUnavailable.c_str());
-  else if (s.ser == Ser::Hint)
+  if (s.ser == Ser::Hint)
     ImGui::TextDisabled("hint: top bits of the strategy's key");
 }
 

@@ -7,6 +7,24 @@ namespace raylab {
 namespace {
 
 constexpr float kMargin = 10.0f;
+constexpr float kLegendMinWidth = 280.0f, kLegendMaxWidth = 480.0f;
+
+// The default widths of the left and right columns. The gap between them shows the image and, at its
+// bottom, the heatmap legend: where the columns would leave less than the legend needs, both give way in
+// proportion (down to 120 px each).
+struct Columns {
+  float left, right;
+};
+Columns columnsFor(float w) {
+  float left = std::min(330.0f, std::max(120.0f, 0.42f * w - 1.5f * kMargin));
+  float right = std::min(360.0f, std::max(120.0f, w - left - 3.0f * kMargin));
+  const float short_ = kLegendMinWidth - (w - left - right - 4.0f * kMargin);
+  if (short_ > 0.0f) {
+    const float keep = std::max(0.0f, 1.0f - short_ / (left + right));
+    left = std::max(120.0f, left * keep), right = std::max(120.0f, right * keep);
+  }
+  return {left, right};
+}
 
 bool near(const Box& a, const Box& b) {
   return std::abs(a.x0 - b.x0) <= 1 && std::abs(a.y0 - b.y0) <= 1 && std::abs(a.x1 - b.x1) <= 1 && std::abs(a.y1 - b.y1) <= 1;
@@ -26,8 +44,7 @@ const char* panelTitle(Panel panel) {
 
 Box defaultPanelBox(Panel panel, float w, float h) {
   // Two columns as wide as their contents want, narrower in a small window; each split top and bottom.
-  const float left = std::min(330.0f, std::max(120.0f, 0.42f * w - 1.5f * kMargin));
-  const float right = std::min(360.0f, std::max(120.0f, w - left - 3.0f * kMargin));
+  const auto [left, right] = columnsFor(w);
   const float usable = std::max(60.0f, h - 3.0f * kMargin);
   // Speed vs accuracy gets the larger share on the right: its plot and table need it; timing scrolls.
   const float methodHeight = std::min(540.0f, 0.6f * usable), timingHeight = 0.45f * usable;
@@ -39,6 +56,17 @@ Box defaultPanelBox(Panel panel, float w, float h) {
     case Panel::SpeedAccuracy: b = {w - kMargin - right, 2 * kMargin + timingHeight, w - kMargin, h - kMargin}; break;
   }
   return clampToDisplay(b, w, h);
+}
+
+Box heatmapLegendBox(float w, float h) {
+  // At the bottom of the gap between the columns, as wide as the gap allows, and the same whatever the view
+  // shows: a legend that sized itself to its text moved with every view and covered the panels.
+  const auto [left, right] = columnsFor(w);
+  const float gapX0 = 2.0f * kMargin + left, gapX1 = w - 2.0f * kMargin - right;
+  const float width = std::min(kLegendMaxWidth, gapX1 - gapX0);
+  const float height = std::min(300.0f, 0.45f * std::max(60.0f, h - 3.0f * kMargin));
+  const float x0 = std::floor(0.5f * (gapX0 + gapX1 - width));
+  return clampToDisplay({x0, h - kMargin - height, x0 + width, h - kMargin}, w, h);
 }
 
 Box clampToDisplay(Box b, float w, float h) {
@@ -90,8 +118,12 @@ Box PanelLayout::keepInside(Panel panel, const Box& actual, bool collapsed, floa
   Box placed = clampToDisplay(want, w, h);
   e.lastReturned = placed;
   e.displayWidth = w, e.displayHeight = h;
-  rects_.push_back({panelTitle(panel), actual, collapsed});  // as drawn this frame: what a screenshot shows
+  record(panelTitle(panel), actual, collapsed);  // as drawn this frame: what a screenshot shows
   return placed;
+}
+
+void PanelLayout::record(const std::string& title, const Box& drawn, bool collapsed) {
+  rects_.push_back({title, drawn, collapsed});
 }
 
 nlohmann::json panelRectsJson(const std::vector<PanelRect>& rects, float w, float h) {

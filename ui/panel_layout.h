@@ -24,6 +24,11 @@ const char* panelTitle(Panel panel);  // the ImGui window name, also the key in 
 // timing over speed vs accuracy on the right, all inside the display.
 Box defaultPanelBox(Panel panel, float displayWidth, float displayHeight);
 
+// Where the heatmap legend is docked: at the bottom of the gap between the default columns, so that it
+// covers none of the panels at their defaults; a fixed box, the same for every view.
+Box heatmapLegendBox(float displayWidth, float displayHeight);
+constexpr const char* kHeatmapLegendTitle = "Heatmap legend";
+
 // `box` moved (and, where it is larger, shrunk) to lie inside the display.
 Box clampToDisplay(Box box, float displayWidth, float displayHeight);
 
@@ -42,6 +47,8 @@ class PanelLayout {
   void forget() { entries_.clear(); }  // after a reset: the defaults become the preferred places
   // Where each panel was drawn this frame (before any correction), in call order.
   const std::vector<PanelRect>& rects() const { return rects_; }
+  // A window placed by other means (the heatmap legend), listed with the panels.
+  void record(const std::string& title, const Box& drawn, bool collapsed = false);
   void startFrame() { rects_.clear(); }
 
  private:

@@ -28,4 +28,11 @@ bool keepPanelInside(Panel panel, PanelLayout& layout) {
   return moved || (resized && !window->Collapsed);
 }
 
+void recordWindow(const char* title, PanelLayout& layout) {
+  ImGuiWindow* window = ImGui::FindWindowByName(title);
+  if (!window || !window->Active) return;  // not drawn this frame
+  layout.record(title, {window->Pos.x, window->Pos.y, window->Pos.x + window->Size.x, window->Pos.y + window->Size.y},
+                window->Collapsed);
+}
+
 }  // namespace raylab

@@ -42,8 +42,11 @@ void cell(double v, const char* format, double scale = 1.0) {
 }
 
 void drawTable(const SpeedAccuracyBook& book, float height) {
+  // The table is the plot's legend, so its method names are shown whole: not resizable, every column fits its
+  // widest cell every frame (a resizable fixed column kept the width of its first frame, the header's
+  // "method", and cut names to "unsorte"); the table scrolls sideways instead.
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollX |
-                                ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_Resizable;
+                                ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoSavedSettings;
   if (!ImGui::BeginTable("points", 9, flags, ImVec2(0, height))) return;
   ImGui::TableSetupScrollFreeze(2, 1);  // number and method stay in view while scrolling
   for (const char* h : {"#", "method", "frames", "trace ms", "reorder ms", "frame ms", "pred. error", "cell hit", "warp eff."})

@@ -32,7 +32,8 @@ struct CameraModel {
   std::string scene;
   std::vector<std::string> builtinScenes;
   std::vector<std::string> viewpoints;
-  std::string cameraText;  // cameraToText of the current camera
+  std::string cameraText;  // cameraToText of the current camera: exact, what "Copy camera" copies
+  std::string cameraShortText;  // cameraToShortText: rounded, what the panel shows
   bool orbit = false;
   float speed = 1.0f;      // scene units per second
   std::string sceneError;  // last scene load failure

@@ -325,6 +325,7 @@ void LabWindow::fillCameraModel() {
   cameraModel_.viewpoints.clear();
   for (const Viewpoint& v : scene_.scene.viewpoints) cameraModel_.viewpoints.push_back(v.name);
   cameraModel_.cameraText = cameraToText(camera_.viewpoint());
+  cameraModel_.cameraShortText = cameraToShortText(camera_.viewpoint());
   cameraModel_.orbit = camera_.orbit();
   cameraModel_.speed = camera_.speed();
 }

@@ -24,6 +24,19 @@ TEST(PanelLayout, DefaultsAreInsideAndApartAtCommonSizes) {
   }
 }
 
+// The legend is docked between the columns: inside, over none of the default panels, wide enough for its
+// ramp and the same box whatever the view (it depends on the display size only).
+TEST(PanelLayout, HeatmapLegendOverlapsNoDefaultPanel) {
+  for (auto [w, h] : {std::pair{1280.0f, 720.0f}, {800.0f, 500.0f}, {1920.0f, 1080.0f}, {640.0f, 400.0f}}) {
+    Box legend = heatmapLegendBox(w, h);
+    EXPECT_TRUE(legend.inside(display(w, h))) << w << "x" << h;
+    EXPECT_GE(legend.x1 - legend.x0, 260.0f) << w << "x" << h;
+    EXPECT_GE(legend.y1 - legend.y0, 150.0f) << w << "x" << h;
+    for (Panel p : kAllPanels)
+      EXPECT_FALSE(legend.overlaps(defaultPanelBox(p, w, h))) << panelTitle(p) << " at " << w << "x" << h;
+  }
+}
+
 TEST(PanelLayout, ShrinkKeepsPanelsInsideAndGrowingBringsThemBack) {
   PanelLayout layout;
   std::map<Panel, Box> at;

@@ -112,5 +112,22 @@ TEST(UiCamera, TextAcceptsTheScriptFormAndRejectsJunk) {
   }
 }
 
+TEST(UiCamera, ShortTextRoundsForReading) {
+  Viewpoint v = view({1.05202198e-05f, -2.5f, 12.3456789f}, {-0.0000004f, 1.2f, 1000.0f});
+  std::string text = cameraToShortText(v);
+  EXPECT_EQ(text.rfind("camera 0 -2.5 12.346 0 1.2 1000 fov ", 0), 0u) << text;
+  EXPECT_EQ(text.find("e-"), std::string::npos) << text;  // no exponent
+  std::string error;
+  EXPECT_TRUE(cameraFromText(text, Viewpoint{}, &error)) << error;  // still a camera that can be pasted
+}
+
+TEST(UiCamera, UnnamedViewpointIsLabelledByWhereItStands) {
+  Viewpoint v = view({0.3f, 1.6f, 9.0f}, {0, 1.2f, 0});
+  v.name.clear();
+  EXPECT_EQ(viewpointLabel(v), "camera at (0.3, 1.6, 9)");
+  v.name = "alley";
+  EXPECT_EQ(viewpointLabel(v), "alley");
+}
+
 }  // namespace
 }  // namespace raylab

@@ -23,6 +23,15 @@ assert h[\"range\"] == [5, 100] and h[\"unit\"] == \"traversal steps\" and h[\"s
 # The stats file's settings re-render the same PNG, heatmap options and all.
 "$raylab" render --settings steps.json --out again.png >/dev/null 2>&1
 check "re-render from --stats settings" 'cmp -s steps.png again.png'
+# A window sidecar's camera can have no name (the camera moved, or the default view): the description names
+# where it stands, not "temple/" and "1 spp, , wavefront".
+python3 -c "
+import json; s = json.load(open('steps.json'))['settings']
+cam = {'name': '', 'position': [0.3, 1.6, 9], 'target': [0, 1.2, 0], 'up': [0, 1, 0], 'yfov_degrees': 50}
+json.dump({'settings': s, 'camera': cam}, open('unnamed.json', 'w'))"
+out=$("$raylab" render --settings unnamed.json --out unnamed.png 2>&1)
+check "unnamed camera described: $out" 'grep -q "^raylab: temple, camera at (0.3, 1.6, 9), " <<<"$out" &&
+  grep -q " spp, camera at (0.3, 1.6, 9), wavefront, " <<<"$out" && ! grep -q "/,\|, ," <<<"$out"'
 
 out=$("$raylab" render "${common[@]}" --strategy gaussian --heatmap cache-mean --out cache.png --stats cache.json 2>&1)
 check "cache view renders" '[ -s cache.png ]'
