@@ -88,8 +88,8 @@ TEST_F(Compaction, SortsBeforeAndAfterCompactions) {
   s.compaction = raylab::Compaction::Shade;
   const SortPlan all{{true, true, true, false}, {}}, none{{false, false, false, false}, {}};
   for (uint32_t paying : {0u, 1u}) {
-    // Explore frames: sorting after bounce `paying` makes the next bounce free and costs nothing; after
-    // any other it saves nothing and costs 100 ms.
+    // Sorted frames: sorting after bounce `paying` makes the next bounce free and costs nothing; after any
+    // other it saves nothing and costs 100 ms.
     std::vector<StageTime> sorted, plain{{"trace", int(paying) + 1, 10.0}};
     for (int b = 0; b < 3; ++b)
       if (uint32_t(b) != paying) sorted.push_back({"keys", b, 100.0});
@@ -102,8 +102,9 @@ TEST_F(Compaction, SortsBeforeAndAfterCompactions) {
         const std::string what = "fixed " + toString(sort) + ", sorted after bounce " + std::to_string(paying) +
                                  " only, fused " + toString(fusion);
         PathTracer tracer(ctx(), scene, s, view);
-        tracer.sortPolicy().record(all, sorted);
-        tracer.sortPolicy().record(none, plain);
+        // Cold frames (not samples), then sorted and unsorted alternately until each has its samples.
+        const uint32_t history = SortPolicyModel::kColdFrames + 2 * SortPolicyModel::kMinSamples;
+        for (uint32_t f = 0; f < history; ++f) tracer.sortPolicy().record(f % 2 == 0 ? all : none, f % 2 == 0 ? sorted : plain);
         const FrameStats stats = tracer.renderFrame();
         ASSERT_EQ(tracer.sortPlan().sortAfter, want) << what;
         const auto keysPasses = std::count_if(stats.stages.begin(), stats.stages.end(),
