@@ -101,8 +101,7 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
   info_.timestampPeriodNs = props.properties.limits.timestampPeriod;
   info_.maxGroupCountX = props.properties.limits.maxComputeWorkGroupCount[0];
   info_.maxGroupCountY = props.properties.limits.maxComputeWorkGroupCount[1];
-  info_.dispatchRowGroups = options.dispatchRowGroups > 0 ? std::min(options.dispatchRowGroups, info_.maxGroupCountX)
-                                                          : info_.maxGroupCountX;
+  setDispatchRowGroups(0);
   info_.isCpu = props.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   vkGetPhysicalDeviceMemoryProperties(physical_, &memoryProperties_);
 }
@@ -315,6 +314,10 @@ std::vector<std::string> VulkanContext::describeDevices() {
   }
   vkDestroyInstance(instance, nullptr);
   return lines;
+}
+
+void VulkanContext::setDispatchRowGroups(uint32_t groups) {
+  info_.dispatchRowGroups = groups > 0 ? std::min(groups, info_.maxGroupCountX) : info_.maxGroupCountX;
 }
 
 }  // namespace raylab

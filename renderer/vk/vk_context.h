@@ -21,9 +21,6 @@ struct ContextOptions {
   std::vector<const char*> instanceExtensions;  // e.g. from glfwGetRequiredInstanceExtensions
   std::vector<const char*> deviceExtensions;    // e.g. VK_KHR_swapchain
   bool quiet = false;              // do not print the chosen device
-  // Work groups in a row of a dispatch (DeviceInfo::dispatchRowGroups); 0: the device's limit. Tests set
-  // fewer so that small renders run on several rows, as large ones do on every device.
-  uint32_t dispatchRowGroups = 0;
 };
 
 struct DeviceInfo {
@@ -36,7 +33,7 @@ struct DeviceInfo {
   uint32_t maxGroupCountX = 0;  // maxComputeWorkGroupCount[0] and [1]
   uint32_t maxGroupCountY = 0;
   // The row length of every dispatch made from a thread count (renderer/vk/dispatch_size.h), written into
-  // GpuFrame for the indirect sizes shaders make: maxGroupCountX, or ContextOptions::dispatchRowGroups.
+  // GpuFrame for the indirect sizes shaders make: maxGroupCountX, or what setDispatchRowGroups set.
   uint32_t dispatchRowGroups = 0;
   bool isCpu = false;
 
@@ -85,6 +82,10 @@ class VulkanContext {
   VkQueue queue() const { return queue_; }
   uint32_t queueFamily() const { return queueFamily_; }
   const DeviceInfo& info() const { return info_; }
+  // Tests: dispatches from now on run in rows of `groups` work groups (0: the device's limit), so that small
+  // renders run on several rows, as large ones do on every device. Read at every dispatch and frame. (A
+  // second context for this crashed at exit on Debian 13's lavapipe and layer, once two instances had lived.)
+  void setDispatchRowGroups(uint32_t groups);
   // Valid only when info().rayTracing.
   const RayTracingFunctions& rt() const { return rt_; }
 
