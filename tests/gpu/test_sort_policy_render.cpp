@@ -2,6 +2,8 @@
 // `auto` warms up and explores (all sorted, then none, alternately) and then decides from what those frames measured, detailed frames
 // teach it too, and the plan for a given cost history is the model's (the model's determinism for a cost
 // history is tests/cpu/test_sort_policy.cpp; that sorting never changes the image is test_render_invariant.cpp).
+#include <memory>
+
 #include <gtest/gtest.h>
 
 #include "renderer/path_tracer.h"
@@ -12,15 +14,28 @@
 
 namespace raylab::test {
 
-class SortPolicyRender : public GpuTest {};
+class SortPolicyRender : public GpuTest {
+ protected:
+  // Two-point keys under the auto policy, 40x20, 4 bounces, the hall; with detailed statistics, which
+  // teach the policy (its figures are what these tests read).
+  static Settings autoTwoPoint() {
+    Settings s = smallFrame(40, 20, 4);
+    s.strategy = KeyStrategy::TwoPoint;
+    s.sortPolicy = SortPolicy::Auto;
+    return s;
+  }
+  std::unique_ptr<PathTracer> detailedTracer(const Settings& s) {
+    auto tracer = std::make_unique<PathTracer>(ctx(), scene_, s, *scene_.findViewpoint("hall"));
+    tracer->setDetailedStats(true);
+    return tracer;
+  }
+  Scene scene_ = makeTemple();
+};
 
 TEST_F(SortPolicyRender, StatsReportThePlanEachFrameFollowed) {
-  Scene scene = makeTemple();
-  Settings s = smallFrame(40, 20, 4);
-  s.strategy = KeyStrategy::TwoPoint;
-  s.sortPolicy = SortPolicy::Auto;
-  PathTracer tracer(ctx(), scene, s, *scene.findViewpoint("hall"));
-  tracer.setDetailedStats(true);
+  const Settings s = autoTwoPoint();
+  std::unique_ptr<PathTracer> owned = detailedTracer(s);
+  PathTracer& tracer = *owned;
   const FrameStats& f0 = tracer.renderFrame();
   ASSERT_EQ(f0.bounces.size(), 4u);
   EXPECT_TRUE(f0.bounces[0].sortedAfter);
@@ -75,12 +90,8 @@ TEST_F(SortPolicyRender, NeverSortsNothingAndAlwaysEveryBounceButTheLast) {
 // Auto's second frame (warm-up) is unsorted right after a sorted one; then a cost history in which sorting never
 // pays makes it sort nothing.
 TEST_F(SortPolicyRender, UnsortedBouncesOfAutoHaveNoAccuracyFigures) {
-  Scene scene = makeTemple();
-  Settings s = smallFrame(40, 20, 4);
-  s.strategy = KeyStrategy::TwoPoint;
-  s.sortPolicy = SortPolicy::Auto;
-  PathTracer tracer(ctx(), scene, s, *scene.findViewpoint("hall"));
-  tracer.setDetailedStats(true);
+  std::unique_ptr<PathTracer> owned = detailedTracer(autoTwoPoint());
+  PathTracer& tracer = *owned;
   const FrameStats sorted = tracer.renderFrame();
   for (size_t b = 1; b < sorted.bounces.size(); ++b) {
     EXPECT_GE(sorted.bounces[b].predictionErrorMean, 0.0) << "bounce " << b << " was keyed: measured";
