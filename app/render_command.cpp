@@ -28,7 +28,7 @@ const char* const kRenderHelp =
     "  --time-budget S        accumulate frames for up to S seconds (wall clock), at most --frames of them\n"
     "                         (--frames defaults to unlimited then)\n";
 
-void printUsage(const std::string& error) {
+void printRenderUsage(const std::string& error) {
   std::fprintf(stderr, "raylab render: %s\n\nusage: raylab render [options]\n%s%s", error.c_str(),
                commonOptionsHelp().c_str(), kRenderHelp);
 }
@@ -58,7 +58,7 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
   std::vector<std::string> args = givenArgs;
   double budgetSeconds = 0.0;
   std::optional<Viewpoint> sidecarCamera;  // --settings FILE.json: a screenshot sidecar's settings and camera
-  const int parsed = withCommandErrors(printUsage, [&] {
+  const int parsed = withCommandErrors(printRenderUsage, [&] {
     budgetSeconds = takeTimeBudget(args);
     options = parseOptionsWithSettingsFile(args, &sidecarCamera);
     // With a time budget the frame count is only a ceiling: without --frames there is none.

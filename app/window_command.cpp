@@ -62,7 +62,7 @@ void parseWindowSize(const std::string& text, WindowOptions& o) {
   o.height = int(parseUint("--window-size height", text.substr(x + 1), 1, SettingLimits::kMaxSize));
 }
 
-void printUsage(const std::string& error) {
+void printWindowUsage(const std::string& error) {
   std::fprintf(stderr, "raylab: %s\n\nusage: raylab [options]\n%s%s", error.c_str(), kWindowHelp,
                commonOptionsHelp().c_str());
 }
@@ -145,7 +145,7 @@ std::string windowOptionsHelp() { return kWindowHelp; }
 
 int runWindowCommand(const std::vector<std::string>& args) {
   WindowOptions options;
-  const int parsed = withCommandErrors(printUsage, [&] {
+  const int parsed = withCommandErrors(printWindowUsage, [&] {
     options = parseWindowOptions(args);
     return int(kExitOk);
   });
@@ -159,7 +159,7 @@ int runWindowCommand(const std::vector<std::string>& args) {
     }
     return renderHeadless("no display (neither DISPLAY nor WAYLAND_DISPLAY is set)", args);
   }
-  return withCommandErrors(printUsage, [&] {
+  return withCommandErrors(printWindowUsage, [&] {
     try {
       return runLabWindow(options);
     } catch (const NoDisplayError& e) {

@@ -14,24 +14,18 @@
 
 namespace raylab {
 
-namespace {
-
-constexpr uint32_t kGroup = RL_PATH_GROUP_SIZE;
-
-}  // namespace
-
 const ComputePipeline& PathTracer::shadeVariant(bool compact, bool traceFirst) {
   if (!compact && !traceFirst) return shade_;
   std::optional<ComputePipeline>& p = shadeVariants_[compact ? 1 : 0][traceFirst ? 1 : 0];
   if (!p)
-    p.emplace(ctx_, "shade", sizeof(gpu::PathStagePush), kGroup,
+    p.emplace(ctx_, "shade", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE,
               std::vector<uint32_t>{static_cast<uint32_t>(KeyStrategy::None), compact ? 1u : 0u, traceFirst ? 1u : 0u});
   return *p;
 }
 
 const ComputePipeline& PathTracer::gatheringTrace(bool counting) {
   std::optional<ComputePipeline>& p = gatheringTrace_[counting ? 1 : 0];
-  if (!p) p.emplace(ctx_, "trace", sizeof(gpu::PathStagePush), kGroup, std::vector<uint32_t>{counting ? 1u : 0u, 1u});
+  if (!p) p.emplace(ctx_, "trace", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, std::vector<uint32_t>{counting ? 1u : 0u, 1u});
   return *p;
 }
 

@@ -13,11 +13,6 @@
 #include "renderer/vk/vk_context.h"
 
 namespace raylab {
-namespace {
-
-constexpr uint32_t kGroup = RL_PATH_GROUP_SIZE;
-
-}  // namespace
 
 gpu::GpuCamera makeGpuCamera(const Viewpoint& v, uint32_t width, uint32_t height) {
   gpu::GpuCamera c{};
@@ -50,14 +45,14 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared
       settings_(settings),
       camera_(camera),
       scene_(std::move(gpuScene)),
-      generate_(ctx, "generate", sizeof(gpu::PathStagePush), kGroup),
-      trace_(ctx, "trace", sizeof(gpu::PathStagePush), kGroup, {0}),
-      traceCounting_(ctx, "trace", sizeof(gpu::PathStagePush), kGroup, {1}),
-      shade_(ctx, "shade", sizeof(gpu::PathStagePush), kGroup),
-      accumulate_(ctx, "accumulate", sizeof(gpu::PathStagePush), kGroup),
-      tonemap_(ctx, "tonemap", sizeof(gpu::PathStagePush), kGroup),
-      megakernel_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup, {0}),
-      megakernelCounting_(ctx, "megakernel", sizeof(gpu::PathStagePush), kGroup, {1}),
+      generate_(ctx, "generate", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
+      trace_(ctx, "trace", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {0}),
+      traceCounting_(ctx, "trace", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {1}),
+      shade_(ctx, "shade", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
+      accumulate_(ctx, "accumulate", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
+      tonemap_(ctx, "tonemap", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
+      megakernel_(ctx, "megakernel", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {0}),
+      megakernelCounting_(ctx, "megakernel", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {1}),
       timer_(ctx) {
   checkSupported(settings_);
   allocate();

@@ -8,6 +8,9 @@
 
 namespace raylab {
 
+// The procedural scenes' angles.
+inline constexpr float kPi = 3.14159265358979f;
+
 struct TempleParams {
   uint32_t seed = 1;       // jitters building heights, broken columns, lamps, rubble
   float size = 1.0f;       // uniform scale; 1 gives about 150 x 40 x 150 units

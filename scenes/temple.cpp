@@ -20,8 +20,6 @@ namespace raylab {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
-
 using Rng = SplitMixRng;
 
 struct Materials {

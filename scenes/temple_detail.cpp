@@ -22,7 +22,6 @@ namespace raylab {
 namespace {
 
 namespace hall = temple_layout;
-constexpr float kPi = 3.14159265358979f;
 constexpr uint32_t kSeed = 11;
 constexpr int kBoulders = 40;
 

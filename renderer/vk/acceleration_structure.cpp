@@ -4,6 +4,7 @@
 #include <cstring>
 #include <functional>
 
+#include "renderer/vk/align_up.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
 
@@ -13,7 +14,6 @@ namespace {
 constexpr VkBufferUsageFlags kBuildInput = VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR;
 constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR;
 
-VkDeviceAddress alignUp(VkDeviceAddress v, VkDeviceAddress a) { return a ? (v + a - 1) / a * a : v; }
 
 // Sizes, storage and scratch, then one build on the queue (and `afterBuild`, fenced behind it); returns the
 // structure, whose memory is `storage`.

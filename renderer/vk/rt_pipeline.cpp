@@ -2,13 +2,13 @@
 
 #include <cstring>
 
+#include "renderer/vk/align_up.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
 
 namespace raylab {
 namespace {
 
-VkDeviceSize alignUp(VkDeviceSize v, VkDeviceSize a) { return a ? (v + a - 1) / a * a : v; }
 
 // The context, once it is known to have ray-tracing pipelines (a clear message, not a failed create).
 const VulkanContext& requireRayTracing(const VulkanContext& ctx, const std::string& raygenName) {

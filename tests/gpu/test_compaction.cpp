@@ -14,14 +14,14 @@
 namespace raylab::test {
 namespace {
 
-class Compaction : public GpuTest {};
+class CompactionRender : public GpuTest {};
 
 // On the open view, where most paths finish early, over two frames: the unsorted wavefront, and one strategy of
 // each kind (grid key, length cache, oracle) under the always policy (every shade compacts before keys, sort
 // and reorder) and the auto policy (frame 0 explores sorted, frame 1 unsorted), with every sort (the tile sort
 // needs the compaction) and both reorders. Every strategy meets the compaction in the sort invariant tests,
 // where it is the default.
-TEST_F(Compaction, EveryVariantRendersTheUncompactedImage) {
+TEST_F(CompactionRender, EveryVariantRendersTheUncompactedImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("openings");
   Settings base = smallFrame(33, 17, 5);
@@ -49,7 +49,7 @@ TEST_F(Compaction, EveryVariantRendersTheUncompactedImage) {
 // Per bounce: the same rays traced, the same traversal steps in total (slots behind the packed prefix hold
 // no steps of rays traced bounces ago), and fuller warps: past the first bounce the live rays fill whole
 // warps instead of sharing them with finished paths.
-TEST_F(Compaction, TracesTheSameRaysInFullerWarps) {
+TEST_F(CompactionRender, TracesTheSameRaysInFullerWarps) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("openings");
   auto render = [&](raylab::Compaction compaction) {
@@ -77,7 +77,7 @@ TEST_F(Compaction, TracesTheSameRaysInFullerWarps) {
 // pays): sorting after bounce 0 only (compactions follow the sort), and after bounce 1 only (a compaction
 // comes first, and the keys, sort and reorder see its live prefix). The keys pass runs once, the image is
 // the unsorted one, for every sort and both reorders.
-TEST_F(Compaction, SortsBeforeAndAfterCompactions) {
+TEST_F(CompactionRender, SortsBeforeAndAfterCompactions) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("openings");
   Settings s = smallFrame(33, 17, 4);
@@ -116,7 +116,7 @@ TEST_F(Compaction, SortsBeforeAndAfterCompactions) {
 }
 
 // The window renders a frame in steps over several submissions: the compactions carry over between them.
-TEST_F(Compaction, CompactedFramesInStepsRenderTheWholeFrameImage) {
+TEST_F(CompactionRender, CompactedFramesInStepsRenderTheWholeFrameImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("openings");
   Settings s = smallFrame(37, 19, 4);

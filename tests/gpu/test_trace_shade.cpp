@@ -13,7 +13,7 @@
 namespace raylab::test {
 namespace {
 
-class TraceShade : public GpuTest {};
+class TraceShadeRender : public GpuTest {};
 
 int stageCount(const FrameStats& s, const std::string& stage) {
   return static_cast<int>(std::count_if(s.stages.begin(), s.stages.end(), [&](const StageTime& t) { return t.stage == stage; }));
@@ -22,7 +22,7 @@ int stageCount(const FrameStats& s, const std::string& stage) {
 // Unsorted with and without compaction, and sorted: a strategy with and one without a length cache (which
 // learns from the sorted rays' hits, so those bounces stay split), each reorder and keys in shade, under the
 // always and the auto policy, over two frames.
-TEST_F(TraceShade, FusedRendersTheSplitImage) {
+TEST_F(TraceShadeRender, FusedRendersTheSplitImage) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("openings");
   Settings base = smallFrame(33, 17, 5);
@@ -50,7 +50,7 @@ TEST_F(TraceShade, FusedRendersTheSplitImage) {
 
 // The same rays per bounce (the fused kernel counts what the trace counted); every bounce of an unsorted frame
 // is one dispatch, and a heatmap of bounce 1 keeps that bounce split.
-TEST_F(TraceShade, CountsTheSameRaysAndSplitsOnlyWhereNeeded) {
+TEST_F(TraceShadeRender, CountsTheSameRaysAndSplitsOnlyWhereNeeded) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
   Settings s = smallFrame(40, 24, 4);
