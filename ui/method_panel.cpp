@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "renderer/heatmap_rules.h"
+#include "renderer/reorder/key_strategies.h"
 #include "renderer/settings_validation.h"
 #include "ui/panel_layout.h"
 
@@ -131,15 +132,14 @@ void drawGridSection(Settings& s) {
 
 // Parameters of the length estimates; each is greyed out unless the chosen strategy uses it.
 void drawLengthSection(Settings& s) {
-  const KeyStrategy k = s.strategy;
-  ImGui::BeginDisabled(k != KeyStrategy::Fixed && k != KeyStrategy::TwoPoint && k != KeyStrategy::Average &&
-                       k != KeyStrategy::Ema && k != KeyStrategy::Gaussian);
+  const KeyStrategyInfo& k = strategyInfo(s.strategy);
+  ImGui::BeginDisabled(!k.readsFixedLength);
   ImGui::SliderFloat("fixed-length factor", &s.fixedFactor, L::kMinFixedFactor, L::kMaxFixedFactor, "%.3f", kClamp);
   ImGui::EndDisabled();
-  ImGui::BeginDisabled(k != KeyStrategy::Ema);
+  ImGui::BeginDisabled(!k.readsEmaAlpha);
   ImGui::SliderFloat("EMA alpha", &s.emaAlpha, L::kMinEmaAlpha, L::kMaxEmaAlpha, "%.3f", kLog);
   ImGui::EndDisabled();
-  ImGui::BeginDisabled(k != KeyStrategy::Gaussian);
+  ImGui::BeginDisabled(!k.samplesGaussian);
   bool never = std::isinf(s.gaussReset);
   if (ImGui::Checkbox("never reset", &never)) s.gaussReset = never ? INFINITY : 20.0f;
   ImGui::BeginDisabled(never);
@@ -148,7 +148,7 @@ void drawLengthSection(Settings& s) {
   ImGui::EndDisabled();
   ImGui::SliderFloat("outlier sigmas", &s.gaussOutlier, 0.0f, L::kMaxGaussOutlier, "%.2f", kClamp);
   ImGui::EndDisabled();
-  ImGui::BeginDisabled(k != KeyStrategy::Average && k != KeyStrategy::Ema && k != KeyStrategy::Gaussian);
+  ImGui::BeginDisabled(!k.learnsLengths);
   sliderU32("learn from 1 ray in", s.learnEvery, 1, 64);
   ImGui::EndDisabled();
 }
@@ -212,7 +212,9 @@ void drawMethodPanel(Settings& s, ViewOptions& view) {
     if (ImGui::BeginTabItem("Keys")) {
       drawSortSection(s);
       sectionTitle("key grid");
+      ImGui::BeginDisabled(!strategyInfo(s.strategy).usesGrid);  // dead-last and none make no cells
       drawGridSection(s);
+      ImGui::EndDisabled();
       sectionTitle("length estimates");
       drawLengthSection(s);
       ImGui::EndTabItem();
