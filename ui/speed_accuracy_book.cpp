@@ -6,6 +6,7 @@
 
 #include "renderer/reorder/key_functions.h"
 #include "renderer/reorder/key_strategies.h"
+#include "renderer/stages.h"
 
 namespace raylab {
 namespace {
@@ -155,8 +156,10 @@ void SpeedAccuracyBook::record(const Settings& rendered, const FrameStats& stats
   p.lastSeen = ++frame_;
   // A fused trace and shade has no trace time of its own to put on the axis.
   if (hasStage(stats, "trace") && !hasStage(stats, "trace+shade")) p.traceMs.add(stats.stageTotal("trace"));
-  p.reorderMs.add(stats.stageTotal("learn") + stats.stageTotal("keys") + stats.stageTotal("sort") +
-                  stats.stageTotal("reorder") + stats.stageTotal("oracle-trace"));
+  double reorderMs = 0.0;
+  for (const StageInfo& st : kStages)
+    if (isSortingCost(st.name)) reorderMs += stats.stageTotal(st.name);
+  p.reorderMs.add(reorderMs);
   p.frameMs.add(stats.frameMs);
   p.predictionError.add(meanOverBounces(stats.bounces, &BounceStats::predictionErrorMean, true));
   p.cellHitRate.add(meanOverBounces(stats.bounces, &BounceStats::cellHitRate, true));

@@ -184,7 +184,9 @@ TEST(KeyStrategyTable, SaysWhatTheKeyFunctionsRead) {
     const uint32_t longKey = keyOf(info.strategy, 7.0f, 16, longLen);
     const uint32_t coarseKey = keyOf(info.strategy, 1.0f, 2, coarseLen);
     EXPECT_EQ(shortLen != longLen, info.readsFixedLength) << info.name << ": length " << shortLen << " vs " << longLen;
-    if (info.readsFixedLength) EXPECT_NE(shortKey, longKey) << info.name;
+    if (info.readsFixedLength) {
+      EXPECT_NE(shortKey, longKey) << info.name;
+    }
     EXPECT_EQ(shortKey != coarseKey, info.usesGrid) << info.name;
     EXPECT_EQ(strategyId(info.strategy), info.shaderId);
     EXPECT_EQ(parseKeyStrategy(info.name), info.strategy);
