@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Where sorting pays on one scene, as one self-contained HTML report (issue 22).
 
-usage: /usr/bin/python3 app/study_report.py OUT.html BENCH_DIR [BENCH_DIR...]
+usage: /usr/bin/python3 app/study_report.py [--note TEXT] OUT.html BENCH_DIR [BENCH_DIR...]
 Reads the cells of one or more `raylab bench` folders (results.jsonl, sweep.json): a study over image sizes,
 samples per frame and bounce counts may be one sweep or several (one per size, or shards), and writes OUT.html
 with every chart embedded (PNG as data: URLs), so it opens from disk with no network. It opens with the verdict
@@ -307,7 +307,7 @@ def image_check(by_group):
     return checked, differ
 
 
-def report(out_path, folders):
+def report(out_path, folders, note=""):
     cells, sweeps = load(folders)
     rows = [describe(c) for c in cells]
     by_group = groups(rows)
@@ -317,6 +317,8 @@ def report(out_path, folders):
     at_largest = [r for r in rows if r["paths"] == largest]
 
     parts = [f"<h1>Where sorting pays: {html.escape(', '.join(f'{s}@{v}' for s, v in scenes))}</h1>"]
+    if note:
+        parts.append(f"<p><b>{html.escape(note)}</b></p>")
     parts.append("<h2>Verdict</h2><ul>")
     for key in sorted(cross):
         parts.append(f"<li><b>{html.escape(key[0])}@{html.escape(key[1])}, {key[2]} bounces</b>: "
@@ -385,9 +387,13 @@ def report(out_path, folders):
 
 
 def main():
-    if len(sys.argv) < 3:
-        fail("usage: study_report.py OUT.html BENCH_DIR [BENCH_DIR...]")
-    report(sys.argv[1], sys.argv[2:])
+    args = sys.argv[1:]
+    note = ""
+    if len(args) >= 2 and args[0] == "--note":
+        note, args = args[1], args[2:]
+    if len(args) < 2:
+        fail("usage: study_report.py [--note TEXT] OUT.html BENCH_DIR [BENCH_DIR...]")
+    report(args[0], args[1:], note)
 
 
 if __name__ == "__main__":
