@@ -8,10 +8,13 @@
 // structure (bvhOrderVertices: duplicated geometry), triangleOrder as a permutation (the wide BVH collapses
 // from it, the tests check it). Leaves would need an index array of their own, a new GPU indirection.
 //
-// Measured on a 2-core Debian 12 machine (raylab_bvh_report --repeats 5, docs/results/embree-bvh/README.md),
-// the hand-written single-threaded binned SAH builder this replaces against Embree 3.13.5, build ms (median)
-// and SAH cost (bvh_sah.h, both costs 1):
-//   see the table there; numbers are filled in by the commit that measured them.
+// Measured on a shared 2-core Debian 12 machine (raylab_bvh_report, docs/results/embree-bvh/README.md), the
+// hand-written single-threaded binned SAH builder this replaces (revision 6b6e6a7) against Embree 3.13.5
+// (ae7c3b5): SAH cost (bvh_sah.h, both costs 1), build CPU ms, nodes; the wall time was within the noise of
+// the other jobs on 2 cores:
+//   temple                  7,380 triangles  28.25 -> 27.44   3.4 ->   2.6 ms     6,491 ->     6,347 nodes
+//   Sponza                262,087            77.40 -> 75.19   188 ->   129 ms   262,529 ->   263,283
+//   temple-detail:1000000 1,001,040          36.04 -> 33.91   683 ->   583 ms 1,002,327 -> 1,002,031
 #include "renderer/bvh.h"
 
 #include <algorithm>
