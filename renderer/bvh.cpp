@@ -96,7 +96,8 @@ struct BvhFlattener {
   void node(uint32_t slot, const EmbreeBuildNode& n, uint32_t depth) {
     if (depth >= RL_BVH_STACK) throw std::runtime_error("buildBvh: Embree's tree is deeper than RL_BVH_STACK");
     if (n.leafCount > 0) return leaf(slot, n, depth);
-    if (!n.children[0] || !n.children[1]) throw std::runtime_error("buildBvh: Embree left an interior node without two children");
+    if (!n.children[0] || !n.children[1])
+      throw std::runtime_error("buildBvh: Embree left an interior node without two children");
     uint32_t left = static_cast<uint32_t>(bvh.nodes.size());
     bvh.nodes.resize(bvh.nodes.size() + 2);
     bvh.nodes[slot].leftOrFirst = left;

@@ -26,7 +26,8 @@ const char* embreeErrorName(RTCError e) {
 
 EmbreeDevice::EmbreeDevice() {
   device_ = rtcNewDevice(nullptr);
-  if (!device_) throw std::runtime_error(std::string("Embree: no device (") + embreeErrorName(rtcGetDeviceError(nullptr)) + ")");
+  if (!device_)
+    throw std::runtime_error(std::string("Embree: no device (") + embreeErrorName(rtcGetDeviceError(nullptr)) + ")");
   rtcSetDeviceErrorFunction(device_, keepEmbreeMessage, &message_);
 }
 

@@ -25,7 +25,8 @@ class EmbreeScene {
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
   // Hits with t in (tNear, tMax]; both faces count, as in our shaders.
-  EmbreeHit intersect(const glm::vec3& origin, const glm::vec3& direction, float tMax = 1e30f, float tNear = 0.0f) const;
+  EmbreeHit intersect(const glm::vec3& origin, const glm::vec3& direction, float tMax = 1e30f,
+                      float tNear = 0.0f) const;
   // Whether anything lies in (tNear, tMax).
   bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tMax, float tNear = 0.0f) const;
 
