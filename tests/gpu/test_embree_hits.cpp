@@ -92,11 +92,11 @@ struct Tally {
   bool printMore() const { return tMismatch + triangleMismatch + hitMismatch + shadowMismatch <= 10; }
 };
 
-float tolerance(float t) { return 1e-4f * (1.0f + std::abs(t)); }
+float hitTolerance(float t) { return 1e-4f * (1.0f + std::abs(t)); }
 
 // Compares one batch; fills `next` with diffuse bounce rays from Embree's hits (for the next bounce).
-void compare(const Scene& scene, const EmbreeScene& embree, const RayBatch& rays, const std::vector<GpuHit>& gpu,
-             Tally& tally, RayBatch* next, std::mt19937& rng) {
+void compareBatchWithEmbree(const Scene& scene, const EmbreeScene& embree, const RayBatch& rays,
+                            const std::vector<GpuHit>& gpu, Tally& tally, RayBatch* next, std::mt19937& rng) {
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::normal_distribution<float> gauss;
   const float diagonal = glm::length(scene.bounds().extent());
@@ -109,12 +109,12 @@ void compare(const Scene& scene, const EmbreeScene& embree, const RayBatch& rays
     bool refHit = ref.t > 0.0f, gpuHit = g.t > 0.0f;
     if (refHit && gpuHit) {
       ++tally.hits;
-      if (std::abs(g.t - ref.t) > tolerance(ref.t)) {
+      if (std::abs(g.t - ref.t) > hitTolerance(ref.t)) {
         ++tally.tMismatch;
         if (tally.printMore()) std::cout << "ray " << i << ": GPU t " << g.t << ", Embree " << ref.t << "\n";
       } else if (g.triangle != ref.triangle) {
         bool tie = g.triangle < scene.triangles.size() &&
-                   std::abs(exactHitOf(scene.triangles[g.triangle], o, d) - ref.t) <= tolerance(ref.t);
+                   std::abs(exactHitOf(scene.triangles[g.triangle], o, d) - ref.t) <= hitTolerance(ref.t);
         tally.ties += tie;
         if (!tie) {
           ++tally.triangleMismatch;
@@ -128,7 +128,7 @@ void compare(const Scene& scene, const EmbreeScene& embree, const RayBatch& rays
       uint32_t tri = refHit ? ref.triangle : g.triangle;
       double edge = 1.0;
       if (tri < scene.triangles.size()) exactHitOf(scene.triangles[tri], o, d, &edge);
-      bool excused = std::abs(t - tMax) <= tolerance(t) || std::abs(edge) < 1e-5;
+      bool excused = std::abs(t - tMax) <= hitTolerance(t) || std::abs(edge) < 1e-5;
       tally.oneSided += excused;
       if (!excused) {
         ++tally.hitMismatch;
@@ -143,7 +143,7 @@ void compare(const Scene& scene, const EmbreeScene& embree, const RayBatch& rays
       EmbreeHit any = embree.intersect(o, d);
       double edge = 1.0;
       if (any.t > 0.0f) exactHitOf(scene.triangles[any.triangle], o, d, &edge);
-      bool excused = (any.t > 0.0f && std::abs(any.t - tMax) <= tolerance(any.t)) || std::abs(edge) < 1e-5;
+      bool excused = (any.t > 0.0f && std::abs(any.t - tMax) <= hitTolerance(any.t)) || std::abs(edge) < 1e-5;
       tally.shadowTies += excused;
       if (!excused) {
         ++tally.shadowMismatch;
@@ -181,7 +181,7 @@ Tally checkScene(const VulkanContext& ctx, const Scene& scene, uint32_t randomRa
   Tally tally;
   for (int bounce = 0; bounce < 3 && rays.size() > 0; ++bounce) {
     RayBatch next;
-    compare(scene, embree, rays, traceOnGpu(ctx, data, rays), tally, bounce < 2 ? &next : nullptr, rng);
+    compareBatchWithEmbree(scene, embree, rays, traceOnGpu(ctx, data, rays), tally, bounce < 2 ? &next : nullptr, rng);
     rays = std::move(next);
   }
   std::printf("%s: %u rays, %u hits both, %u triangle ties, %u one-sided hits at an edge or tMax, %u blocked, "
