@@ -83,6 +83,12 @@ CpuHit traverseBinaryCpu(const std::vector<gpu::BvhNode>& nodes, const std::vect
   return hit;
 }
 
+CpuHit intersectAllCpu(const std::vector<gpu::GpuTriangle>& triangles, glm::vec3 origin, glm::vec3 dir, float tMax) {
+  CpuHit hit;
+  for (uint32_t i = 0; i < triangles.size(); ++i) cpuIntersectTriangle(triangles[i], i, origin, dir, hit, tMax);
+  return hit;
+}
+
 CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& triangles, glm::vec3 origin,
                        glm::vec3 dir, float tMax, bool anyHit) {
   CpuHit hit;

@@ -24,6 +24,10 @@ struct CpuHit {
 // `triangles` in BVH order (bvhOrderTriangles); anyHit stops at the first hit, as shadow rays do.
 CpuHit traverseBinaryCpu(const std::vector<gpu::BvhNode>& nodes, const std::vector<gpu::GpuTriangle>& triangles,
                          glm::vec3 origin, glm::vec3 dir, float tMax, bool anyHit);
+// Every triangle tested, no tree: the reference both trees are checked against (the binary traversal's exact
+// boxes can miss a hit on a box face that a ray parallel to it grazes; the wide tree's boxes, rounded outwards,
+// rarely have that face).
+CpuHit intersectAllCpu(const std::vector<gpu::GpuTriangle>& triangles, glm::vec3 origin, glm::vec3 dir, float tMax);
 CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& triangles, glm::vec3 origin,
                        glm::vec3 dir, float tMax, bool anyHit);
 
