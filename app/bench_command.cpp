@@ -97,9 +97,9 @@ size_t runCells(const BenchPlan& plan, const VulkanContext& ctx, const std::set<
       auto setupStart = std::chrono::steady_clock::now();
       PathTracer tracer(ctx, loaded.scene, caseSettings, loaded.view);
       SceneFacts facts = sceneFactsOf(tracer.scene(), loadMs, msSince(setupStart));
-      std::fprintf(stderr, "%s: %llu triangles, BVH %.1f MB (built in %.0f ms), scene made in %.0f ms\n",
+      std::fprintf(stderr, "%s: %llu triangles, BVH %.1f MB (built in %.0f ms), wide BVH %.1f MB, scene made in %.0f ms\n",
                    loaded.scene.name.c_str(), static_cast<unsigned long long>(facts.triangles), facts.bvhBytes / 1e6,
-                   facts.bvhBuildMs, facts.sceneLoadMs);
+                   facts.bvhBuildMs, facts.wideBvhBytes / 1e6, facts.sceneLoadMs);
       // The reference and the error curve depend on the path length: made again for each bounce count.
       uint32_t referenceBounces = 0;
       std::vector<glm::vec3> reference;

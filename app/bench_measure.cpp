@@ -96,6 +96,8 @@ SceneFacts sceneFactsOf(const GpuSceneData& scene, double sceneLoadMs, double tr
   f.triangles = scene.triangleCount();
   f.bvhNodes = scene.bvhStats().nodeCount;
   f.bvhBytes = f.bvhNodes * sizeof(gpu::BvhNode) + f.triangles * sizeof(gpu::GpuTriangle);
+  f.wideBvhNodes = scene.wideBvhStats().nodeCount;
+  f.wideBvhBytes = scene.wideBvhStats().treeBytes() + f.triangles * sizeof(gpu::GpuTriangle);
   f.sceneBytes = scene.memoryBytes();
   f.bvhBuildMs = scene.bvhStats().buildMs;
   f.sceneLoadMs = sceneLoadMs;
@@ -107,7 +109,8 @@ nlohmann::json toJson(const SceneFacts& f) {
   return {{"triangles", f.triangles},           {"bvh_nodes", f.bvhNodes},
           {"bvh_bytes", f.bvhBytes},            {"scene_bytes", f.sceneBytes},
           {"bvh_build_ms", f.bvhBuildMs},       {"scene_load_ms", f.sceneLoadMs},
-          {"tracer_setup_ms", f.tracerSetupMs}};
+          {"tracer_setup_ms", f.tracerSetupMs}, {"wide_bvh_nodes", f.wideBvhNodes},
+          {"wide_bvh_bytes", f.wideBvhBytes}};
 }
 
 nlohmann::json toJson(const CellResult& r) {

@@ -39,6 +39,10 @@ struct SceneFacts {
   uint64_t triangles = 0;
   uint64_t bvhNodes = 0;
   uint64_t bvhBytes = 0;    // nodes + BVH-order triangles
+  // The wide BVH collapsed from the binary one (Settings::bvh wide), counted alike: nodes, leaf records and
+  // the same BVH-order triangles.
+  uint64_t wideBvhNodes = 0;
+  uint64_t wideBvhBytes = 0;
   uint64_t sceneBytes = 0;  // every scene buffer on the device
   double bvhBuildMs = 0.0;
   double sceneLoadMs = 0.0;

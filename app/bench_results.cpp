@@ -65,6 +65,7 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   row.add("scene_bytes", scene.sceneBytes).add("bvh_build_ms", scene.bvhBuildMs).add("scene_load_ms", scene.sceneLoadMs);
   row.add("tracer_setup_ms", scene.tracerSetupMs).add("sort_bits", s.sortBits).add("learn_every", s.learnEvery);
   row.add("fusion", toString(s.fusion)).add("compaction", toString(s.compaction)).add("trace_shade", toString(s.traceShade));
+  row.add("bvh", toString(s.bvh)).add("wide_bvh_nodes", scene.wideBvhNodes).add("wide_bvh_bytes", scene.wideBvhBytes);
   return row.values();
 }
 
@@ -79,7 +80,8 @@ std::vector<std::string> benchCsvColumns() {
                         "virtual_warp_efficiency_after_first", "prediction_error_mean", "prediction_error_median",
                         "cell_hit_rate", "key_bits", "length_cache_bytes", "final_rel_mse", "sort_policy", "sorted_after",
                         "triangles", "bvh_nodes", "bvh_bytes", "scene_bytes", "bvh_build_ms", "scene_load_ms",
-                        "tracer_setup_ms", "sort_bits", "learn_every", "fusion", "compaction", "trace_shade"})
+                        "tracer_setup_ms", "sort_bits", "learn_every", "fusion", "compaction", "trace_shade", "bvh",
+                        "wide_bvh_nodes", "wide_bvh_bytes"})
     columns.push_back(c);
   return columns;
 }

@@ -46,6 +46,7 @@ std::vector<std::string> readSweepFile(const std::string& path) {
 struct Axes {
   std::vector<std::string> strategies{"all"}, sorts{"radix"}, grids{"auto"}, clamps{"off"}, resets{}, factors{};
   std::vector<std::string> tracers{}, sers{}, serHints{"two-point"};
+  std::vector<std::string> bvhs{};        // --bvhs: empty keeps the render flag's (binary); compute tracer only
   std::vector<std::string> policies{"always"};
   std::vector<std::string> sortBits{};    // --sort-bits-list: empty keeps the render flag's (all bits)
   std::vector<std::string> fusions{};     // --fusions: empty keeps the render flag's (gather)
@@ -174,6 +175,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
     else if (flag == "--gauss-resets") axes.resets = splitList(v);
     else if (flag == "--fixed-factors") axes.factors = splitList(v);
     else if (flag == "--tracers") axes.tracers = splitList(v);
+    else if (flag == "--bvhs") axes.bvhs = splitList(v);
     else if (flag == "--sers") axes.sers = splitList(v);
     else if (flag == "--ser-hints") axes.serHints = splitList(v);
     else if (flag == "--timed-frames") plan.timedFrames = parseUint(flag, v, 1, 10000);
@@ -198,25 +200,33 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
 
   const Settings& base = plan.common.settings;
   if (axes.tracers.empty()) axes.tracers = {toString(base.tracer)};
+  if (axes.bvhs.empty()) axes.bvhs = {toString(base.bvh)};
   if (axes.bounces.empty()) axes.bounces = {std::to_string(base.bounces)};
   // Every group has its megakernel and unsorted cells at least.
-  checkCellCount(plan.cases.size() * axes.bounces.size() * axes.tracers.size() * 2);
+  checkCellCount(plan.cases.size() * axes.bounces.size() * axes.tracers.size() * axes.bvhs.size() * 2);
   auto addCell = [&](BenchCell cell) {
     plan.cells.push_back(std::move(cell));
     checkCellCount(plan.cells.size());
   };
   for (size_t ci = 0; ci < plan.cases.size(); ++ci) {
-    // One group of cells per bounce count and tracer; the runner renders a reference per bounce count.
+    // One group of cells per bounce count, tracer and BVH layout (the compute tracer's; the rt tracer has one
+    // group); the runner renders a reference per bounce count.
     std::vector<Settings> groups;
     for (const std::string& bounces : axes.bounces)
-      for (const std::string& tracer : axes.tracers) groups.push_back(withFlag(withFlag(base, "--bounces", bounces), "--tracer", tracer));
+      for (const std::string& tracer : axes.tracers)
+        for (const std::string& bvh : axes.bvhs) {
+          Settings g = withFlag(withFlag(withFlag(base, "--bounces", bounces), "--tracer", tracer), "--bvh", bvh);
+          if (g.tracer == Tracer::Rt && bvh != axes.bvhs.front()) continue;
+          groups.push_back(g);
+        }
     for (const Settings& group : groups) {
       Settings caseBase = group;
       caseBase.scene = plan.cases[ci].scene;
       caseBase.view = plan.cases[ci].view;
       caseBase.ser = Ser::Off;
-      // Labels of rt cells start with "rt "; the compute tracer's keep their names.
-      const std::string prefix = caseBase.tracer == Tracer::Rt ? "rt " : "";
+      // Labels of rt cells start with "rt ", those of the wide BVH with "wide "; the binary compute tracer's
+      // keep their names.
+      const std::string prefix = caseBase.tracer == Tracer::Rt ? "rt " : caseBase.bvh == BvhLayout::Wide ? "wide " : "";
       // Baselines first: the megakernel and the unsorted wavefront are in every sweep.
       Settings mega = caseBase;
       mega.kernel = Kernel::Megakernel;
@@ -319,6 +329,8 @@ std::string benchHelp() {
          "  --gauss-resets 20,inf     Gaussian reset thresholds to sweep\n"
          "  --fixed-factors 0.5,0.25  fixed-length factors to sweep (every strategy that reads the fixed length)\n"
          "  --tracers compute,rt      tracers to sweep (default: --tracer's); rt labels start with \"rt \"\n"
+         "  --bvhs binary,wide        the compute tracer's BVH layouts to sweep (default: --bvh's); wide\n"
+         "                            labels start with \"wide \"\n"
          "  --sers on,hint            SER cells of the rt megakernel (by hit; by hit with a key hint)\n"
          "  --ser-hints two-point,... key strategies whose keys make the SER hint (default two-point)\n"
          "  --timed-frames N          measured frames per cell (default 8)\n"

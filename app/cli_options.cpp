@@ -104,6 +104,7 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       {"--exposure", [&](const std::string& v) { s.exposure = parseFloat("--exposure", v, 0.0f, L::kMaxExposure); }},
       {"--kernel", [&](const std::string& v) { s.kernel = parseEnum("--kernel", v, &parseKernel, "wavefront|megakernel"); }},
       {"--tracer", [&](const std::string& v) { s.tracer = parseEnum("--tracer", v, &parseTracer, "compute|rt"); }},
+      {"--bvh", [&](const std::string& v) { s.bvh = parseEnum("--bvh", v, &parseBvhLayout, "binary|wide"); }},
       {"--ser", [&](const std::string& v) { s.ser = parseEnum("--ser", v, &parseSer, "off|on|hint"); }},
       {"--strategy", [&](const std::string& v) { s.strategy = parseEnum("--strategy", v, &parseKeyStrategy, keyStrategyNames()); }},
       {"--sort", [&](const std::string& v) { s.sort = parseEnum("--sort", v, &parseSortAlgorithm, "none|bitonic|radix|tile"); }},
@@ -174,6 +175,8 @@ std::string commonOptionsHelp() {
          "  --seed N               random seed (default 1)\n"
          "  --kernel wavefront|megakernel\n"
          "  --tracer compute|rt    our BVH in compute shaders (default), or VK_KHR_ray_tracing_pipeline\n"
+         "  --bvh binary|wide      compute tracer: the binary BVH (default) or the compressed 8-wide one\n"
+         "                         collapsed from it (quantized child boxes, as CWBVH)\n"
          "  --ser off|on|hint      rt megakernel: Shader Execution Reordering by hit, or by hit with the\n"
          "                         top bits of --strategy's key as coherence hint (needs a strategy)\n"
          "  --strategy " + keyStrategyNames() + "\n"

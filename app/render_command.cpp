@@ -85,8 +85,9 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
   // A sidecar's moved camera has no name: viewpointLabel says where it stands instead.
   const std::string view = viewpointLabel(loaded.view);
   const std::string where = loaded.scene.name + (loaded.view.name.empty() ? ", " : "/") + view;  // temple/alley
-  std::fprintf(stderr, "raylab: %s, %u triangles, BVH %u nodes in %.1f ms\n", where.c_str(),
-               tracer.scene().triangleCount(), tracer.scene().bvhStats().nodeCount, tracer.scene().bvhStats().buildMs);
+  std::fprintf(stderr, "raylab: %s, %u triangles, BVH %u nodes in %.1f ms, wide BVH %u nodes (%s traversed)\n",
+               where.c_str(), tracer.scene().triangleCount(), tracer.scene().bvhStats().nodeCount,
+               tracer.scene().bvhStats().buildMs, tracer.scene().wideBvhStats().nodeCount, toString(s.bvh).c_str());
 
   nlohmann::json frames = nlohmann::json::array();
   double gpuMs = 0.0, wallMs = 0.0;
@@ -123,6 +124,9 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
                           {"triangles", tracer.scene().triangleCount()},
                           {"bvh_nodes", tracer.scene().bvhStats().nodeCount},
                           {"bvh_build_ms", tracer.scene().bvhStats().buildMs},
+                          {"wide_bvh_nodes", tracer.scene().wideBvhStats().nodeCount},
+                          {"wide_bvh_leaves", tracer.scene().wideBvhStats().leafCount},
+                          {"wide_bvh_tree_bytes", tracer.scene().wideBvhStats().treeBytes()},
                           {"settings", toJson(s)},
                           {"heatmap", toJson(heat)},
                           {"total_gpu_ms", gpuMs},

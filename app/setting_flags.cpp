@@ -25,6 +25,7 @@ const std::map<std::string, Copy>& fieldsOfFlag() {
       {"exposure", [](Settings& t, const Settings& f) { t.exposure = f.exposure; }},
       {"kernel", [](Settings& t, const Settings& f) { t.kernel = f.kernel; }},
       {"tracer", [](Settings& t, const Settings& f) { t.tracer = f.tracer; }},
+      {"bvh", [](Settings& t, const Settings& f) { t.bvh = f.bvh; }},
       {"ser", [](Settings& t, const Settings& f) { t.ser = f.ser; }},
       {"strategy", [](Settings& t, const Settings& f) { t.strategy = f.strategy; }},
       {"sort", [](Settings& t, const Settings& f) { t.sort = f.sort; }},

@@ -11,6 +11,17 @@ float triangleArea(const Triangle& t) { return 0.5f * glm::length(glm::cross(t.v
 
 }  // namespace
 
+std::vector<gpu::GpuTriangle> bvhOrderTriangles(const std::vector<Triangle>& triangles,
+                                                const std::vector<uint32_t>& triangleOrder) {
+  std::vector<gpu::GpuTriangle> tris;
+  tris.reserve(triangleOrder.size());
+  for (uint32_t src : triangleOrder) {
+    const Triangle& t = triangles[src];
+    tris.push_back({t.v[0], t.material, t.v[1] - t.v[0], src, t.v[2] - t.v[0], triangleArea(t)});
+  }
+  return tris;
+}
+
 EmitterTable buildEmitterTable(const Scene& scene, const std::vector<uint32_t>& triangleOrder) {
   EmitterTable table;
   double total = 0.0;
@@ -41,16 +52,16 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene) {
     if (t.material >= scene.materials.size()) throw SceneLoadError(scene.name + ": triangle material out of range");
   Bvh bvh = buildBvh(scene.triangles);
   bvhStats_ = bvh.stats;
+  const BvhWide wide = collapseBvh(bvh);
+  wideStats_ = wide.stats;
   bounds_ = scene.bounds();
   triangleCount_ = static_cast<uint32_t>(scene.triangles.size());
 
-  std::vector<gpu::GpuTriangle> tris;
+  const std::vector<gpu::GpuTriangle> tris = bvhOrderTriangles(scene.triangles, bvh.triangleOrder);
   std::vector<gpu::GpuTriangleUv> uvs;
-  tris.reserve(bvh.triangleOrder.size());
   uvs.reserve(scene.triangles.size());
   for (uint32_t src : bvh.triangleOrder) {
     const Triangle& t = scene.triangles[src];
-    tris.push_back({t.v[0], t.material, t.v[1] - t.v[0], src, t.v[2] - t.v[0], triangleArea(t)});
     bvhOrderVertices_.insert(bvhOrderVertices_.end(), {t.v[0], t.v[1], t.v[2]});
   }
   bool hasUvs = false;
@@ -82,6 +93,9 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene) {
     return buffers_.back().address();
   };
   block_.nodes = add(bvh.nodes);
+  block_.wideNodes = add(wide.nodes);
+  block_.wideLeaves = add(wide.leaves);
+  block_.bvhLayout = RL_BVH_BINARY;  // PathTracer sets it per frame from Settings::bvh
   block_.triangles = add(tris);
   block_.uvs = add(uvs);
   block_.materials = add(materials);

@@ -1,10 +1,11 @@
-// A scene on the GPU: its BVH, triangles in BVH order, materials, textures and the emitter CDF, plus the
+// A scene on the GPU: its BVH (binary and wide), triangles in BVH order, materials, textures and the emitter CDF, plus the
 // GpuScene block of addresses the shaders read.
 #pragma once
 
 #include <vector>
 
 #include "renderer/bvh.h"
+#include "renderer/bvh_wide.h"
 #include "renderer/vk/gpu_buffer.h"
 #include "scenes/scene.h"
 #include "shaders/shared_types.h"
@@ -19,6 +20,8 @@ class GpuSceneData {
 
   const gpu::GpuScene& block() const { return block_; }
   const BvhBuildStats& bvhStats() const { return bvhStats_; }
+  // The wide BVH collapsed from the binary one; both are on the GPU (Settings::bvh picks one per frame).
+  const BvhWideStats& wideBvhStats() const { return wideStats_; }
   const Bounds& bounds() const { return bounds_; }
   uint32_t triangleCount() const { return triangleCount_; }
   uint32_t emitterCount() const { return block_.emitterCount; }
@@ -31,10 +34,16 @@ class GpuSceneData {
   std::vector<GpuBuffer> buffers_;
   gpu::GpuScene block_{};
   BvhBuildStats bvhStats_;
+  BvhWideStats wideStats_;
   Bounds bounds_;
   uint32_t triangleCount_ = 0;
   std::vector<glm::vec3> bvhOrderVertices_;
 };
+
+// The triangles as the shaders read them (v0 and two edges), in BVH order: uploaded, and read by the CPU
+// twin of the traversal (renderer/bvh_traverse_cpu.h).
+std::vector<gpu::GpuTriangle> bvhOrderTriangles(const std::vector<Triangle>& triangles,
+                                                const std::vector<uint32_t>& triangleOrder);
 
 // Light-sampling tables of a scene, exposed for tests: emitter triangles (BVH order) with their CDF over
 // emitted power, and each material's area pdf scale.

@@ -156,6 +156,7 @@ void PathTracer::recordFrameBlock(VkCommandBuffer cmd) {
   frame.camera = makeGpuCamera(camera_, settings_.width, settings_.height);
   frame.scene = scene_->block();
   frame.scene.tlas = usesRt() ? rt_->tlasAddress() : 0;
+  frame.scene.bvhLayout = settings_.bvh == BvhLayout::Wide ? RL_BVH_WIDE : RL_BVH_BINARY;
   frame.keyParams = settings_.sorts() ? pathSorter_->keys().paramsAddress() : 0;
   frame.width = settings_.width;
   frame.height = settings_.height;

@@ -26,6 +26,7 @@ const std::pair<SortPolicy, const char*> kPolicyNames[] = {
     {SortPolicy::Always, "always"}, {SortPolicy::Never, "never"}, {SortPolicy::Auto, "auto"}};
 const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},
                                                        {Kernel::Megakernel, "megakernel"}};
+const std::pair<BvhLayout, const char*> kBvhLayoutNames[] = {{BvhLayout::Binary, "binary"}, {BvhLayout::Wide, "wide"}};
 const std::pair<Tracer, const char*> kTracerNames[] = {{Tracer::Compute, "compute"}, {Tracer::Rt, "rt"}};
 const std::pair<Ser, const char*> kSerNames[] = {{Ser::Off, "off"}, {Ser::On, "on"}, {Ser::Hint, "hint"}};
 
@@ -90,6 +91,8 @@ std::string toString(Compaction c) { return nameOf(kCompactionNames, c); }
 std::optional<Compaction> parseCompaction(const std::string& n) { return parse(kCompactionNames, n); }
 std::string toString(TraceShade t) { return nameOf(kTraceShadeNames, t); }
 std::optional<TraceShade> parseTraceShade(const std::string& n) { return parse(kTraceShadeNames, n); }
+std::string toString(BvhLayout b) { return nameOf(kBvhLayoutNames, b); }
+std::optional<BvhLayout> parseBvhLayout(const std::string& n) { return parse(kBvhLayoutNames, n); }
 
 std::string keyStrategyNames() {
   std::string s;
@@ -99,9 +102,10 @@ std::string keyStrategyNames() {
 
 bool Settings::requiresAccumulationReset(const Settings& p) const {
   // Key strategy, sort and grid parameters never change the image (the central invariant), so they keep
-  // the accumulation; everything that changes a sample does not.
+  // the accumulation; everything that changes a sample does not. The BVH layout can change which of two
+  // triangles hit at the same distance wins, so an image is accumulated under one layout only.
   return scene != p.scene || view != p.view || width != p.width || height != p.height || bounces != p.bounces ||
-         sppPerFrame != p.sppPerFrame || seed != p.seed;
+         sppPerFrame != p.sppPerFrame || seed != p.seed || bvh != p.bvh;
 }
 
 bool Settings::requiresCacheReset(const Settings& p) const {

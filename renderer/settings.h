@@ -103,6 +103,12 @@ enum class Compaction { None, Shade };
 // The default stays split, the per-stage view the timing panel teaches; use fused for GPU measurements.
 enum class TraceShade { Split, Fused };
 
+// Which BVH the compute tracer walks (GpuScene::bvhLayout): the binary tree or the compressed 8-wide one
+// collapsed from it (renderer/bvh_wide.h). Both index the same BVH-order triangles; the wide traversal may pick
+// another of two triangles hit at the same t, so switching restarts the image (and the invariant holds within
+// one layout). The rt tracer ignores it. A traversal step counts a node of the chosen layout (docs).
+enum class BvhLayout { Binary, Wide };
+
 const std::vector<KeyStrategy>& allKeyStrategies();
 std::string toString(KeyStrategy s);
 std::string toString(SortAlgorithm s);
@@ -123,6 +129,8 @@ std::string toString(Compaction c);
 std::optional<Compaction> parseCompaction(const std::string& name);
 std::string toString(TraceShade t);
 std::optional<TraceShade> parseTraceShade(const std::string& name);
+std::string toString(BvhLayout b);
+std::optional<BvhLayout> parseBvhLayout(const std::string& name);
 std::string keyStrategyNames();  // "none|dead-last|fixed|..."
 std::string toString(HeatmapView v);
 std::string toString(HeatmapKeyColour c);
@@ -174,6 +182,7 @@ struct Settings {
   float exposure = 1.0f;
   Kernel kernel = Kernel::Wavefront;
   Tracer tracer = Tracer::Compute;
+  BvhLayout bvh = BvhLayout::Binary;  // compute tracer only
   Ser ser = Ser::Off;  // rt tracer's megakernel only
 
   // Reordering

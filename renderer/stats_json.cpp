@@ -22,6 +22,7 @@ json toJson(const Settings& s) {
       {"exposure", s.exposure},
       {"kernel", toString(s.kernel)},
       {"tracer", toString(s.tracer)},
+      {"bvh", toString(s.bvh)},
       {"ser", toString(s.ser)},
       {"strategy", toString(s.strategy)},
       {"sort", toString(s.sort)},
@@ -113,6 +114,8 @@ Settings settingsFromJson(const json& j) {
     s.fusion = optionalEnum(j, "fusion", Fusion::None, &parseFusion, "none, keys, gather or both");
     s.compaction = optionalEnum(j, "compaction", Compaction::None, &parseCompaction, "none or shade");
     s.traceShade = optionalEnum(j, "trace_shade", TraceShade::Split, &parseTraceShade, "split or fused");
+    // Before the wide BVH every sidecar's compute tracer walked the binary tree.
+    s.bvh = optionalEnum(j, "bvh", BvhLayout::Binary, &parseBvhLayout, "binary or wide");
     const json& grid = need("grid");
     if (grid.is_string() && grid.get<std::string>() != "auto")
       throw SettingsError("settings: 'grid' must be \"auto\" or [x, y, z], got " + grid.dump());

@@ -1,6 +1,8 @@
 // Closest-hit and any-hit BVH traversal shared by the trace stage, the megakernel, shadow rays and the
-// oracle key. Stack-based, nearer child first. `steps` counts loop iterations: the per-path work whose
-// spread within a warp is what ray reordering tries to shrink.
+// oracle key: the binary tree here, the wide one in bvh_traverse_wide.glsl, chosen by GpuScene::bvhLayout.
+// Stack-based, nearer child first. `steps` counts loop iterations, one node visited each (a binary node here;
+// a wide node or a leaf in the wide traversal): the per-path work whose spread within a warp is what ray
+// reordering tries to shrink.
 #ifndef RAYLAB_BVH_TRAVERSE_GLSL
 #define RAYLAB_BVH_TRAVERSE_GLSL
 
@@ -105,12 +107,21 @@ HitRecord traverseBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool an
   return hit;
 }
 
+#include "bvh_traverse_wide.glsl"
+
+// The layout is GpuScene::bvhLayout (Settings::bvh), the same for every invocation of a dispatch: a uniform
+// branch, no divergence.
+HitRecord traverseSceneBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool anyHit) {
+  if (scene.bvhLayout == RL_BVH_WIDE) return traverseBvhWide(scene, origin, dir, tMax, anyHit);
+  return traverseBvh(scene, origin, dir, tMax, anyHit);
+}
+
 HitRecord traceClosest(GpuScene scene, vec3 origin, vec3 dir, float tMax) {
-  return traverseBvh(scene, origin, dir, tMax, false);
+  return traverseSceneBvh(scene, origin, dir, tMax, false);
 }
 
 bool occluded(GpuScene scene, vec3 origin, vec3 dir, float tMax) {
-  return traverseBvh(scene, origin, dir, tMax, true).t > 0.0;
+  return traverseSceneBvh(scene, origin, dir, tMax, true).t > 0.0;
 }
 
 #endif

@@ -78,6 +78,35 @@ struct BvhNode {
   uint triCount;
 };
 
+// Compressed 8-wide BVH node (renderer/bvh_wide.h collapses the binary tree into these; traversal in
+// shaders/bvh_traverse_wide.glsl), after Ylitie, Karras and Laine (HPG 2017): up to 8 children whose boxes are
+// quantized to 8 bits per plane against the node's `origin` and a power-of-two scale per axis, so a child's box
+// is origin + q * 2^e (rounded outwards when built: it always contains the child's exact box). A child slot is
+// empty, an interior node or a leaf (a contiguous range of BVH-order triangles, a BvhWideLeaf). Interior
+// children are consecutive nodes from `childBase` in slot order, leaf children consecutive BvhWideLeaf records
+// from `leafBase` in slot order, so a child's index is its base plus the number of slots of its kind below it.
+// Slots are assigned by direction (slot s holds the child lying most towards the corner whose axis k is
+// positive where bit k of s is set), so visiting slots in the order i ^ octant(ray) is roughly nearest first.
+struct BvhWideNode {
+  vec3 origin;
+  uint exponents;  // byte k: the biased exponent (IEEE bits 23..30) of axis k's scale 2^e; byte 3 unused
+  uint childBase;  // first interior child (index into the wide node array)
+  uint leafBase;   // first leaf child (index into the BvhWideLeaf array)
+  uint masks;      // byte 0: slots holding interior children, byte 1: slots holding leaves
+  uint pad0;
+  uint qlo[6];     // 8-bit lower planes: byte (s & 3) of word 2 * axis + (s >> 2) is slot s's
+  uint qhi[6];     // 8-bit upper planes, the same packing
+};
+// A leaf child of a wide node: triangles first .. first + count - 1 in BVH order.
+struct BvhWideLeaf {
+  uint first;
+  uint count;
+};
+#define RL_BVH_WIDTH 8u
+// GpuScene::bvhLayout: which tree traceClosest and occluded walk (Settings::bvh).
+#define RL_BVH_BINARY 0u
+#define RL_BVH_WIDE 1u
+
 // Triangle in BVH order, stored for Moeller-Trumbore: v0 and the two edges.
 struct GpuTriangle {
   vec3 v0;
@@ -131,6 +160,8 @@ struct GpuCamera {
 
 #ifndef __cplusplus
 layout(buffer_reference, scalar) buffer BvhNodeBuf { BvhNode v[]; };
+layout(buffer_reference, scalar) buffer BvhWideNodeBuf { BvhWideNode v[]; };
+layout(buffer_reference, scalar) buffer BvhWideLeafBuf { BvhWideLeaf v[]; };
 layout(buffer_reference, scalar) buffer TriangleBuf { GpuTriangle v[]; };
 layout(buffer_reference, scalar) buffer TriangleUvBuf { GpuTriangleUv v[]; };
 layout(buffer_reference, scalar) buffer MaterialBuf { GpuMaterial v[]; };
@@ -156,6 +187,13 @@ struct GpuScene {
   uint hasUvs;
   vec3 skyColor;
   float skyLightProbability;  // chance that next-event estimation samples the sky rather than a triangle
+  // The wide BVH over the same BVH-order triangles (both trees are uploaded) and which one the traversal
+  // walks: RL_BVH_BINARY or RL_BVH_WIDE, set per frame from Settings::bvh. A uniform branch in traceClosest
+  // and occluded rather than a specialization constant: one pipeline per stage as before.
+  RL_REF(BvhWideNodeBuf) wideNodes;
+  RL_REF(BvhWideLeafBuf) wideLeaves;
+  uint bvhLayout;
+  uint pad0;
   RL_ADDRESS tlas;            // top-level acceleration structure of the rt tracer (0 with the compute tracer)
 };
 

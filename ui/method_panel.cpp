@@ -100,6 +100,12 @@ void drawPipelineSection(Settings& s, ViewOptions& view) {
   } else {
     comboSetting("tracer", s, &Settings::tracer, {Tracer::Compute, Tracer::Rt});
   }
+  // The layout the compute tracer walks; the rt tracer keeps the setting but has its own structure.
+  ImGui::BeginDisabled(s.tracer != Tracer::Compute);
+  comboSetting("BVH", s, &Settings::bvh, {BvhLayout::Binary, BvhLayout::Wide});
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("binary, or compressed 8-wide (quantized child boxes, as CWBVH); a new image (compute tracer only)");
   if (!view.serUnavailable.empty()) {
     unavailableLine(("SER: " + toString(s.ser) + " (unavailable)").c_str(), view.serUnavailable);
   } else {

@@ -33,6 +33,7 @@ MethodKey methodKeyOf(const Settings& s) {
   MethodKey k;
   k.kernel = s.kernel;
   k.tracer = s.tracer;
+  if (s.tracer == Tracer::Compute) k.bvh = s.bvh;  // another trace, another method; rt has its own structure
   if (s.kernel == Kernel::Megakernel) {
     k.baseline = Baseline::Megakernel;
     if (s.reordersInHardware()) k.ser = s.ser;
@@ -66,7 +67,7 @@ MethodKey methodKeyOf(const Settings& s) {
 }
 
 std::string describe(const MethodKey& k) {
-  std::string tracer = k.tracer == Tracer::Rt ? " rt" : "";
+  std::string tracer = std::string(k.tracer == Tracer::Rt ? " rt" : "") + (k.bvh == BvhLayout::Wide ? " wide" : "");
   // The wavefront's own options where they differ from the default (unsorted and sorted alike).
   const std::string wavefront = (k.compaction != Settings{}.compaction ? " compaction " + toString(k.compaction) : "") +
                                 (k.traceShade != Settings{}.traceShade ? " trace-shade " + toString(k.traceShade) : "");

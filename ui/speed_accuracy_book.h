@@ -25,6 +25,7 @@ struct MethodKey {
   Baseline baseline = Baseline::None;
   Kernel kernel = Kernel::Wavefront;
   Tracer tracer = Tracer::Compute;
+  BvhLayout bvh = Settings{}.bvh;  // Settings::bvh with the compute tracer (the default with rt)
   Ser ser = Ser::Off;
   KeyStrategy strategy = KeyStrategy::None;
   SortAlgorithm sort = SortAlgorithm::None;

@@ -47,10 +47,14 @@ TEST(SettingsValidation, DefaultsAndTheirJsonAreValid) {
   EXPECT_EQ(settingsFromJson(old).compaction, Compaction::None);
   old.erase("trace_shade");  // ... and before Settings::traceShade, trace and shade were always apart
   EXPECT_EQ(settingsFromJson(old).traceShade, TraceShade::Split);
+  old.erase("bvh");  // ... and before Settings::bvh, the compute tracer walked the binary tree
+  EXPECT_EQ(settingsFromJson(old).bvh, BvhLayout::Binary);
   Settings packed;
   packed.compaction = Compaction::None;
   packed.traceShade = TraceShade::Fused;
+  packed.bvh = BvhLayout::Wide;
   EXPECT_EQ(settingsFromJson(toJson(packed)), packed);
+  EXPECT_EQ(toJson(packed).at("bvh"), "wide");
 }
 
 TEST(SettingsValidation, HostileSidecarValuesAreRefusedLikeTheCommandLine) {
@@ -69,6 +73,7 @@ TEST(SettingsValidation, HostileSidecarValuesAreRefusedLikeTheCommandLine) {
   EXPECT_EQ(jsonError("fusion", "sideways"), "settings: 'fusion' must be none, keys, gather or both, got \"sideways\"");
   EXPECT_EQ(jsonError("compaction", "always"), "settings: 'compaction' must be none or shade, got \"always\"");
   EXPECT_EQ(jsonError("trace_shade", "both"), "settings: 'trace_shade' must be split or fused, got \"both\"");
+  EXPECT_EQ(jsonError("bvh", "bogus"), "settings: 'bvh' must be binary or wide, got \"bogus\"");
   // The tile sort needs the finished paths packed out first: refused without compaction, with keys made in
   // shade (which does not compact) and on the rt tracer; fine where nothing sorts.
   Settings tile;

@@ -29,8 +29,17 @@ static_assert(sizeof(GpuTextureInfo) == 16);
 static_assert(sizeof(GpuEmitter) == 8);
 static_assert(sizeof(GpuCamera) == 64);
 static_assert(offsetof(GpuCamera, up) == 48);
-static_assert(sizeof(GpuScene) == 7 * 8 + 8 + 16 + 8);  // + the TLAS address (uvec2 in GLSL)
-static_assert(offsetof(GpuScene, tlas) == 80);
+static_assert(sizeof(BvhWideNode) == 80);  // CWBVH's node size
+static_assert(offsetof(BvhWideNode, exponents) == 12);
+static_assert(offsetof(BvhWideNode, masks) == 24);
+static_assert(offsetof(BvhWideNode, qlo) == 32);
+static_assert(offsetof(BvhWideNode, qhi) == 56);
+static_assert(sizeof(BvhWideLeaf) == 8);
+// + the wide BVH's two addresses, its layout word and pad, + the TLAS address (uvec2 in GLSL)
+static_assert(sizeof(GpuScene) == 7 * 8 + 8 + 16 + 2 * 8 + 8 + 8);
+static_assert(offsetof(GpuScene, wideNodes) == 80);
+static_assert(offsetof(GpuScene, bvhLayout) == 96);
+static_assert(offsetof(GpuScene, tlas) == 104);
 static_assert(sizeof(GpuPathState) == 3 * 8);  // three 16-byte elements a path (RL_STATE_*)
 static_assert(sizeof(GpuHits) == 4 * 8);
 static_assert(offsetof(GpuFrame, scene) == 64);

@@ -279,5 +279,23 @@ TEST(SpeedAccuracyBook, CompactionIsAMethodWhereTheTracerCompacts) {
   EXPECT_EQ(key(mega, Compaction::Shade), key(mega, Compaction::None));
 }
 
+// The BVH layout is a method of its own with the compute tracer (another trace), for every kernel; the rt
+// tracer walks its own structure, so there it splits no point.
+TEST(SpeedAccuracyBook, BvhLayoutIsAMethodOfTheComputeTracer) {
+  auto key = [](Settings s, BvhLayout bvh) {
+    s.bvh = bvh;
+    return methodKeyOf(s);
+  };
+  Settings unsorted, sortedAlways = sorted(KeyStrategy::TwoPoint), mega;
+  mega.kernel = Kernel::Megakernel;
+  EXPECT_EQ(describe(key(unsorted, BvhLayout::Binary)), "unsorted");  // the default
+  EXPECT_EQ(describe(key(unsorted, BvhLayout::Wide)), "unsorted wide");
+  EXPECT_EQ(describe(key(mega, BvhLayout::Wide)), "megakernel wide");
+  EXPECT_NE(key(sortedAlways, BvhLayout::Binary), key(sortedAlways, BvhLayout::Wide));
+  Settings rt = unsorted;
+  rt.tracer = Tracer::Rt;
+  EXPECT_EQ(key(rt, BvhLayout::Binary), key(rt, BvhLayout::Wide));
+}
+
 }  // namespace
 }  // namespace raylab

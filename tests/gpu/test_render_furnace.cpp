@@ -10,10 +10,10 @@
 
 namespace raylab::test {
 
-class FurnaceTest : public GpuTest, public ::testing::WithParamInterface<std::tuple<float, float, uint32_t, Kernel>> {};
+class FurnaceTest : public GpuTest, public ::testing::WithParamInterface<std::tuple<float, float, uint32_t, Kernel, BvhLayout>> {};
 
 TEST_P(FurnaceTest, MeanMatchesAnalyticValue) {
-  auto [albedo, emission, bounces, kernel] = GetParam();
+  auto [albedo, emission, bounces, kernel, bvh] = GetParam();
   Scene scene = makeFurnace(albedo, emission, 3);
   Settings s;
   s.width = 48;
@@ -22,6 +22,7 @@ TEST_P(FurnaceTest, MeanMatchesAnalyticValue) {
   s.sppPerFrame = 4;
   s.frames = 4;
   s.kernel = kernel;
+  s.bvh = bvh;
   std::vector<glm::vec3> img = renderRadiance(ctx(), scene, s, scene.viewpoints.front());
   double expected = 0.0;
   for (uint32_t k = 0; k < bounces; ++k) expected += emission * std::pow(albedo, double(k));
@@ -33,9 +34,12 @@ TEST_P(FurnaceTest, MeanMatchesAnalyticValue) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Furnace, FurnaceTest,
-                         ::testing::Values(std::make_tuple(0.5f, 0.5f, 4u, Kernel::Wavefront),
-                                           std::make_tuple(0.8f, 0.25f, 8u, Kernel::Wavefront),
-                                           std::make_tuple(0.5f, 0.5f, 4u, Kernel::Megakernel),
-                                           std::make_tuple(0.3f, 1.0f, 1u, Kernel::Wavefront)));
+                         ::testing::Values(std::make_tuple(0.5f, 0.5f, 4u, Kernel::Wavefront, BvhLayout::Binary),
+                                           std::make_tuple(0.8f, 0.25f, 8u, Kernel::Wavefront, BvhLayout::Binary),
+                                           std::make_tuple(0.5f, 0.5f, 4u, Kernel::Megakernel, BvhLayout::Binary),
+                                           std::make_tuple(0.3f, 1.0f, 1u, Kernel::Wavefront, BvhLayout::Binary),
+                                           // The wide BVH: every ray inside the closed sphere must hit it.
+                                           std::make_tuple(0.8f, 0.25f, 8u, Kernel::Wavefront, BvhLayout::Wide),
+                                           std::make_tuple(0.5f, 0.5f, 4u, Kernel::Megakernel, BvhLayout::Wide)));
 
 }  // namespace raylab::test

@@ -259,6 +259,48 @@ TEST_P(SortInvariant, SteppedFramesKeepDetailedStatistics) {
   }
 }
 
+// The invariant on the wide BVH (Settings::bvh wide): every key strategy (the oracle traces the wide tree
+// too) with the radix sort, the bitonic and tile sorts and every sort policy with one strategy, fused
+// trace+shade and the megakernel's own unsorted image aside, render the unsorted wide image bit for bit. One
+// case per strategy, not per sort, so it adds about a third of the parameterised test above, not its double.
+class SortInvariantWide : public GpuTest {};
+
+TEST_F(SortInvariantWide, EveryStrategySortAndPolicyRendersTheUnsortedWideImage) {
+  const VulkanContext& context = ctx();
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("hall");
+  Settings base = smallFrame(37, 19, 4);
+  base.bvh = BvhLayout::Wide;
+  base.sppPerFrame = 2;
+  base.frames = 2;  // the second frame uses what adaptive caches learned in the first
+  const std::vector<glm::vec3> unsorted = renderRadiance(context, scene, base, view);
+  ASSERT_GT(moments(unsorted).mean, 0.0);
+  std::vector<std::pair<std::string, Settings>> cases;
+  for (KeyStrategy strategy : allKeyStrategies()) {
+    if (strategy == KeyStrategy::None) continue;
+    Settings s = base;
+    s.strategy = strategy;
+    s.sort = SortAlgorithm::Radix;
+    cases.push_back({toString(strategy) + " radix", s});
+  }
+  for (SortAlgorithm sort : {SortAlgorithm::Bitonic, SortAlgorithm::Tile})
+    for (SortPolicy policy : {SortPolicy::Always, SortPolicy::Never, SortPolicy::Auto}) {
+      Settings s = base;
+      s.strategy = KeyStrategy::TwoPoint;
+      s.sort = sort;
+      s.sortPolicy = policy;
+      cases.push_back({"two-point " + toString(sort) + " " + toString(policy), s});
+    }
+  Settings fused = base;
+  fused.traceShade = TraceShade::Fused;
+  fused.strategy = KeyStrategy::Average;
+  cases.push_back({"average, trace+shade fused", fused});
+  for (const auto& [what, s] : cases) {
+    ASSERT_TRUE(s.sorts()) << what;
+    expectSameImage(renderRadiance(context, scene, s, view), unsorted, what + " on the wide BVH");
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Sorts, SortInvariant, ::testing::Values(SortAlgorithm::Radix, SortAlgorithm::Bitonic),
                          [](const auto& info) { return toString(info.param); });
 

@@ -65,6 +65,13 @@ TEST_F(ValidationSubset, CompactionFusionsAndTraceShade) {
   Settings megakernel = tiny();
   megakernel.kernel = Kernel::Megakernel;
   render(megakernel, "megakernel");
+  // The wide BVH's traversal in the trace stage, shadow rays, the oracle key and the megakernel.
+  Settings wide = tiny();
+  wide.bvh = BvhLayout::Wide;
+  wide.strategy = KeyStrategy::Oracle;
+  render(wide, "wide BVH, oracle key");
+  wide.kernel = Kernel::Megakernel;
+  render(wide, "wide BVH megakernel");
 }
 
 TEST_F(ValidationSubset, EveryHeatmapView) {

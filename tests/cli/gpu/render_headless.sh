@@ -28,3 +28,21 @@ assert 1 < frames < 100000, frames
 print('ok: time budget', frames, 'frames')
 PY
 grep -q "accumulating for 1.5 s" <<<"$out" || { echo "FAIL: no budget message"; echo "$out"; exit 1; }
+
+# --bvh wide renders with the wide BVH: the stats say so, give its size, and count its own (fewer) steps per
+# camera ray than the binary tree's for the same frame (tests/gpu/test_bvh_wide_render.cpp compares the images).
+for bvh in binary wide; do
+  RAYLAB_VALIDATE=1 "$raylab" render --bvh $bvh --scene temple --view hall --size 33x17 --out "$dir/$bvh.png" \
+    --stats "$dir/$bvh.json" >/dev/null
+done
+python3 - "$dir/binary.json" "$dir/wide.json" <<'PY'
+import json, sys
+b, w = (json.load(open(p)) for p in sys.argv[1:3])
+assert b['settings']['bvh'] == 'binary' and w['settings']['bvh'] == 'wide', (b['settings']['bvh'], w['settings']['bvh'])
+assert 0 < w['wide_bvh_nodes'] < w['bvh_nodes'], (w['wide_bvh_nodes'], w['bvh_nodes'])
+assert w['wide_bvh_tree_bytes'] > 0
+steps = lambda s: s['frames'][0]['bounces'][0]['mean_traversal_steps']
+assert 0 < steps(w) < 0.7 * steps(b), (steps(w), steps(b))
+assert w['rays_traced'] == b['rays_traced'] or abs(w['rays_traced'] - b['rays_traced']) < 0.01 * b['rays_traced']
+print('ok: wide BVH, mean camera-ray steps %.2f against binary %.2f' % (steps(w), steps(b)))
+PY

@@ -1,0 +1,85 @@
+// Closest-hit and any-hit traversal of the compressed 8-wide BVH (shared_types.h: BvhWideNode), after Ylitie,
+// Karras and Laine (HPG 2017). Included by bvh_traverse.glsl, whose HitRecord, box and triangle tests it uses;
+// its C++ twin is renderer/bvh_traverse_cpu.cpp (keep the two in step).
+//
+// The stack holds node groups, not nodes: (first child node, the children's interior-slot mask << 8 | a hit
+// mask over visit positions). Visit position i of slot s is s ^ octant(ray), so the lowest set bit is the child
+// nearest in the direction-slot order; one group is pushed per level descended, so the stack never holds more
+// than the tree's depth (BvhWideStats::maxDepth + 1 <= RL_BVH_STACK). Leaves hit at a node are a second group
+// (first leaf record, mask over the node's leaf ranks), tested before the next node is visited.
+//
+// One loop iteration, and one step (HitRecord::steps, RL_TRAVERSAL_STEP()), is one wide node visited (its 8
+// quantized child boxes tested) or one leaf visited (its triangles tested): the binary traversal's step is one
+// binary node (two child boxes) or one leaf. Steps of the two layouts count different work; compare them as
+// what they are, the spread within a warp that reordering shrinks.
+#ifndef RAYLAB_BVH_TRAVERSE_WIDE_GLSL
+#define RAYLAB_BVH_TRAVERSE_WIDE_GLSL
+
+uint wideByte(uint word, uint slot) { return (word >> ((slot & 3u) * 8u)) & 0xFFu; }
+
+HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool anyHit) {
+  HitRecord hit;
+  hit.t = -1.0;
+  hit.triangle = 0u;
+  hit.bary = vec2(0.0);
+  hit.steps = 0u;
+  vec3 invDir = safeInverse(dir);
+  uint octant = (dir.x < 0.0 ? 1u : 0u) | (dir.y < 0.0 ? 2u : 0u) | (dir.z < 0.0 ? 4u : 0u);
+  uvec2 stack[RL_BVH_STACK];
+  uint sp = 0u;
+  // A virtual parent whose only child, interior slot 0, is the root: the loop's first visit is the root's.
+  uvec2 nodeGroup = uvec2(0u, (1u << 8) | (1u << octant));
+  uvec2 leafGroup = uvec2(0u);
+  while (true) {
+    if (leafGroup.y != 0u) {
+      hit.steps++;
+      RL_TRAVERSAL_STEP();
+      uint rank = findLSB(leafGroup.y);
+      leafGroup.y &= leafGroup.y - 1u;
+      BvhWideLeaf leaf = scene.wideLeaves.v[leafGroup.x + rank];
+      for (uint i = 0u; i < leaf.count; ++i) {
+        uint index = leaf.first + i;
+        intersectTriangle(scene.triangles.v[index], index, origin, dir, hit, tMax);
+      }
+      if (anyHit && hit.t > 0.0) return hit;
+      continue;
+    }
+    if ((nodeGroup.y & 0xFFu) == 0u) {
+      if (sp == 0u) break;
+      nodeGroup = stack[--sp];
+    }
+    uint position = findLSB(nodeGroup.y & 0xFFu);
+    nodeGroup.y &= ~(1u << position);
+    uint slot = position ^ octant;
+    uint interiorBelow = (nodeGroup.y >> 8) & ((1u << slot) - 1u);
+    uint nodeIndex = nodeGroup.x + bitCount(interiorBelow);
+    if ((nodeGroup.y & 0xFFu) != 0u) stack[sp++] = nodeGroup;  // the siblings still to visit
+
+    hit.steps++;
+    RL_TRAVERSAL_STEP();
+    BvhWideNode n = scene.wideNodes.v[nodeIndex];
+    vec3 scale = vec3(uintBitsToFloat((n.exponents & 0xFFu) << 23), uintBitsToFloat(((n.exponents >> 8) & 0xFFu) << 23),
+                      uintBitsToFloat(((n.exponents >> 16) & 0xFFu) << 23));
+    uint interiorMask = n.masks & 0xFFu;
+    uint leafMask = (n.masks >> 8) & 0xFFu;
+    uint childMask = interiorMask | leafMask;
+    uint nodeHits = 0u;
+    uint leafHits = 0u;
+    for (uint s = 0u; s < RL_BVH_WIDTH; ++s) {
+      if ((childMask & (1u << s)) == 0u) continue;
+      uint word = s >> 2;
+      vec3 qlo = vec3(wideByte(n.qlo[word], s), wideByte(n.qlo[2u + word], s), wideByte(n.qlo[4u + word], s));
+      vec3 qhi = vec3(wideByte(n.qhi[word], s), wideByte(n.qhi[2u + word], s), wideByte(n.qhi[4u + word], s));
+      if (intersectBox(n.origin + qlo * scale, n.origin + qhi * scale, origin, invDir, tMax) >= 1e30) continue;
+      if ((interiorMask & (1u << s)) != 0u)
+        nodeHits |= 1u << (s ^ octant);
+      else
+        leafHits |= 1u << bitCount(leafMask & ((1u << s) - 1u));
+    }
+    nodeGroup = uvec2(n.childBase, (interiorMask << 8) | nodeHits);
+    leafGroup = uvec2(n.leafBase, leafHits);
+  }
+  return hit;
+}
+
+#endif

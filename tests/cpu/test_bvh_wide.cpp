@@ -1,0 +1,276 @@
+// The wide BVH collapsed from the binary one: its structure (every triangle in exactly one leaf, every
+// quantized child box containing the exact box of everything below it, depth within the stack) and its
+// traversal (the C++ twin of shaders/bvh_traverse_wide.glsl) against the binary tree's, ray for ray, on the
+// temple, random triangles and Sponza where ../shared/scenes has it.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+
+#include "renderer/bvh_traverse_cpu.h"
+#include "renderer/bvh_wide.h"
+#include "renderer/gpu_scene.h"
+#include "renderer/path_tracer.h"
+#include "scenes/gltf_loader.h"
+#include "scenes/procedural.h"
+
+namespace raylab {
+namespace {
+
+struct ExactBox {
+  glm::vec3 min{1e30f}, max{-1e30f};
+  void grow(glm::vec3 p) { min = glm::min(min, p), max = glm::max(max, p); }
+  void grow(const ExactBox& b) { min = glm::min(min, b.min), max = glm::max(max, b.max); }
+};
+
+bool inside(const ExactBox& exact, const WideChildBox& q) {
+  return glm::all(glm::lessThanEqual(q.min, exact.min)) && glm::all(glm::greaterThanEqual(q.max, exact.max));
+}
+
+struct WideWalk {
+  const BvhWide& wide;
+  const std::vector<Triangle>& triangles;  // scene order
+  const std::vector<uint32_t>& order;      // BVH position -> scene index
+  std::vector<int> triangleSeen, nodeSeen, leafSeen;
+  uint32_t maxDepth = 0;
+  uint64_t boxes = 0, boxesNotContaining = 0;
+
+  // The exact box of node `index`'s subtree, from its triangles' corners; checks every child's quantized box.
+  ExactBox walk(uint32_t index, uint32_t depth) {
+    nodeSeen.at(index)++;
+    maxDepth = std::max(maxDepth, depth);
+    const gpu::BvhWideNode& n = wide.nodes.at(index);
+    EXPECT_EQ(n.masks & (n.masks >> 8) & 0xFFu, 0u) << "a slot both interior and leaf, node " << index;
+    ExactBox all;
+    for (uint32_t s = 0; s < RL_BVH_WIDTH; ++s) {
+      const WideSlot kind = slotKind(n, s);
+      if (kind == WideSlot::Empty) continue;
+      ExactBox exact;
+      const uint32_t child = slotChildIndex(n, s);
+      if (kind == WideSlot::Interior) {
+        exact = walk(child, depth + 1);
+      } else {
+        const gpu::BvhWideLeaf& leaf = wide.leaves.at(child);
+        leafSeen.at(child)++;
+        EXPECT_GT(leaf.count, 0u);
+        for (uint32_t i = leaf.first; i < leaf.first + leaf.count; ++i) {
+          const uint32_t t = order.at(i);
+          triangleSeen.at(t)++;
+          for (const glm::vec3& v : triangles[t].v) exact.grow(v);
+        }
+      }
+      ++boxes;
+      if (!inside(exact, decodeChildBox(n, s))) ++boxesNotContaining;
+      all.grow(exact);
+    }
+    return all;
+  }
+};
+
+void checkStructure(const std::vector<Triangle>& tris, const Bvh& binary, const BvhWide& wide) {
+  WideWalk w{wide, tris, binary.triangleOrder, std::vector<int>(tris.size(), 0),
+             std::vector<int>(wide.nodes.size(), 0), std::vector<int>(wide.leaves.size(), 0)};
+  w.walk(0, 0);
+  EXPECT_EQ(w.boxesNotContaining, 0u) << "of " << w.boxes << " quantized boxes";
+  for (size_t t = 0; t < tris.size(); ++t) ASSERT_EQ(w.triangleSeen[t], 1) << "triangle " << t;
+  for (size_t i = 0; i < wide.nodes.size(); ++i) ASSERT_EQ(w.nodeSeen[i], 1) << "wide node " << i;
+  for (size_t i = 0; i < wide.leaves.size(); ++i) ASSERT_EQ(w.leafSeen[i], 1) << "leaf " << i;
+  EXPECT_EQ(w.maxDepth, wide.stats.maxDepth);
+  EXPECT_LT(w.maxDepth, uint32_t(RL_BVH_STACK));
+  EXPECT_LE(w.maxDepth, binary.stats.maxDepth);
+  EXPECT_EQ(wide.stats.nodeCount, wide.nodes.size());
+  EXPECT_EQ(wide.stats.leafCount, wide.leaves.size());
+  // The binary tree's leaves, each once; a wide node replaces at least one and at most 7 binary interior nodes.
+  EXPECT_EQ(wide.leaves.size(), binary.stats.leafCount);
+  const uint32_t binaryInterior = binary.stats.nodeCount - binary.stats.leafCount;
+  if (binaryInterior > 0) {
+    EXPECT_LE(wide.nodes.size(), binaryInterior);
+    EXPECT_GE(wide.nodes.size() * 7, binaryInterior);
+  }
+}
+
+struct Ray {
+  glm::vec3 origin, dir;
+};
+
+// Camera rays of every view, rays from points on triangles in random directions (the later bounces), and
+// axis-aligned rays (zero direction components: the slab test's safe inverse).
+std::vector<Ray> testRays(const Scene& scene, uint32_t perView, uint32_t secondary, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<Ray> rays;
+  for (const Viewpoint& v : scene.viewpoints) {
+    const gpu::GpuCamera c = makeGpuCamera(v, 512, 256);
+    for (uint32_t i = 0; i < perView; ++i) {
+      const glm::vec2 ndc(2.0f * u(rng) - 1.0f, 1.0f - 2.0f * u(rng));
+      rays.push_back({c.position, glm::normalize(c.forward + ndc.x * c.tanHalfFovY * c.aspect * c.right +
+                                                 ndc.y * c.tanHalfFovY * c.up)});
+    }
+  }
+  std::uniform_int_distribution<size_t> pick(0, scene.triangles.size() - 1);
+  std::normal_distribution<float> g;
+  for (uint32_t i = 0; i < secondary; ++i) {
+    const Triangle& t = scene.triangles[pick(rng)];
+    float a = u(rng), b = u(rng);
+    if (a + b > 1.0f) a = 1.0f - a, b = 1.0f - b;
+    glm::vec3 dir(g(rng), g(rng), g(rng));
+    if (i % 16 == 0) dir = glm::vec3(0.0f), dir[i / 16 % 3] = (i / 48 % 2) ? 1.0f : -1.0f;
+    if (glm::length(dir) < 1e-6f) dir = glm::vec3(0, 1, 0);
+    const glm::vec3 p = t.v[0] + a * (t.v[1] - t.v[0]) + b * (t.v[2] - t.v[0]);
+    rays.push_back({p + 1e-3f * glm::normalize(dir), glm::normalize(dir)});
+  }
+  return rays;
+}
+
+struct Agreement {
+  uint64_t rays = 0, hits = 0, ties = 0, binaryMisses = 0, checkedByAll = 0, axisAlignedWideMisses = 0;
+  uint64_t closestMismatches = 0, anyHitMismatches = 0;
+  double binarySteps = 0, wideSteps = 0;
+};
+
+bool sameHitT(const CpuHit& a, const CpuHit& b) {
+  if (a.t < 0.0f || b.t < 0.0f) return a.t < 0.0f && b.t < 0.0f;
+  return std::abs(a.t - b.t) <= 1e-5f * std::max(1.0f, a.t);
+}
+
+// Closest hits: the wide tree's equals the binary tree's (the same triangle tests in float: the same t bit for
+// bit when the same triangle wins; another triangle only at t equal within 1e-5 relative, a tie). Where they
+// differ, and for every `allEvery`-th ray, the reference is every triangle tested (intersectAllCpu): the
+// binary tree misses hits on its exact boxes' faces that axis-aligned rays graze, so the wide one must match
+// the reference there. Rays with a zero direction component lying exactly in a box face's plane miss that
+// box in both layouts (the slab test's 0 * 1e20): for them the wide tree must only be no worse than the binary
+// one (its boxes are never smaller). Any hit (shadow rays): occluded with tMax = infinity iff the closest hit exists, with
+// tMax just beyond it (1.001 t) always, and with tMax just before it (0.999 t) only where the reference
+// finds a triangle there too (a tie).
+Agreement compare(const Scene& scene, const Bvh& binary, const BvhWide& wide, const std::vector<Ray>& rays,
+                  uint32_t allEvery) {
+  const std::vector<gpu::GpuTriangle> tris = bvhOrderTriangles(scene.triangles, binary.triangleOrder);
+  Agreement a;
+  for (const Ray& r : rays) {
+    const CpuHit b = traverseBinaryCpu(binary.nodes, tris, r.origin, r.dir, 1e30f, false);
+    const CpuHit w = traverseWideCpu(wide, tris, r.origin, r.dir, 1e30f, false);
+    a.binarySteps += b.steps;
+    a.wideSteps += w.steps;
+    CpuHit reference = b;
+    const bool agree = sameHitT(b, w) && (b.triangle == w.triangle ? b.t == w.t : true);
+    if (!agree || a.rays % allEvery == 0) {
+      ++a.checkedByAll;
+      reference = intersectAllCpu(tris, r.origin, r.dir, 1e30f);
+      if (!sameHitT(reference, b)) ++a.binaryMisses;
+    }
+    ++a.rays;
+    const bool wideMatches = sameHitT(reference, w) && (reference.triangle != w.triangle || reference.t == w.t);
+    const bool axisAligned = r.dir.x == 0.0f || r.dir.y == 0.0f || r.dir.z == 0.0f;
+    if (!wideMatches && axisAligned && !sameHitT(reference, b)) {
+      ++a.axisAlignedWideMisses;
+      continue;
+    }
+    if (!wideMatches) {
+      if (++a.closestMismatches <= 5)
+        std::printf("closest: reference t %g (triangle %u), wide %g (%u); origin (%g, %g, %g) direction (%g, %g, %g)\n",
+                    reference.t, reference.triangle, w.t, w.triangle, r.origin.x, r.origin.y, r.origin.z, r.dir.x,
+                    r.dir.y, r.dir.z);
+      continue;
+    }
+    if (w.t < 0.0f) {
+      if (traverseWideCpu(wide, tris, r.origin, r.dir, 1e30f, true).t > 0.0f) ++a.anyHitMismatches;
+      continue;
+    }
+    ++a.hits;
+    if (reference.triangle != w.triangle) ++a.ties;
+    if (!(traverseWideCpu(wide, tris, r.origin, r.dir, 1e30f, true).t > 0.0f)) ++a.anyHitMismatches;
+    if (!(traverseWideCpu(wide, tris, r.origin, r.dir, 1.001f * w.t, true).t > 0.0f)) ++a.anyHitMismatches;
+    if (traverseWideCpu(wide, tris, r.origin, r.dir, 0.999f * w.t, true).t > 0.0f &&
+        !(intersectAllCpu(tris, r.origin, r.dir, 0.999f * w.t).t > 0.0f))
+      ++a.anyHitMismatches;
+  }
+  return a;
+}
+
+void expectAgreement(const Agreement& a, const char* what) {
+  std::printf("%s: %llu rays, %llu hit, %llu ties, %llu checked against every triangle, %llu the binary tree "
+              "missed (%llu of them the wide one too, all axis-aligned); mean steps binary %.2f, wide %.2f\n",
+              what, (unsigned long long)a.rays, (unsigned long long)a.hits, (unsigned long long)a.ties,
+              (unsigned long long)a.checkedByAll, (unsigned long long)a.binaryMisses,
+              (unsigned long long)a.axisAlignedWideMisses, a.binarySteps / double(a.rays),
+              a.wideSteps / double(a.rays));
+  EXPECT_EQ(a.closestMismatches, 0u) << what;
+  EXPECT_EQ(a.anyHitMismatches, 0u) << what;
+  EXPECT_GT(a.hits, a.rays / 4) << what << ": the rays must mostly hit something to test anything";
+  EXPECT_GT(a.checkedByAll, a.rays / 100) << what;
+  EXPECT_LE(a.axisAlignedWideMisses, a.binaryMisses) << what;
+}
+
+TEST(BvhWide, TempleStructureAndTraversal) {
+  const Scene temple = makeTemple();
+  const Bvh binary = buildBvh(temple.triangles);
+  const BvhWide wide = collapseBvh(binary);
+  checkStructure(temple.triangles, binary, wide);
+  std::printf("temple: %zu triangles, binary %u nodes, wide %u nodes + %u leaves, %.1f tree bytes/triangle\n",
+              temple.triangles.size(), binary.stats.nodeCount, wide.stats.nodeCount, wide.stats.leafCount,
+              double(wide.stats.treeBytes()) / double(temple.triangles.size()));
+  expectAgreement(compare(temple, binary, wide, testRays(temple, 4000, 20000, 7), 10), "temple");
+}
+
+TEST(BvhWide, RandomAndIdenticalTriangles) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-10.0f, 10.0f);
+  Scene random;
+  random.triangles.resize(3000);
+  for (Triangle& t : random.triangles)
+    for (glm::vec3& v : t.v) v = {u(rng), u(rng), u(rng)};
+  random.viewpoints.push_back({"outside", {0, 0, 40}, {0, 0, 0}});
+  random.viewpoints.push_back({"inside", {0.5f, 0.2f, 0.1f}, {3, 1, -2}});
+  const Bvh binary = buildBvh(random.triangles);
+  const BvhWide wide = collapseBvh(binary);
+  checkStructure(random.triangles, binary, wide);
+  expectAgreement(compare(random, binary, wide, testRays(random, 3000, 5000, 5), 10), "random triangles");
+  // Many triangles in one place: one big leaf (SAH cannot split them), a root with one leaf child or a few.
+  Scene same;
+  same.triangles.assign(300, random.triangles[0]);
+  same.viewpoints.push_back({"front", 0.5f * (same.triangles[0].v[0] + same.triangles[0].v[1]) + glm::vec3(0, 0, 30),
+                             same.triangles[0].v[2]});
+  const Bvh sameBinary = buildBvh(same.triangles);
+  checkStructure(same.triangles, sameBinary, collapseBvh(sameBinary));
+}
+
+TEST(BvhWide, OneTriangleAndNone) {
+  Scene one;
+  one.triangles.resize(1);
+  one.triangles[0].v[1] = {1, 0, 0};
+  one.triangles[0].v[2] = {0, 1, 0};
+  const Bvh binary = buildBvh(one.triangles);  // a root that is a leaf
+  const BvhWide wide = collapseBvh(binary);
+  checkStructure(one.triangles, binary, wide);
+  ASSERT_EQ(wide.nodes.size(), 1u);
+  ASSERT_EQ(wide.leaves.size(), 1u);
+  const std::vector<gpu::GpuTriangle> tris = bvhOrderTriangles(one.triangles, binary.triangleOrder);
+  EXPECT_NEAR(traverseWideCpu(wide, tris, {0.2f, 0.2f, 1}, {0, 0, -1}, 1e30f, false).t, 1.0f, 1e-6f);
+  EXPECT_LT(traverseWideCpu(wide, tris, {2, 2, 1}, {0, 0, -1}, 1e30f, false).t, 0.0f);
+  // No triangles: a root without children, every ray misses after one step.
+  const Bvh none = buildBvh({});
+  const BvhWide empty = collapseBvh(none);
+  EXPECT_EQ(empty.nodes.size(), 1u);
+  EXPECT_TRUE(empty.leaves.empty());
+  const CpuHit miss = traverseWideCpu(empty, {}, {0, 0, 0}, {0, 0, 1}, 1e30f, false);
+  EXPECT_LT(miss.t, 0.0f);
+  EXPECT_EQ(miss.steps, 1u);
+}
+
+TEST(BvhWide, Sponza) {
+  const std::string path = RAYLAB_SOURCE_DIR "/../shared/scenes/Sponza/Sponza.gltf";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no Sponza at " << path;
+  const Scene sponza = loadGltf(path);
+  const Bvh binary = buildBvh(sponza.triangles);
+  const BvhWide wide = collapseBvh(binary);
+  checkStructure(sponza.triangles, binary, wide);
+  std::printf("Sponza: %zu triangles, binary %u nodes, wide %u nodes + %u leaves, %.1f tree bytes/triangle, "
+              "collapse %.0f ms\n", sponza.triangles.size(), binary.stats.nodeCount, wide.stats.nodeCount,
+              wide.stats.leafCount, double(wide.stats.treeBytes()) / double(sponza.triangles.size()), wide.stats.buildMs);
+  expectAgreement(compare(sponza, binary, wide, testRays(sponza, 2000, 10000, 3), 100), "Sponza");
+}
+
+}  // namespace
+}  // namespace raylab
