@@ -8,12 +8,14 @@
 #include <memory>
 #include <set>
 
+#include "app/bench_charts_run.h"
 #include "app/bench_measure.h"
 #include "app/bench_results.h"
 #include "app/bench_resume.h"
 #include "app/bench_sweep.h"
 #include "app/scene_setup.h"
 #include "renderer/checked_write.h"
+#include "renderer/device_limits.h"
 #include "renderer/rt_tracer.h"
 #include "renderer/stats_json.h"
 #include "renderer/git_revision.h"
@@ -21,13 +23,38 @@
 namespace raylab {
 namespace {
 
+// What a case's reference image and error curve depend on besides the scene: one per group of cells.
+struct ReferenceGroup {
+  uint32_t bounces = 0, width = 0, height = 0, spp = 0;
+  bool operator==(const ReferenceGroup& o) const {
+    return bounces == o.bounces && width == o.width && height == o.height && spp == o.spp;
+  }
+  void applyTo(Settings& s) const {
+    s.bounces = bounces;
+    s.width = width;
+    s.height = height;
+    s.sppPerFrame = spp;
+  }
+};
+ReferenceGroup referenceGroupOf(const Settings& s) { return {s.bounces, s.width, s.height, s.sppPerFrame}; }
+
+// The reference's samples per frame: all of them in one frame where that is few paths, else as many as keep
+// a frame within the cell's own path count or 2M paths, whichever is more. 64 spp at 4096x2048 would be half
+// a billion paths in one frame, past the settings' limit and any device's memory.
+uint32_t referenceSppPerFrame(const Settings& base, uint32_t spp) {
+  const uint64_t pixels = std::max<uint64_t>(1, uint64_t(base.width) * base.height);
+  const uint64_t budget = std::max<uint64_t>(pixels * base.sppPerFrame, uint64_t(1) << 21);
+  const uint64_t fits = std::max<uint64_t>(1, std::min<uint64_t>(budget, SettingLimits::kMaxPathsPerFrame) / pixels);
+  return static_cast<uint32_t>(std::min<uint64_t>({spp, SettingLimits::kMaxSpp, fits}));
+}
+
 // The reference image of a case: the megakernel with many samples.
 std::vector<glm::vec3> renderReference(PathTracer& tracer, const Settings& base, uint32_t spp) {
   Settings ref = base;
   ref.kernel = Kernel::Megakernel;
   ref.strategy = KeyStrategy::None;
   ref.seed = base.seed + 1000003;  // independent of the measured frames' samples
-  ref.sppPerFrame = std::min<uint32_t>(spp, SettingLimits::kMaxSpp);
+  ref.sppPerFrame = referenceSppPerFrame(base, spp);
   tracer.applySettings(ref);
   tracer.restartAccumulation();
   for (uint32_t done = 0; done < spp; done += ref.sppPerFrame) tracer.renderFrame();
@@ -100,26 +127,29 @@ size_t runCells(const BenchPlan& plan, const VulkanContext& ctx, const std::set<
       std::fprintf(stderr, "%s: %llu triangles, BVH %.1f MB (built in %.0f ms), scene made in %.0f ms\n",
                    loaded.scene.name.c_str(), static_cast<unsigned long long>(facts.triangles), facts.bvhBytes / 1e6,
                    facts.bvhBuildMs, facts.sceneLoadMs);
-      // The reference and the error curve depend on the path length: made again for each bounce count.
-      uint32_t referenceBounces = 0;
+      // The reference and the error curve depend on the path length, the image size and the samples per
+      // frame: made again for each group of those (cells of one group are consecutive in the plan).
+      ReferenceGroup referenceGroup;
       std::vector<glm::vec3> reference;
       std::vector<double> errorCurve;
       for (size_t index : cells) {
         const BenchCell& cell = plan.cells[index];
-        if (cell.settings.bounces != referenceBounces) {
-          Settings group = caseSettings;
-          group.bounces = referenceBounces = cell.settings.bounces;
-          reference = renderReference(tracer, group, plan.referenceSpp);
-          errorCurve = measureErrorCurve(tracer, group, plan.timedFrames, reference);
+        if (const ReferenceGroup group = referenceGroupOf(cell.settings); !(group == referenceGroup)) {
+          referenceGroup = group;
+          Settings groupSettings = caseSettings;
+          group.applyTo(groupSettings);
+          reference = renderReference(tracer, groupSettings, plan.referenceSpp);
+          errorCurve = measureErrorCurve(tracer, groupSettings, plan.timedFrames, reference);
         }
         ++done;
         CellResult r = measureCell(tracer, cell.settings, plan.warmupFrames, plan.timedFrames, reference,
                                    errorCurve, plan.detailFrame);
         jsonl.append(benchRecord(index, ctx, cell, loaded.view.name, facts, r).dump() + "\n", /*durable=*/true);
         double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "[%zu/%zu %.0fs] %s@%s b=%u %-32s frame %.2f ms, trace(b>=1) %.2f ms\n", done,
+        std::fprintf(stderr, "[%zu/%zu %.0fs] %s@%s %ux%u spp=%u b=%u %-32s frame %.2f ms, trace(b>=1) %.2f ms\n", done,
                      plan.cells.size(), elapsed, loaded.scene.name.c_str(), loaded.view.name.c_str(),
-                     cell.settings.bounces, cell.label.c_str(), r.frameMs.median, r.traceAfterFirstMs.median);
+                     cell.settings.width, cell.settings.height, cell.settings.sppPerFrame, cell.settings.bounces,
+                     cell.label.c_str(), r.frameMs.median, r.traceAfterFirstMs.median);
       }
     } catch (const WriteError&) {
       throw;
@@ -131,6 +161,27 @@ size_t runCells(const BenchPlan& plan, const VulkanContext& ctx, const std::set<
     }
   }
   return failed;
+}
+
+// Draws the charts of a finished sweep, saying what became of them; false when they failed. A machine
+// without python3 or matplotlib is no failure: said once, the CSV is what the sweep is for.
+bool reportCharts(const std::string& dir) {
+  const ChartsOutcome charts = drawBenchCharts(dir);
+  switch (charts.kind) {
+    case ChartsOutcome::Kind::Drawn:
+      std::printf("bench: charts in %s\n", dir.c_str());
+      return true;
+    case ChartsOutcome::Kind::Unavailable:
+      std::fprintf(stderr, "raylab bench: no charts: %s; the results are in %s/results.csv\n", charts.why.c_str(),
+                   dir.c_str());
+      return true;
+    case ChartsOutcome::Kind::Failed:
+      break;
+  }
+  std::fprintf(stderr, "raylab bench: the charts failed: %s; the results are kept in %s/results.csv and "
+               "results.jsonl (python3 %s %s draws them again)\n", charts.why.c_str(), dir.c_str(),
+               benchChartsScript().c_str(), dir.c_str());
+  return false;
 }
 
 }  // namespace
@@ -154,6 +205,10 @@ int runBenchCommand(const std::vector<std::string>& args) {
   for (const BenchCell& cell : plan.cells)
     if (std::string why = unsupportedSettings(ctx.info(), cell.settings); !why.empty()) {
       std::fprintf(stderr, "raylab bench: %s\n", why.c_str());
+      return kExitUsage;
+    } else if (std::string beyond = pathsBeyondDevice(ctx.info(), cell.settings); !beyond.empty()) {
+      // Every cell is checked before the first renders: a size the device cannot run is a bad sweep.
+      std::fprintf(stderr, "raylab bench: cell '%s': %s\n", cell.label.c_str(), beyond.c_str());
       return kExitUsage;
     }
   const std::string jsonlPath = plan.outDir + "/results.jsonl", csvPath = plan.outDir + "/results.csv";
@@ -186,8 +241,10 @@ int runBenchCommand(const std::vector<std::string>& args) {
   }
   std::printf("bench: %zu cells, %zu failed; results in %s/results.csv and results.jsonl\n", plan.cells.size(),
               failed, plan.outDir.c_str());
+  std::fflush(stdout);  // before the chart script's own lines
+  const bool chartsFailed = plan.charts && !reportCharts(plan.outDir);
   if (ctx.validationErrors() > 0) return kExitValidation;
-  return failed == 0 ? kExitOk : kExitFailure;
+  return failed == 0 && !chartsFailed ? kExitOk : kExitFailure;
 }
 
 }  // namespace raylab

@@ -1,0 +1,60 @@
+#include "app/bench_charts_run.h"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+extern char** environ;
+
+namespace raylab {
+namespace {
+
+// bench_charts.py's exit status when `import matplotlib` fails (EXIT_NO_MATPLOTLIB there).
+constexpr int kChartsNoMatplotlib = 3;
+// A shell's status for a command it could not find; posix_spawnp reports ENOENT itself on glibc.
+constexpr int kCommandNotFound = 127;
+constexpr const char* kDebianPython = "/usr/bin/python3";
+
+}  // namespace
+
+std::string benchChartsScript() { return std::string(RAYLAB_SOURCE_DIR) + "/app/bench_charts.py"; }
+
+ChartsOutcome drawBenchCharts(const std::string& dir) {
+  // Debian's interpreter first: python3-matplotlib is installed for it, and a python3 earlier on PATH (a
+  // pyenv or a virtual environment) may lack it; then whichever python3 PATH has.
+  const char* env = std::getenv("RAYLAB_PYTHON");
+  std::error_code ec;
+  const std::string python = env && *env                                      ? env
+                             : std::filesystem::exists(kDebianPython, ec) ? kDebianPython
+                                                                          : "python3";
+  const std::string script = benchChartsScript();
+  if (!std::filesystem::is_regular_file(script, ec))
+    return {ChartsOutcome::Kind::Unavailable, "the chart script " + script + " is not there (a moved source tree?)"};
+  std::vector<std::string> args{python, script, dir};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (int err = posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ); err != 0) {
+    if (err == ENOENT) return {ChartsOutcome::Kind::Unavailable, python + " is not installed"};
+    return {ChartsOutcome::Kind::Failed, "cannot run " + python + ": " + std::strerror(err)};
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return {ChartsOutcome::Kind::Failed, std::string("waiting for the chart script: ") + std::strerror(errno)};
+  if (WIFSIGNALED(status))
+    return {ChartsOutcome::Kind::Failed, "the chart script was killed by signal " + std::to_string(WTERMSIG(status))};
+  const int code = WEXITSTATUS(status);
+  if (code == 0) return {ChartsOutcome::Kind::Drawn, ""};
+  if (code == kChartsNoMatplotlib) return {ChartsOutcome::Kind::Unavailable, "matplotlib is missing for " + python};
+  if (code == kCommandNotFound) return {ChartsOutcome::Kind::Unavailable, python + " is not installed"};
+  return {ChartsOutcome::Kind::Failed, "the chart script exited " + std::to_string(code)};
+}
+
+}  // namespace raylab

@@ -1,0 +1,27 @@
+// `raylab bench` draws its charts itself once a sweep's results.csv is written: it runs
+// `python3 app/bench_charts.py DIR` as a child process (/usr/bin/python3 where it exists, else python3 from
+// PATH; RAYLAB_PYTHON names another interpreter). The CSV
+// and JSONL are written before and never touched by it, so a chart that fails loses no result.
+#pragma once
+
+#include <string>
+
+namespace raylab {
+
+struct ChartsOutcome {
+  enum class Kind {
+    Drawn,        // every chart written
+    Unavailable,  // no python3, no matplotlib or no script: said once, not an error of the sweep
+    Failed,       // the script ran and failed (a chart it could not write, a crash): an error (exit 1)
+  };
+  Kind kind = Kind::Drawn;
+  std::string why;  // for Unavailable and Failed: what happened, in words
+};
+
+// Runs the chart script on `dir` and waits for it; its output goes to this process's stdout and stderr.
+ChartsOutcome drawBenchCharts(const std::string& dir);
+
+// The chart script: RAYLAB_SOURCE_DIR's app/bench_charts.py (the source tree this raylab was built from).
+std::string benchChartsScript();
+
+}  // namespace raylab
