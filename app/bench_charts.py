@@ -33,13 +33,17 @@ import sys
 
 EXIT_NO_MATPLOTLIB = 3  # app/bench_charts_run.cpp knows it: no charts, and no error of the sweep
 
+# `raylab bench` runs this script at the end of a sweep with --quiet-if-unavailable and tells this exit
+# status from a chart that failed: a machine without matplotlib keeps its CSV, and the bench says so, once.
+QUIET_IF_UNAVAILABLE = "--quiet-if-unavailable" in sys.argv[1:]
+if QUIET_IF_UNAVAILABLE:
+    sys.argv.remove("--quiet-if-unavailable")
 try:
     import matplotlib
 except ImportError:
-    # `raylab bench` runs this script at the end of a sweep and tells this exit status from a chart that
-    # failed: a machine without matplotlib keeps its CSV, said once.
-    print("bench_charts.py: matplotlib is missing (Debian: apt-get install python3-matplotlib): no charts drawn",
-          file=sys.stderr)
+    if not QUIET_IF_UNAVAILABLE:
+        print("bench_charts.py: matplotlib is missing (Debian: apt-get install python3-matplotlib): no charts drawn",
+              file=sys.stderr)
     sys.exit(EXIT_NO_MATPLOTLIB)
 
 matplotlib.use("Agg")

@@ -36,7 +36,8 @@ ChartsOutcome drawBenchCharts(const std::string& dir) {
   const std::string script = benchChartsScript();
   if (!std::filesystem::is_regular_file(script, ec))
     return {ChartsOutcome::Kind::Unavailable, "the chart script " + script + " is not there (a moved source tree?)"};
-  std::vector<std::string> args{python, script, dir};
+  // The bench reports a missing matplotlib itself (once, with the CSV's place): the script stays quiet then.
+  std::vector<std::string> args{python, script, "--quiet-if-unavailable", dir};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -52,7 +53,8 @@ ChartsOutcome drawBenchCharts(const std::string& dir) {
     return {ChartsOutcome::Kind::Failed, "the chart script was killed by signal " + std::to_string(WTERMSIG(status))};
   const int code = WEXITSTATUS(status);
   if (code == 0) return {ChartsOutcome::Kind::Drawn, ""};
-  if (code == kChartsNoMatplotlib) return {ChartsOutcome::Kind::Unavailable, "matplotlib is missing for " + python};
+  if (code == kChartsNoMatplotlib)
+    return {ChartsOutcome::Kind::Unavailable, "matplotlib is missing for " + python + " (Debian: python3-matplotlib)"};
   if (code == kCommandNotFound) return {ChartsOutcome::Kind::Unavailable, python + " is not installed"};
   return {ChartsOutcome::Kind::Failed, "the chart script exited " + std::to_string(code)};
 }
