@@ -286,6 +286,24 @@ void cable(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec
   if (hanging) b.cylinder(prev - glm::vec3(0, 0.12f, 0), {0, 0.12f, 0}, 0.15f, 12, m.metal);  // a lamp shade
 }
 
+// Moves the object made of the triangles from `first` on into the room's interior where it pokes out (a
+// tumbled box through the floor, a plant's leaves into a wall): it rests on the floor or against the wall.
+void keepInside(Scene& scene, size_t first) {
+  Bounds object;
+  for (size_t i = first; i < scene.triangles.size(); ++i)
+    for (const glm::vec3& v : scene.triangles[i].v) object.grow(v);
+  if (object.empty()) return;
+  const glm::vec3 lo(-kRoomX, 0.0f, -kRoomZ), hi(kRoomX, kRoomY, kRoomZ);
+  glm::vec3 shift(0.0f);
+  for (int a = 0; a < 3; ++a) {
+    if (object.min[a] < lo[a]) shift[a] = lo[a] - object.min[a];
+    else if (object.max[a] > hi[a]) shift[a] = hi[a] - object.max[a];
+  }
+  if (shift == glm::vec3(0.0f)) return;
+  for (size_t i = first; i < scene.triangles.size(); ++i)
+    for (glm::vec3& v : scene.triangles[i].v) v += shift;
+}
+
 std::vector<Viewpoint> clutterViews() {
   Viewpoint overview{"overview", {-6.2f, 2.6f, 4.2f}, {1.0f, 0.6f, -1.5f}};
   overview.yfovRadians = 1.1f;
@@ -344,11 +362,13 @@ Scene makeClutter(uint32_t triangles) {
     const uint64_t kind = rng.next() % 10;
     const glm::vec3 p = floorSpot(rng);
     if (!placement.free(p, kind >= 8 ? 0.2f : 1.2f)) continue;
+    const size_t first = scene.triangles.size();
     if (kind < 1) table(b, rng, m, p);
     else if (kind < 2) chair(b, rng, m, p);
     else if (kind < 6) plant(b, rng, m, p, scene, triangles);
     else if (kind < 8) pile(b, rng, m, p);
     else cable(b, rng, m, p);
+    keepInside(scene, first);
   }
   return scene;
 }
