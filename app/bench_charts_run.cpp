@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -57,6 +58,25 @@ ChartsOutcome drawBenchCharts(const std::string& dir) {
     return {ChartsOutcome::Kind::Unavailable, "matplotlib is missing for " + python + " (Debian: python3-matplotlib)"};
   if (code == kCommandNotFound) return {ChartsOutcome::Kind::Unavailable, python + " is not installed"};
   return {ChartsOutcome::Kind::Failed, "the chart script exited " + std::to_string(code)};
+}
+
+bool drawAndReportCharts(const std::string& dir) {
+  const ChartsOutcome charts = drawBenchCharts(dir);
+  switch (charts.kind) {
+    case ChartsOutcome::Kind::Drawn:
+      std::printf("bench: charts in %s\n", dir.c_str());
+      return true;
+    case ChartsOutcome::Kind::Unavailable:
+      std::fprintf(stderr, "raylab bench: no charts: %s; the results are in %s/results.csv\n", charts.why.c_str(),
+                   dir.c_str());
+      return true;
+    case ChartsOutcome::Kind::Failed:
+      break;
+  }
+  std::fprintf(stderr, "raylab bench: the charts failed: %s; the results are kept in %s/results.csv and "
+               "results.jsonl (python3 %s %s draws them again)\n", charts.why.c_str(), dir.c_str(),
+               benchChartsScript().c_str(), dir.c_str());
+  return false;
 }
 
 }  // namespace raylab

@@ -21,6 +21,10 @@ struct ChartsOutcome {
 // Runs the chart script on `dir` and waits for it; its output goes to this process's stdout and stderr.
 ChartsOutcome drawBenchCharts(const std::string& dir);
 
+// Draws the charts of a finished sweep and says what became of them; false when they failed. A machine
+// without python3 or matplotlib is no failure: said once, the CSV is what the sweep is for.
+bool drawAndReportCharts(const std::string& dir);
+
 // The chart script: RAYLAB_SOURCE_DIR's app/bench_charts.py (the source tree this raylab was built from).
 std::string benchChartsScript();
 

@@ -10,6 +10,8 @@
 
 #include "app/bench_charts_run.h"
 #include "app/bench_measure.h"
+#include "app/bench_merge.h"
+#include "app/bench_shard.h"
 #include "app/bench_results.h"
 #include "app/bench_resume.h"
 #include "app/bench_sweep.h"
@@ -85,16 +87,28 @@ std::vector<std::string> withoutOutDir(std::vector<std::string> args) {
 
 // The plan to run: from the arguments, or with --resume DIR from DIR's sweep.json (the arguments recorded
 // there when none are given), refused unless it is the sweep DIR recorded at this build. Throws UsageError.
-BenchPlan planFor(std::vector<std::string> args, std::string* resumeDir, std::vector<std::string>* recordArgs) {
+BenchPlan planFor(std::vector<std::string> args, std::string* resumeDir, std::vector<std::string>* recordArgs,
+                  BenchShard* shard) {
   *resumeDir = takeResume(args);
+  const bool shardGiven = std::find(args.begin(), args.end(), "--shard") != args.end();
+  *shard = takeShard(args);
   if (resumeDir->empty()) {
     *recordArgs = withoutOutDir(args);
     return parseBenchPlan(args);
   }
   if (std::find(args.begin(), args.end(), "--out-dir") != args.end())
     throw UsageError("--resume DIR continues the sweep in DIR: leave out --out-dir");
-  const SweepRecord recorded = readSweepRecord(*resumeDir);
+  SweepRecord recorded;
+  try {
+    recorded = readSweepRecord(*resumeDir);
+  } catch (const UsageError& e) {
+    throw UsageError(std::string("--resume ") + e.what());
+  }
   if (args.empty()) args = recorded.args;
+  if (!shardGiven) *shard = recorded.shard;
+  if (!(*shard == recorded.shard))
+    throw UsageError("--resume " + *resumeDir + ": it holds shard " + recorded.shard.text() + " of its sweep, not " +
+                     shard->text());
   *recordArgs = withoutOutDir(args);
   BenchPlan plan = parseBenchPlan(args);
   plan.outDir = *resumeDir;
@@ -105,13 +119,16 @@ BenchPlan planFor(std::vector<std::string> args, std::string* resumeDir, std::ve
 // Runs every cell not in `finished`, case by case, appending each result durably to `jsonl` as it ends;
 // returns how many cells failed. A case that fails (a scene that does not load, a device error) fails its
 // cells and the sweep goes on; a result that cannot be stored (WriteError) ends the sweep.
-size_t runCells(const BenchPlan& plan, const VulkanContext& ctx, const std::set<size_t>& finished, AppendFile& jsonl) {
+size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanContext& ctx, const std::set<size_t>& finished,
+                AppendFile& jsonl) {
+  size_t total = 0;  // this shard's cells
+  for (size_t i = 0; i < plan.cells.size(); ++i) total += shard.contains(i);
   size_t done = finished.size(), failed = 0;
   auto start = std::chrono::steady_clock::now();
   for (size_t ci = 0; ci < plan.cases.size(); ++ci) {
     std::vector<size_t> cells;  // indices into plan.cells
     for (size_t i = 0; i < plan.cells.size(); ++i)
-      if (plan.cells[i].caseIndex == ci && !finished.count(i)) cells.push_back(i);
+      if (plan.cells[i].caseIndex == ci && shard.contains(i) && !finished.count(i)) cells.push_back(i);
     if (cells.empty()) continue;
     try {
       Settings caseSettings = plan.cells[cells.front()].settings;
@@ -147,7 +164,7 @@ size_t runCells(const BenchPlan& plan, const VulkanContext& ctx, const std::set<
         jsonl.append(benchRecord(index, ctx, cell, loaded.view.name, facts, r).dump() + "\n", /*durable=*/true);
         double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::fprintf(stderr, "[%zu/%zu %.0fs] %s@%s %ux%u spp=%u b=%u %-32s frame %.2f ms, trace(b>=1) %.2f ms\n", done,
-                     plan.cells.size(), elapsed, loaded.scene.name.c_str(), loaded.view.name.c_str(),
+                     total, elapsed, loaded.scene.name.c_str(), loaded.view.name.c_str(),
                      cell.settings.width, cell.settings.height, cell.settings.sppPerFrame, cell.settings.bounces,
                      cell.label.c_str(), r.frameMs.median, r.traceAfterFirstMs.median);
       }
@@ -163,27 +180,6 @@ size_t runCells(const BenchPlan& plan, const VulkanContext& ctx, const std::set<
   return failed;
 }
 
-// Draws the charts of a finished sweep, saying what became of them; false when they failed. A machine
-// without python3 or matplotlib is no failure: said once, the CSV is what the sweep is for.
-bool reportCharts(const std::string& dir) {
-  const ChartsOutcome charts = drawBenchCharts(dir);
-  switch (charts.kind) {
-    case ChartsOutcome::Kind::Drawn:
-      std::printf("bench: charts in %s\n", dir.c_str());
-      return true;
-    case ChartsOutcome::Kind::Unavailable:
-      std::fprintf(stderr, "raylab bench: no charts: %s; the results are in %s/results.csv\n", charts.why.c_str(),
-                   dir.c_str());
-      return true;
-    case ChartsOutcome::Kind::Failed:
-      break;
-  }
-  std::fprintf(stderr, "raylab bench: the charts failed: %s; the results are kept in %s/results.csv and "
-               "results.jsonl (python3 %s %s draws them again)\n", charts.why.c_str(), dir.c_str(),
-               benchChartsScript().c_str(), dir.c_str());
-  return false;
-}
-
 }  // namespace
 
 int runBenchCommand(const std::vector<std::string>& args) {
@@ -191,18 +187,20 @@ int runBenchCommand(const std::vector<std::string>& args) {
     std::printf("usage: raylab bench [options]\n%s", benchHelp().c_str());
     return kExitOk;
   }
+  if (std::find(args.begin(), args.end(), "--merge") != args.end()) return runBenchMerge(args);
   BenchPlan plan;
   std::string resumeDir;
   std::vector<std::string> recordArgs;
+  BenchShard shard;
   try {
-    plan = planFor(args, &resumeDir, &recordArgs);
+    plan = planFor(args, &resumeDir, &recordArgs, &shard);
   } catch (const UsageError& e) {
     std::fprintf(stderr, "raylab bench: %s\n\n%s", e.what(), benchHelp().c_str());
     return kExitUsage;
   }
   std::filesystem::create_directories(plan.outDir);
   VulkanContext ctx(contextOptionsFor(plan.common));
-  for (const BenchCell& cell : plan.cells)
+  for (const BenchCell& cell : plan.cells)  // the whole plan, whichever shard: one refusal for every shard
     if (std::string why = unsupportedSettings(ctx.info(), cell.settings); !why.empty()) {
       std::fprintf(stderr, "raylab bench: %s\n", why.c_str());
       return kExitUsage;
@@ -218,7 +216,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
     std::filesystem::remove(csvPath);
     std::set<size_t> finished;
     if (resumeDir.empty()) {
-      writeSweepRecord(plan.outDir, plan, recordArgs);
+      writeSweepRecord(plan.outDir, plan, recordArgs, shard);
     } else {
       BenchRecords old = readBenchRecords(jsonlPath);
       if (old.droppedLastLine) {  // a kill cut the last line: keep the whole ones, run that cell again
@@ -227,11 +225,13 @@ int runBenchCommand(const std::vector<std::string>& args) {
         writeFileChecked(jsonlPath, std::string_view(text).substr(0, old.wholeBytes));
       }
       for (const nlohmann::json& r : old.records) finished.insert(r.at("cell").get<size_t>());
+      size_t shardCells = 0;
+      for (size_t i = 0; i < plan.cells.size(); ++i) shardCells += shard.contains(i);
       std::fprintf(stderr, "raylab bench: resuming %s: %zu of %zu cells done%s\n", resumeDir.c_str(), finished.size(),
-                   plan.cells.size(), old.droppedLastLine ? " (a cut-off last line dropped)" : "");
+                   shardCells, old.droppedLastLine ? " (a cut-off last line dropped)" : "");
     }
     AppendFile jsonl(jsonlPath, resumeDir.empty() ? AppendFile::Start::Empty : AppendFile::Start::Keep);
-    failed = runCells(plan, ctx, finished, jsonl);
+    failed = runCells(plan, shard, ctx, finished, jsonl);
     jsonl.close();
     writeFileChecked(csvPath, benchCsv(readBenchRecords(jsonlPath).records));
   } catch (const WriteError& e) {
@@ -239,10 +239,13 @@ int runBenchCommand(const std::vector<std::string>& args) {
                  "continues the sweep\n", e.what(), jsonlPath.c_str(), plan.outDir.c_str());
     return kExitFailure;
   }
-  std::printf("bench: %zu cells, %zu failed; results in %s/results.csv and results.jsonl\n", plan.cells.size(),
+  size_t cells = 0;
+  for (size_t i = 0; i < plan.cells.size(); ++i) cells += shard.contains(i);
+  std::printf("bench: %zu cells%s, %zu failed; results in %s/results.csv and results.jsonl\n", cells,
+              shard.whole() ? "" : (" (shard " + shard.text() + " of " + std::to_string(plan.cells.size()) + ")").c_str(),
               failed, plan.outDir.c_str());
   std::fflush(stdout);  // before the chart script's own lines
-  const bool chartsFailed = plan.charts && !reportCharts(plan.outDir);
+  const bool chartsFailed = plan.charts && !drawAndReportCharts(plan.outDir);
   if (ctx.validationErrors() > 0) return kExitValidation;
   return failed == 0 && !chartsFailed ? kExitOk : kExitFailure;
 }
