@@ -24,7 +24,7 @@ namespace {
 
 constexpr uint64_t kClutterSeed = 21;
 // The room's inside: x across, z deep, y up (metres).
-constexpr float kRoomX = 7.0f, kRoomZ = 5.0f, kRoomY = 3.2f, kWall = 0.2f;
+constexpr float kRoomX = 7.0f, kRoomZ = 5.0f, kRoomY = 3.2f, kClutterWall = 0.2f;
 
 struct ClutterMaterials {
   uint32_t wall, floor, ceiling, wood, darkWood, metal, ceramic, leaf, pot, cable, crate, light;
@@ -65,19 +65,19 @@ ClutterMaterials addClutterMaterials(MeshBuilder& b) {
 }
 
 // A box of half extents `half` at `center`, its axes the columns of `r` (any rotation).
-void rotatedBox(MeshBuilder& b, const glm::vec3& center, const glm::vec3& half, const glm::mat3& r, uint32_t mat) {
+void clutterBox(MeshBuilder& b, const glm::vec3& center, const glm::vec3& half, const glm::mat3& r, uint32_t mat) {
   auto corner = [&](float sx, float sy, float sz) { return center + r * (glm::vec3(sx, sy, sz) * half); };
   b.hexahedron({corner(-1, -1, -1), corner(1, -1, -1), corner(1, -1, 1), corner(-1, -1, 1), corner(-1, 1, -1),
                 corner(1, 1, -1), corner(1, 1, 1), corner(-1, 1, 1)},
                mat);
 }
 
-glm::mat3 yawMatrix(float yaw) {
+glm::mat3 clutterYaw(float yaw) {
   return glm::mat3(glm::vec3(std::cos(yaw), 0, -std::sin(yaw)), glm::vec3(0, 1, 0), glm::vec3(std::sin(yaw), 0, std::cos(yaw)));
 }
 
 // A uniformly random rotation (from a random unit quaternion).
-glm::mat3 randomRotation(SplitMixRng& rng) {
+glm::mat3 clutterRotation(SplitMixRng& rng) {
   float u1 = rng.uniform(0, 1), u2 = rng.uniform(0, 2 * kPi), u3 = rng.uniform(0, 2 * kPi);
   float a = std::sqrt(1 - u1), c = std::sqrt(u1);
   float x = a * std::sin(u2), y = a * std::cos(u2), z = c * std::sin(u3), w = c * std::cos(u3);
@@ -88,10 +88,10 @@ glm::mat3 randomRotation(SplitMixRng& rng) {
 
 // Floor, ceiling and walls as closed slabs; the north wall (z = +kRoomZ) has a window of sky; small lights
 // hang just under the ceiling, facing down.
-void room(MeshBuilder& b, const ClutterMaterials& m) {
-  const float X = kRoomX + kWall, Z = kRoomZ + kWall;
-  b.box({-X, -kWall, -Z}, {X, 0.0f, Z}, m.floor);
-  b.box({-X, kRoomY, -Z}, {X, kRoomY + kWall, Z}, m.ceiling);
+void clutterRoom(MeshBuilder& b, const ClutterMaterials& m) {
+  const float X = kRoomX + kClutterWall, Z = kRoomZ + kClutterWall;
+  b.box({-X, -kClutterWall, -Z}, {X, 0.0f, Z}, m.floor);
+  b.box({-X, kRoomY, -Z}, {X, kRoomY + kClutterWall, Z}, m.ceiling);
   b.box({-X, 0.0f, -Z}, {-kRoomX, kRoomY, Z}, m.wall);
   b.box({kRoomX, 0.0f, -Z}, {X, kRoomY, Z}, m.wall);
   b.box({-kRoomX, 0.0f, -Z}, {kRoomX, kRoomY, -kRoomZ}, m.wall);
@@ -108,17 +108,17 @@ void room(MeshBuilder& b, const ClutterMaterials& m) {
 
 // A shelf unit standing at `origin` against a wall, running along `along`, `out` pointing into the room:
 // two sides, five boards, and books on every board, each its own size, some leaning, some gaps.
-void shelfUnit(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 origin, glm::vec3 along,
+void clutterShelfUnit(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 origin, glm::vec3 along,
                glm::vec3 out, float length) {
   const float depth = 0.35f, height = 2.4f, board = 0.025f;
   const int boards = 5;
   const glm::vec3 up(0, 1, 0);
   const glm::mat3 frame(along, up, out);
   auto at = [&](float u, float v, float w) { return origin + u * along + v * up + w * out; };
-  for (float u : {0.01f, length - 0.01f}) rotatedBox(b, at(u, 0.5f * height, 0.5f * depth), {0.01f, 0.5f * height, 0.5f * depth}, frame, m.darkWood);
+  for (float u : {0.01f, length - 0.01f}) clutterBox(b, at(u, 0.5f * height, 0.5f * depth), {0.01f, 0.5f * height, 0.5f * depth}, frame, m.darkWood);
   for (int k = 0; k < boards; ++k) {
     const float y = 0.1f + k * (height - 0.15f) / (boards - 1);
-    rotatedBox(b, at(0.5f * length, y, 0.5f * depth), {0.5f * length - 0.02f, 0.5f * board, 0.5f * depth}, frame, m.wood);
+    clutterBox(b, at(0.5f * length, y, 0.5f * depth), {0.5f * length - 0.02f, 0.5f * board, 0.5f * depth}, frame, m.wood);
     if (k == boards - 1) break;
     for (float u = 0.03f; u < length - 0.08f;) {
       if (rng.uniform(0, 1) < 0.08f) {  // a gap
@@ -129,26 +129,26 @@ void shelfUnit(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm:
       const float lean = rng.uniform(0, 1) < 0.15f ? rng.uniform(-0.5f, 0.5f) : rng.uniform(-0.04f, 0.04f);
       const glm::mat3 r = frame * glm::mat3(glm::vec3(std::cos(lean), std::sin(lean), 0), glm::vec3(-std::sin(lean), std::cos(lean), 0),
                                             glm::vec3(0, 0, 1)) *
-                          yawMatrix(rng.uniform(-0.1f, 0.1f));
+                          clutterYaw(rng.uniform(-0.1f, 0.1f));
       const uint32_t colour = m.books[static_cast<size_t>(rng.next() % m.books.size())];
-      rotatedBox(b, at(u + 0.5f * w, y + 0.5f * board + 0.5f * h * std::cos(lean), 0.5f * d + 0.01f), {0.5f * w, 0.5f * h, 0.5f * d}, r, colour);
+      clutterBox(b, at(u + 0.5f * w, y + 0.5f * board + 0.5f * h * std::cos(lean), 0.5f * d + 0.01f), {0.5f * w, 0.5f * h, 0.5f * d}, r, colour);
       u += w + std::fabs(h * std::sin(lean)) + 0.002f;
     }
   }
 }
 
-void shelves(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m) {
+void clutterShelves(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m) {
   const float unit = 1.6f;
   for (float x = -kRoomX + 0.1f; x + unit <= kRoomX - 0.1f; x += unit + 0.05f)  // the south wall
-    shelfUnit(b, rng, m, {x, 0.0f, -kRoomZ}, {1, 0, 0}, {0, 0, 1}, unit);
+    clutterShelfUnit(b, rng, m, {x, 0.0f, -kRoomZ}, {1, 0, 0}, {0, 0, 1}, unit);
   for (float side : {-1.0f, 1.0f})  // both side walls, leaving the corners free
     for (float z = -kRoomZ + 0.6f; z + unit <= kRoomZ - 0.6f; z += unit + 0.05f)
-      shelfUnit(b, rng, m, {side * kRoomX, 0.0f, side > 0 ? z + unit : z}, {0, 0, side > 0 ? -1.0f : 1.0f},
+      clutterShelfUnit(b, rng, m, {side * kRoomX, 0.0f, side > 0 ? z + unit : z}, {0, 0, side > 0 ? -1.0f : 1.0f},
                 {-side, 0, 0}, unit);
 }
 
 // Where a loose object may stand: inside the room, off the shelves, away from every camera.
-struct Placement {
+struct ClutterPlacement {
   std::vector<glm::vec3> cameras;
   bool free(const glm::vec3& p, float radius) const {
     for (const glm::vec3& c : cameras)
@@ -157,14 +157,14 @@ struct Placement {
   }
 };
 
-glm::vec3 floorSpot(SplitMixRng& rng) {
+glm::vec3 clutterFloorSpot(SplitMixRng& rng) {
   return {rng.uniform(-kRoomX + 0.6f, kRoomX - 0.6f), 0.0f, rng.uniform(-kRoomZ + 0.6f, kRoomZ - 0.4f)};
 }
 
 // Cups (open-topped look from a short cylinder and a handle), plates and bowls on a table top at `top`.
-void tableware(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 centre, float halfX, float halfZ,
+void clutterTableware(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 centre, float halfX, float halfZ,
                float yaw) {
-  const glm::mat3 r = yawMatrix(yaw);
+  const glm::mat3 r = clutterYaw(yaw);
   const int n = 3 + static_cast<int>(rng.next() % 8);
   for (int i = 0; i < n; ++i) {
     const glm::vec3 p = centre + r * glm::vec3(rng.uniform(-halfX, halfX) * 0.9f, 0, rng.uniform(-halfZ, halfZ) * 0.9f);
@@ -174,7 +174,7 @@ void tableware(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm:
         break;
       case 1:  // a cup with a handle
         b.cylinder(p, {0, rng.uniform(0.07f, 0.11f), 0}, 0.04f, 10, m.ceramic);
-        rotatedBox(b, p + glm::vec3(0.05f, 0.05f, 0), {0.012f, 0.025f, 0.005f}, glm::mat3(1.0f), m.ceramic);
+        clutterBox(b, p + glm::vec3(0.05f, 0.05f, 0), {0.012f, 0.025f, 0.005f}, glm::mat3(1.0f), m.ceramic);
         break;
       case 2: {  // a bottle, sometimes fallen over
         const bool fallen = rng.uniform(0, 1) < 0.3f;
@@ -184,24 +184,24 @@ void tableware(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm:
         break;
       }
       default:  // cutlery, at any angle
-        rotatedBox(b, p + glm::vec3(0, 0.004f, 0), {0.09f, 0.003f, 0.008f}, yawMatrix(rng.uniform(0, 2 * kPi)), m.metal);
+        clutterBox(b, p + glm::vec3(0, 0.004f, 0), {0.09f, 0.003f, 0.008f}, clutterYaw(rng.uniform(0, 2 * kPi)), m.metal);
     }
   }
 }
 
-void table(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 p) {
+void clutterTable(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 p) {
   const float yaw = rng.uniform(0, 2 * kPi), hx = rng.uniform(0.4f, 0.9f), hz = rng.uniform(0.3f, 0.5f), h = 0.75f;
-  const glm::mat3 r = yawMatrix(yaw);
-  rotatedBox(b, p + glm::vec3(0, h - 0.02f, 0), {hx, 0.02f, hz}, r, m.wood);
+  const glm::mat3 r = clutterYaw(yaw);
+  clutterBox(b, p + glm::vec3(0, h - 0.02f, 0), {hx, 0.02f, hz}, r, m.wood);
   for (float sx : {-1.0f, 1.0f})
     for (float sz : {-1.0f, 1.0f})
-      rotatedBox(b, p + r * glm::vec3(sx * (hx - 0.05f), 0.5f * (h - 0.04f), sz * (hz - 0.05f)), {0.025f, 0.5f * (h - 0.04f), 0.025f}, r, m.wood);
-  tableware(b, rng, m, p + glm::vec3(0, h, 0), hx, hz, yaw);
+      clutterBox(b, p + r * glm::vec3(sx * (hx - 0.05f), 0.5f * (h - 0.04f), sz * (hz - 0.05f)), {0.025f, 0.5f * (h - 0.04f), 0.025f}, r, m.wood);
+  clutterTableware(b, rng, m, p + glm::vec3(0, h, 0), hx, hz, yaw);
 }
 
-void chair(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 p) {
+void clutterChair(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 p) {
   // Built upright around its seat's centre, then turned and, one time in four, tipped onto its back or side.
-  glm::mat3 r = yawMatrix(rng.uniform(0, 2 * kPi));
+  glm::mat3 r = clutterYaw(rng.uniform(0, 2 * kPi));
   float lift = 0.0f;
   if (rng.uniform(0, 1) < 0.25f) {
     const float tip = rng.uniform(1.2f, 1.6f);
@@ -209,7 +209,7 @@ void chair(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec
     lift = 0.25f;
   }
   const glm::vec3 seat = p + glm::vec3(0, 0.45f - lift, 0);
-  auto part = [&](glm::vec3 local, glm::vec3 half) { rotatedBox(b, seat + r * local, half, r, m.darkWood); };
+  auto part = [&](glm::vec3 local, glm::vec3 half) { clutterBox(b, seat + r * local, half, r, m.darkWood); };
   part({0, 0, 0}, {0.21f, 0.02f, 0.21f});
   for (float sx : {-1.0f, 1.0f})
     for (float sz : {-1.0f, 1.0f}) part({sx * 0.18f, -0.225f, sz * 0.18f}, {0.018f, 0.225f, 0.018f});
@@ -222,7 +222,7 @@ void chair(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec
 // so the BVH cannot part them: a ray through a bush visits many boxes, one beside it few.
 // A plant is the only object of thousands of triangles: it stops adding leaves (each whole) once the scene
 // has `budget` triangles, so the scene's count ends within one small object of the one asked for.
-void plant(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 p, const Scene& scene, size_t budget) {
+void pottedPlant(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 p, const Scene& scene, size_t budget) {
   const float potR = rng.uniform(0.12f, 0.22f), potH = rng.uniform(0.2f, 0.35f);
   b.cylinder(p, {0, potH, 0}, potR, 12, m.pot);
   // Dense tussocks (pampas grass, a palm's fronds): the number of blades is what brought the unsorted
@@ -251,15 +251,15 @@ void plant(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec
 }
 
 // A pile of crates and tumbled boxes, stacked roughly, some at any angle.
-void pile(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 p) {
+void boxPile(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 p) {
   const int n = 3 + static_cast<int>(rng.next() % 10);
   float y = 0.0f;
   for (int i = 0; i < n; ++i) {
     const glm::vec3 half(rng.uniform(0.05f, 0.3f), rng.uniform(0.04f, 0.2f), rng.uniform(0.05f, 0.3f));
     const bool tumbled = rng.uniform(0, 1) < 0.5f;
-    const glm::mat3 r = tumbled ? randomRotation(rng) : yawMatrix(rng.uniform(0, 2 * kPi));
+    const glm::mat3 r = tumbled ? clutterRotation(rng) : clutterYaw(rng.uniform(0, 2 * kPi));
     const glm::vec3 c = p + glm::vec3(rng.uniform(-0.4f, 0.4f), y + half.y, rng.uniform(-0.4f, 0.4f));
-    rotatedBox(b, c, half, r, rng.uniform(0, 1) < 0.5f ? m.crate : m.books[static_cast<size_t>(rng.next() % m.books.size())]);
+    clutterBox(b, c, half, r, rng.uniform(0, 1) < 0.5f ? m.crate : m.books[static_cast<size_t>(rng.next() % m.books.size())]);
     y = rng.uniform(0, 1) < 0.6f ? y + 2.0f * half.y : 0.0f;
     if (y > 1.8f) y = 0.0f;
   }
@@ -269,10 +269,10 @@ void pile(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3
 // 4-sided segments; or one hanging straight down to a lamp shade. Their long diagonal segments have
 // bounding boxes far larger than themselves: the upper room becomes a web that rays going up must work
 // through, while rays going down stop in the clutter at once.
-void cable(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 p) {
+void hangingCable(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec3 p) {
   const glm::vec3 a(p.x, rng.uniform(2.0f, kRoomY), p.z);
   const bool hanging = rng.uniform(0, 1) < 0.15f;
-  const glm::vec3 e = floorSpot(rng) + glm::vec3(0, rng.uniform(2.0f, kRoomY), 0);
+  const glm::vec3 e = clutterFloorSpot(rng) + glm::vec3(0, rng.uniform(2.0f, kRoomY), 0);
   const float sag = rng.uniform(0.1f, 0.8f), drop = rng.uniform(0.5f, 1.5f);
   constexpr int kSegments = 8;
   glm::vec3 prev = hanging ? glm::vec3(p.x, kRoomY, p.z) : a;
@@ -288,7 +288,7 @@ void cable(MeshBuilder& b, SplitMixRng& rng, const ClutterMaterials& m, glm::vec
 
 // Moves the object made of the triangles from `first` on into the room's interior where it pokes out (a
 // tumbled box through the floor, a plant's leaves into a wall): it rests on the floor or against the wall.
-void keepInside(Scene& scene, size_t first) {
+void clutterKeepInside(Scene& scene, size_t first) {
   Bounds object;
   for (size_t i = first; i < scene.triangles.size(); ++i)
     for (const glm::vec3& v : scene.triangles[i].v) object.grow(v);
@@ -352,23 +352,23 @@ Scene makeClutter(uint32_t triangles) {
   MeshBuilder b(scene);
   const ClutterMaterials m = addClutterMaterials(b);
   SplitMixRng rng(kClutterSeed);
-  room(b, m);
-  shelves(b, rng, m);
-  Placement placement;
+  clutterRoom(b, m);
+  clutterShelves(b, rng, m);
+  ClutterPlacement placement;
   for (const Viewpoint& v : scene.viewpoints) placement.cameras.push_back(v.position);
   // Loose objects, one kind after another at random, until the budget is spent; a spot near a camera is
   // drawn again (the draws stay in the one sequence, so the scene still follows from N alone).
   while (scene.triangles.size() < triangles) {
     const uint64_t kind = rng.next() % 10;
-    const glm::vec3 p = floorSpot(rng);
+    const glm::vec3 p = clutterFloorSpot(rng);
     if (!placement.free(p, kind >= 8 ? 0.2f : 1.2f)) continue;
     const size_t first = scene.triangles.size();
-    if (kind < 1) table(b, rng, m, p);
-    else if (kind < 2) chair(b, rng, m, p);
-    else if (kind < 6) plant(b, rng, m, p, scene, triangles);
-    else if (kind < 8) pile(b, rng, m, p);
-    else cable(b, rng, m, p);
-    keepInside(scene, first);
+    if (kind < 1) clutterTable(b, rng, m, p);
+    else if (kind < 2) clutterChair(b, rng, m, p);
+    else if (kind < 6) pottedPlant(b, rng, m, p, scene, triangles);
+    else if (kind < 8) boxPile(b, rng, m, p);
+    else hangingCable(b, rng, m, p);
+    clutterKeepInside(scene, first);
   }
   return scene;
 }
