@@ -198,7 +198,6 @@ int runBenchCommand(const std::vector<std::string>& args) {
     std::fprintf(stderr, "raylab bench: %s\n\n%s", e.what(), benchHelp().c_str());
     return kExitUsage;
   }
-  std::filesystem::create_directories(plan.outDir);
   VulkanContext ctx(contextOptionsFor(plan.common));
   for (const BenchCell& cell : plan.cells)  // the whole plan, whichever shard: one refusal for every shard
     if (std::string why = unsupportedSettings(ctx.info(), cell.settings); !why.empty()) {
@@ -209,6 +208,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
       std::fprintf(stderr, "raylab bench: cell '%s': %s\n", cell.label.c_str(), beyond.c_str());
       return kExitUsage;
     }
+  std::filesystem::create_directories(plan.outDir);  // once the sweep is known to run: a refused one leaves no folder
   const std::string jsonlPath = plan.outDir + "/results.jsonl", csvPath = plan.outDir + "/results.csv";
   size_t failed = 0;
   try {
