@@ -6,13 +6,12 @@
 #include <stdexcept>
 
 #include "renderer/git_revision.h"
+#include "renderer/stages.h"
 #include "renderer/stats_json.h"
 
 namespace raylab {
 namespace {
 
-const char* const kStages[] = {"generate", "trace", "learn", "shade", "keys", "oracle-trace", "sort", "reorder",
-                               "accumulate", "tonemap", "megakernel", "setup", "counters", "trace+shade"};
 
 // A cell's CSV columns by name, each formatted as an ostream formats it (6 significant digits).
 class CsvRow {
@@ -46,7 +45,8 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   row.add("strategy", toString(s.strategy)).add("sort", toString(s.sort)).add("label", csvQuote(cell.label));
   row.add("frame_ms_median", r.frameMs.median).add("frame_ms_min", r.frameMs.min).add("frame_ms_max", r.frameMs.max);
   row.add("trace_after_first_ms", r.traceAfterFirstMs.median);
-  for (const char* st : kStages) row.add(std::string(st) + "_ms", r.stageMs.count(st) ? r.stageMs.at(st).median : 0.0);
+  for (const StageInfo& st : kStages)
+    row.add(std::string(st.name) + "_ms", r.stageMs.count(st.name) ? r.stageMs.at(st.name).median : 0.0);
   // Figures of our traversal loop do not exist with the rt tracer: written as n/a, never as numbers.
   auto loop = [&](double v) { return r.detailed.traversalStatsUnavailable.empty() ? std::to_string(v) : std::string("n/a"); };
   row.add("rays_per_second", r.raysPerSecond);
@@ -75,7 +75,7 @@ std::vector<std::string> benchCsvColumns() {
   std::vector<std::string> columns{"device", "driver", "git_revision", "scene", "view", "width", "height", "bounces",
                                    "spp_per_frame", "kernel", "tracer", "ser", "ser_reordering_hint", "strategy", "sort",
                                    "label", "frame_ms_median", "frame_ms_min", "frame_ms_max", "trace_after_first_ms"};
-  for (const char* s : kStages) columns.push_back(std::string(s) + "_ms");
+  for (const StageInfo& s : kStages) columns.push_back(std::string(s.name) + "_ms");
   for (const char* c : {"rays_per_second", "simt_efficiency", "virtual_warp_efficiency",
                         "virtual_warp_efficiency_after_first", "prediction_error_mean", "prediction_error_median",
                         "cell_hit_rate", "key_bits", "length_cache_bytes", "final_rel_mse", "sort_policy", "sorted_after",

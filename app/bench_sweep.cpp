@@ -2,6 +2,7 @@
 
 #include "app/setting_flags.h"
 #include "renderer/reorder/key_functions.h"
+#include "renderer/reorder/key_strategies.h"
 #include "scenes/scene_library.h"
 #include "scenes/temple_detail.h"
 
@@ -148,7 +149,7 @@ std::string shortNumber(float v) {
   return text;
 }
 
-bool usesGrid(KeyStrategy s) { return s != KeyStrategy::None && s != KeyStrategy::DeadLast; }
+bool usesGrid(KeyStrategy s) { return strategyInfo(s).usesGrid; }
 
 // Axes multiply: a sweep file of under 1 KB listing four axes 40 times each is 2.6 million cells, which
 // took minutes and gigabytes to plan before anything rendered (found by tests/fuzz). Far more cells than
@@ -303,8 +304,8 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
           };
           expand(axes.grids, "--grid");
           expand(axes.clamps, "--clamp");
-          if (so.strategy == KeyStrategy::Gaussian) expand(axes.resets, "--gauss-reset");
-          if (so.strategy == KeyStrategy::Fixed || so.strategy == KeyStrategy::TwoPoint) expand(axes.factors, "--fixed-factor");
+          if (strategyInfo(so.strategy).samplesGaussian) expand(axes.resets, "--gauss-reset");
+          if (strategyInfo(so.strategy).readsFixedLength) expand(axes.factors, "--fixed-factor");
           expand(axes.sortBits, "--sort-bits", /*gridOnly=*/false);
           expand(axes.fusions, "--fusion", /*gridOnly=*/false);
           expand(axes.compactions, "--compaction", /*gridOnly=*/false);
@@ -321,8 +322,8 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
                                                            std::to_string(v.grid.cells.y) + "x" + std::to_string(v.grid.cells.z);
               label += v.clampToCamera ? " clamp=" + std::to_string(int(v.clampDistance)) : " clamp=off";
             }
-            if (!axes.resets.empty() && v.strategy == KeyStrategy::Gaussian) label += " reset=" + shortNumber(v.gaussReset);
-            if (!axes.factors.empty() && (v.strategy == KeyStrategy::Fixed || v.strategy == KeyStrategy::TwoPoint))
+            if (!axes.resets.empty() && strategyInfo(v.strategy).samplesGaussian) label += " reset=" + shortNumber(v.gaussReset);
+            if (!axes.factors.empty() && strategyInfo(v.strategy).readsFixedLength)
               label += " factor=" + shortNumber(v.fixedFactor);
             if (v.sortPolicy != SortPolicy::Always) label += " policy=" + toString(v.sortPolicy);
             if (v.sortBits != 0) label += " bits=" + std::to_string(v.sortBits);
@@ -359,7 +360,7 @@ std::string benchHelp() {
          "  --grids auto,32x8x32      grid settings to sweep\n"
          "  --clamps off,50           camera clamp distances to sweep\n"
          "  --gauss-resets 20,inf     Gaussian reset thresholds to sweep\n"
-         "  --fixed-factors 0.5,0.25  fixed-length factors to sweep\n"
+         "  --fixed-factors 0.5,0.25  fixed-length factors to sweep (every strategy that reads the fixed length)\n"
          "  --tracers compute,rt      tracers to sweep (default: --tracer's); rt labels start with \"rt \"\n"
          "  --sers on,hint            SER cells of the rt megakernel (by hit; by hit with a key hint)\n"
          "  --ser-hints two-point,... key strategies whose keys make the SER hint (default two-point)\n"

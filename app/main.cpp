@@ -8,6 +8,7 @@
 #include "app/render_command.h"
 #include "app/scene_setup.h"
 #include "app/sortbench_command.h"
+#include "app/study_command.h"
 #include "app/window_command.h"
 #include "renderer/vk/vk_check.h"
 
@@ -24,6 +25,8 @@ void printHelp() {
       "  raylab sortbench [options]  time the GPU sorts alone (raylab sortbench --help)\n"
       "  raylab bench [options]      sweep strategies and sorts, write CSV/JSON (raylab bench --help;\n"
       "                              charts: app/bench_charts.py)\n"
+      "  raylab study SCENE[@VIEW]   where sorting pays on a scene: a standard sweep and an HTML report\n"
+      "                              (raylab study --help)\n"
       "  raylab devices              list Vulkan devices and whether each can run --tracer rt and --ser\n"
       "  raylab help, --help, -h     this text\n\n"
       "%s\nrender options (raylab render's; the window takes the settings among them, and --out and --stats\n"
@@ -40,6 +43,7 @@ int main(int argc, char** argv) {
   try {
     if (mode == "render") return raylab::runRenderCommand(rest);
     if (mode == "bench") return raylab::runBenchCommand(rest);
+    if (mode == "study") return raylab::runStudyCommand(rest);
     if (mode == "sortbench") return raylab::runSortBenchCommand(rest);
     if (mode == "devices") {
       for (const std::string& line : raylab::VulkanContext::describeDevices()) std::puts(line.c_str());

@@ -1,152 +1,206 @@
+// BVH construction through Embree's rtcBuildBVH (RTC_BUILD_QUALITY_MEDIUM: binned SAH, multi-threaded
+// through TBB): Embree decides the splits and leaf sizes; its callbacks build a temporary tree in Embree's
+// thread-local memory, which is then flattened into our depth-first layout.
+//
+// Why no spatial splits (RTC_BUILD_QUALITY_HIGH with splitPrimitive): they put one triangle into several
+// leaves, and every consumer of the BVH-order triangle array assumes one entry a triangle: the emitter
+// table (one emitter per emissive entry: duplicates would count a light twice), the rt tracer's bottom-level
+// structure (bvhOrderVertices: duplicated geometry), triangleOrder as a permutation (the wide BVH collapses
+// from it, the tests check it). Leaves would need an index array of their own, a new GPU indirection.
+//
+// Measured on a shared 2-core Debian 12 machine (raylab_bvh_report, docs/results/embree-bvh/README.md), the
+// hand-written single-threaded binned SAH builder this replaces (revision 6b6e6a7) against Embree 3.13.5
+// (ae7c3b5): SAH cost (bvh_sah.h, both costs 1), build CPU ms, nodes; the wall time was within the noise of
+// the other jobs on 2 cores:
+//   temple                  7,380 triangles  28.25 -> 27.44   3.4 ->   2.6 ms     6,491 ->     6,347 nodes
+//   Sponza                262,087            77.40 -> 75.19   188 ->   129 ms   262,529 ->   263,283
+//   temple-detail:1000000 1,001,040          36.04 -> 33.91   683 ->   583 ms 1,002,327 -> 1,002,031
 #include "renderer/bvh.h"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "renderer/bvh_sah.h"
+#include "renderer/embree_device.h"
 
 namespace raylab {
 namespace {
 
-constexpr int kBins = 16;
-constexpr uint32_t kMaxDepth = RL_BVH_STACK - 2;
+// The depth Embree may use: our root is depth 0 and the deepest leaf must stay below the shaders' stack.
+// Embree switches to its fallback "large leaf" splits (halving the primitive range) 8 levels before it
+// and fails a build that goes past it; the flattening checks our own depth against RL_BVH_STACK.
+constexpr uint32_t kEmbreeMaxDepth = RL_BVH_STACK - 2;
+constexpr uint32_t kEmbreeLeafLimit = RTC_BUILD_MAX_PRIMITIVES_PER_LEAF;
 
-float surfaceArea(const Bounds& b) {
-  if (b.empty()) return 0.0f;
-  glm::vec3 e = b.extent();
-  return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
+// The temporary tree, in memory Embree hands out per thread (rtcThreadLocalAlloc) and frees with the BVH.
+struct EmbreeBuildNode {
+  uint32_t leafCount = 0;  // 0: interior
+  uint32_t* prims = nullptr;  // leaf: the primitive ids (triangle indices)
+  EmbreeBuildNode* children[2] = {nullptr, nullptr};
+  RTCBounds childBounds[2];
+};
+
+void* embreeCreateNode(RTCThreadLocalAllocator alloc, unsigned int childCount, void*) {
+  if (childCount != 2) return nullptr;  // maxBranchingFactor is 2; anything else would be a broken build
+  return new (rtcThreadLocalAlloc(alloc, sizeof(EmbreeBuildNode), 16)) EmbreeBuildNode();
 }
 
-struct Builder {
-  const std::vector<Triangle>& tris;
-  std::vector<Bounds> triBounds;
-  std::vector<glm::vec3> centroids;
-  std::vector<uint32_t> order;
-  std::vector<gpu::BvhNode> nodes;
-  uint32_t maxLeaf;
-  BvhBuildStats stats;
+void embreeSetChildren(void* node, void** children, unsigned int childCount, void*) {
+  auto* n = static_cast<EmbreeBuildNode*>(node);
+  for (unsigned int i = 0; i < childCount && i < 2; ++i) n->children[i] = static_cast<EmbreeBuildNode*>(children[i]);
+}
 
-  Bounds rangeBounds(uint32_t first, uint32_t count, Bounds* centroidBounds) const {
-    Bounds b, c;
-    for (uint32_t i = first; i < first + count; ++i) {
-      b.grow(triBounds[order[i]]);
-      c.grow(centroids[order[i]]);
-    }
-    if (centroidBounds) *centroidBounds = c;
-    return b;
+void embreeSetBounds(void* node, const RTCBounds** bounds, unsigned int childCount, void*) {
+  auto* n = static_cast<EmbreeBuildNode*>(node);
+  for (unsigned int i = 0; i < childCount && i < 2; ++i) n->childBounds[i] = *bounds[i];
+}
+
+void* embreeCreateLeaf(RTCThreadLocalAllocator alloc, const RTCBuildPrimitive* prims, size_t count, void*) {
+  auto* n = new (rtcThreadLocalAlloc(alloc, sizeof(EmbreeBuildNode), 16)) EmbreeBuildNode();
+  n->leafCount = static_cast<uint32_t>(count);
+  n->prims = static_cast<uint32_t*>(rtcThreadLocalAlloc(alloc, sizeof(uint32_t) * std::max<size_t>(count, 1), 4));
+  for (size_t i = 0; i < count; ++i) n->prims[i] = prims[i].primID;
+  return n;
+}
+
+RTCBuildPrimitive primitiveOf(const Triangle& t, uint32_t index) {
+  for (const glm::vec3& v : t.v)  // checked per vertex: glm::min would drop a NaN
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+      throw std::invalid_argument("buildBvh: triangle " + std::to_string(index) + " has a non-finite vertex");
+  glm::vec3 lo = glm::min(t.v[0], glm::min(t.v[1], t.v[2]));
+  glm::vec3 hi = glm::max(t.v[0], glm::max(t.v[1], t.v[2]));
+  RTCBuildPrimitive p;
+  p.lower_x = lo.x, p.lower_y = lo.y, p.lower_z = lo.z, p.geomID = 0;
+  p.upper_x = hi.x, p.upper_y = hi.y, p.upper_z = hi.z, p.primID = index;
+  return p;
+}
+
+// Depth-first, siblings adjacent: a node's two children take the next two free slots, then the left
+// subtree is laid out before the right one (the layout the hand-written builder had, and the traversal's).
+struct BvhFlattener {
+  Bvh& bvh;
+
+  void leaf(uint32_t slot, const EmbreeBuildNode& n, uint32_t depth) {
+    bvh.nodes[slot].leftOrFirst = static_cast<uint32_t>(bvh.triangleOrder.size());
+    bvh.nodes[slot].triCount = n.leafCount;
+    bvh.triangleOrder.insert(bvh.triangleOrder.end(), n.prims, n.prims + n.leafCount);
+    bvh.stats.leafCount++;
+    bvh.stats.largestLeaf = std::max(bvh.stats.largestLeaf, n.leafCount);
+    bvh.stats.maxDepth = std::max(bvh.stats.maxDepth, depth);
   }
 
-  void makeLeaf(uint32_t node, uint32_t first, uint32_t count) {
-    nodes[node].leftOrFirst = first;
-    nodes[node].triCount = count;
-    stats.leafCount++;
-  }
-
-  // Returns the split position in [first, first+count) or 0 when a leaf is cheaper.
-  uint32_t findSplit(uint32_t first, uint32_t count, const Bounds& nodeBounds, const Bounds& cb) {
-    float nodeArea = surfaceArea(nodeBounds);
-    float bestCost = nodeArea * static_cast<float>(count);  // cost of a leaf, in triangle tests
-    int bestAxis = -1, bestBin = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-      float lo = cb.min[axis], hi = cb.max[axis];
-      if (!(hi > lo)) continue;
-      std::array<Bounds, kBins> binBounds;
-      std::array<uint32_t, kBins> binCount{};
-      float scale = kBins / (hi - lo);
-      for (uint32_t i = first; i < first + count; ++i) {
-        uint32_t t = order[i];
-        int b = std::min(kBins - 1, static_cast<int>((centroids[t][axis] - lo) * scale));
-        binBounds[b].grow(triBounds[t]);
-        binCount[b]++;
-      }
-      std::array<float, kBins> rightCost{};
-      Bounds acc;
-      uint32_t n = 0;
-      for (int b = kBins - 1; b > 0; --b) {
-        acc.grow(binBounds[b]);
-        n += binCount[b];
-        rightCost[b] = surfaceArea(acc) * static_cast<float>(n);
-      }
-      acc = Bounds();
-      n = 0;
-      for (int b = 0; b < kBins - 1; ++b) {
-        acc.grow(binBounds[b]);
-        n += binCount[b];
-        // One interior-node visit costs about one triangle test.
-        float cost = nodeArea + surfaceArea(acc) * static_cast<float>(n) + rightCost[b + 1];
-        if (n > 0 && n < count && cost < bestCost) {
-          bestCost = cost;
-          bestAxis = axis;
-          bestBin = b;
-        }
-      }
+  void node(uint32_t slot, const EmbreeBuildNode& n, uint32_t depth) {
+    if (depth >= RL_BVH_STACK) throw std::runtime_error("buildBvh: Embree's tree is deeper than RL_BVH_STACK");
+    if (n.leafCount > 0) return leaf(slot, n, depth);
+    if (!n.children[0] || !n.children[1])
+      throw std::runtime_error("buildBvh: Embree left an interior node without two children");
+    uint32_t left = static_cast<uint32_t>(bvh.nodes.size());
+    bvh.nodes.resize(bvh.nodes.size() + 2);
+    bvh.nodes[slot].leftOrFirst = left;
+    bvh.nodes[slot].triCount = 0;
+    for (uint32_t c = 0; c < 2; ++c) {
+      const RTCBounds& b = n.childBounds[c];
+      bvh.nodes[left + c].boundsMin = {b.lower_x, b.lower_y, b.lower_z};
+      bvh.nodes[left + c].boundsMax = {b.upper_x, b.upper_y, b.upper_z};
     }
-    if (bestAxis < 0) return 0;
-    float lo = cb.min[bestAxis];
-    float scale = kBins / (cb.max[bestAxis] - lo);
-    auto mid = std::partition(order.begin() + first, order.begin() + first + count, [&](uint32_t t) {
-      return std::min(kBins - 1, static_cast<int>((centroids[t][bestAxis] - lo) * scale)) <= bestBin;
-    });
-    return static_cast<uint32_t>(mid - order.begin());
-  }
-
-  void build(uint32_t node, uint32_t first, uint32_t count, uint32_t depth) {
-    stats.maxDepth = std::max(stats.maxDepth, depth);
-    Bounds cb;
-    Bounds b = rangeBounds(first, count, &cb);
-    nodes[node].boundsMin = b.min;
-    nodes[node].boundsMax = b.max;
-    uint32_t split = 0;
-    if (count > 1 && depth < kMaxDepth) split = findSplit(first, count, b, cb);
-    // Split by median on the widest centroid axis when SAH prefers a leaf that is too large.
-    if (split == 0 && count > maxLeaf && depth < kMaxDepth) {
-      glm::vec3 e = cb.extent();
-      int axis = e.x > e.y ? (e.x > e.z ? 0 : 2) : (e.y > e.z ? 1 : 2);
-      split = first + count / 2;
-      std::nth_element(order.begin() + first, order.begin() + split, order.begin() + first + count,
-                       [&](uint32_t a, uint32_t c) { return centroids[a][axis] < centroids[c][axis]; });
-    }
-    if (split == 0 || split == first || split == first + count) {
-      makeLeaf(node, first, count);
-      return;
-    }
-    uint32_t left = static_cast<uint32_t>(nodes.size());
-    nodes.resize(nodes.size() + 2);
-    nodes[node].leftOrFirst = left;
-    nodes[node].triCount = 0;
-    build(left, first, split - first, depth + 1);
-    build(left + 1, split, first + count - split, depth + 1);
+    node(left, *n.children[0], depth + 1);
+    node(left + 1, *n.children[1], depth + 1);
   }
 };
+
+// One rtcBuildBVH; null when Embree gave up (its depth limit with too small a leaf limit).
+const EmbreeBuildNode* runEmbreeBuild(RTCBVH handle, std::vector<RTCBuildPrimitive>& prims, uint32_t leafLimit) {
+  RTCBuildArguments args = rtcDefaultBuildArguments();
+  args.byteSize = sizeof(args);
+  args.buildQuality = RTC_BUILD_QUALITY_MEDIUM;
+  args.buildFlags = RTC_BUILD_FLAG_NONE;
+  args.maxBranchingFactor = 2;
+  args.maxDepth = kEmbreeMaxDepth;
+  args.sahBlockSize = 1;
+  args.minLeafSize = 1;
+  args.maxLeafSize = leafLimit;
+  // One interior-node visit (two child boxes) costs about one triangle test in our shaders' loop: the
+  // weights the hand-written builder used.
+  args.traversalCost = 1.0f;
+  args.intersectionCost = 1.0f;
+  args.bvh = handle;
+  args.primitives = prims.data();
+  args.primitiveCount = prims.size();
+  args.primitiveArrayCapacity = prims.size();  // no room to split primitives into: no spatial splits
+  args.createNode = embreeCreateNode;
+  args.setNodeChildren = embreeSetChildren;
+  args.setNodeBounds = embreeSetBounds;
+  args.createLeaf = embreeCreateLeaf;
+  args.splitPrimitive = nullptr;
+  args.buildProgress = nullptr;
+  args.userPtr = nullptr;
+  return static_cast<const EmbreeBuildNode*>(rtcBuildBVH(&args));
+}
+
+void emptyTree(Bvh& bvh) {
+  // An empty scene still gets a root that no ray enters (inverted bounds), with two children so that the
+  // root is an ordinary interior node.
+  gpu::BvhNode none{glm::vec3(1e30f), 0u, glm::vec3(-1e30f), 0u};
+  bvh.nodes.assign(3, none);
+  bvh.nodes[0].leftOrFirst = 1;
+}
 
 }  // namespace
 
 Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize) {
   auto start = std::chrono::steady_clock::now();
-  Builder b{triangles, {}, {}, {}, {}, std::max(1u, maxLeafSize), {}};
-  b.triBounds.resize(triangles.size());
-  b.centroids.resize(triangles.size());
-  b.order.resize(triangles.size());
-  for (size_t i = 0; i < triangles.size(); ++i) {
-    for (const glm::vec3& v : triangles[i].v) b.triBounds[i].grow(v);
-    b.centroids[i] = b.triBounds[i].center();
-    b.order[i] = static_cast<uint32_t>(i);
-  }
-  b.nodes.reserve(2 * triangles.size() + 1);
-  b.nodes.resize(1);
-  if (triangles.empty()) {
-    // An empty scene still gets a root that no ray enters.
-    b.nodes[0] = {glm::vec3(1e30f), 0u, glm::vec3(-1e30f), 0u};
-    b.nodes.push_back(b.nodes[0]);
-    b.nodes.push_back(b.nodes[0]);
-    b.nodes[0].leftOrFirst = 1;
-  } else {
-    b.build(0, 0, static_cast<uint32_t>(triangles.size()), 0);
-  }
   Bvh bvh;
-  bvh.nodes = std::move(b.nodes);
-  bvh.triangleOrder = std::move(b.order);
-  bvh.stats = b.stats;
+  if (triangles.empty()) {
+    emptyTree(bvh);
+  } else {
+    std::vector<RTCBuildPrimitive> source(triangles.size());
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (size_t i = 0; i < triangles.size(); ++i) {
+      source[i] = primitiveOf(triangles[i], static_cast<uint32_t>(i));
+      lo = glm::min(lo, glm::vec3(source[i].lower_x, source[i].lower_y, source[i].lower_z));
+      hi = glm::max(hi, glm::vec3(source[i].upper_x, source[i].upper_y, source[i].upper_z));
+    }
+    EmbreeDevice device;
+    RTCBVH handle = rtcNewBVH(device.get());
+    device.check("rtcNewBVH");
+    uint32_t leafLimit = std::clamp(maxLeafSize, 1u, kEmbreeLeafLimit);
+    const EmbreeBuildNode* root = nullptr;
+    std::vector<RTCBuildPrimitive> prims;
+    std::string error;
+    // Embree throws away a build whose fallback splits reach maxDepth ("depth limit reached"); bigger
+    // leaves need fewer levels, so that one error is retried with twice the leaf limit.
+    while (true) {
+      prims = source;  // Embree reorders the array it is given
+      root = runEmbreeBuild(handle, prims, leafLimit);
+      error = device.takeError();
+      if (root || leafLimit >= kEmbreeLeafLimit || error.find("depth limit") == std::string::npos) break;
+      leafLimit = std::min(leafLimit * 2, kEmbreeLeafLimit);
+    }
+    try {
+      if (!root || !error.empty())
+        throw std::runtime_error("buildBvh: Embree's rtcBuildBVH failed: " + (error.empty() ? "no tree" : error));
+      bvh.nodes.reserve(2 * triangles.size());
+      bvh.nodes.resize(1);
+      bvh.nodes[0].boundsMin = lo;
+      bvh.nodes[0].boundsMax = hi;
+      bvh.triangleOrder.reserve(triangles.size());
+      BvhFlattener{bvh}.node(0, *root, 0);
+    } catch (...) {
+      rtcReleaseBVH(handle);
+      throw;
+    }
+    rtcReleaseBVH(handle);
+    if (bvh.triangleOrder.size() != triangles.size())
+      throw std::runtime_error("buildBvh: Embree's leaves hold " + std::to_string(bvh.triangleOrder.size()) +
+                               " triangles of " + std::to_string(triangles.size()));
+    bvh.stats.maxLeafSize = leafLimit;
+  }
   bvh.stats.nodeCount = static_cast<uint32_t>(bvh.nodes.size());
+  bvh.stats.sahCost = bvhSahCost(bvh);
   bvh.stats.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }

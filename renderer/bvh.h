@@ -1,5 +1,6 @@
-// Binned SAH BVH built on the CPU and flattened into the node layout the shaders traverse
-// (shaders/shared_types.h: BvhNode). Triangles are reordered into leaf order.
+// The binary BVH the shaders traverse (shaders/shared_types.h: BvhNode), built on the CPU by Embree's
+// rtcBuildBVH (binned SAH, multi-threaded) and flattened into our node layout. Triangles are reordered
+// into leaf order.
 #pragma once
 
 #include <cstdint>
@@ -13,18 +14,28 @@ namespace raylab {
 struct BvhBuildStats {
   uint32_t nodeCount = 0;
   uint32_t leafCount = 0;
-  uint32_t maxDepth = 0;
-  double buildMs = 0.0;
+  uint32_t maxDepth = 0;      // of the deepest leaf; the root is depth 0
+  uint32_t largestLeaf = 0;   // triangles in the biggest leaf
+  uint32_t maxLeafSize = 0;   // the leaf-size limit the build ended with (above the requested one only
+                              // where the depth limit forced it)
+  double sahCost = 0.0;       // renderer/bvh_sah.h's cost with both costs 1
+  double buildMs = 0.0;       // the whole buildBvh call: Embree device, build and flattening
 };
 
+// Node 0 is the root. An interior node (triCount == 0) has its children at leftOrFirst and leftOrFirst + 1;
+// a leaf holds triangles leftOrFirst .. leftOrFirst + triCount - 1 in BVH order. Nodes are laid out depth
+// first, each pair of siblings adjacent. Every triangle appears exactly once (no spatial splits: see
+// bvh.cpp), so triangleOrder is a permutation.
 struct Bvh {
   std::vector<gpu::BvhNode> nodes;         // node 0 is the root
   std::vector<uint32_t> triangleOrder;     // BVH position -> index into Scene::triangles
   BvhBuildStats stats;
 };
 
-// Depth stays below the shaders' traversal stack (RL_BVH_STACK); leaves hold at most `maxLeafSize`
-// triangles unless that depth limit forces a bigger one.
-Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize = 4);
+// Depth stays below the shaders' traversal stack (RL_BVH_STACK); the SAH chooses each leaf's size up to
+// `maxLeafSize` triangles (at most 32, Embree's limit), unless the depth limit forces bigger leaves. No
+// triangles: a root whose inverted box no ray enters. Throws std::invalid_argument for a non-finite vertex
+// (the scene loaders refuse those already) and std::runtime_error if Embree fails.
+Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize = 8);
 
 }  // namespace raylab

@@ -3,14 +3,14 @@
 #include <algorithm>
 
 #include "renderer/reorder/key_functions.h"
+#include "renderer/reorder/key_strategies.h"
 
 namespace raylab {
 namespace {
 
-// Strategies that estimate where a ray ends (the cell-hit view compares that cell with the actual one).
-bool predictsLength(KeyStrategy k) {
-  return k == KeyStrategy::Fixed || usesLengthCache(k) || k == KeyStrategy::TwoPoint || k == KeyStrategy::Oracle;
-}
+// Strategies that estimate where a ray ends (the cell-hit view compares that cell with the actual one): those
+// that read a length, fixed or learned.
+bool predictsLength(KeyStrategy k) { return strategyInfo(k).readsFixedLength; }
 
 }  // namespace
 

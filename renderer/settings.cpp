@@ -2,22 +2,11 @@
 
 #include <utility>
 
+#include "renderer/reorder/key_strategies.h"
+
 namespace raylab {
 namespace {
 
-const std::pair<KeyStrategy, const char*> kStrategyNames[] = {
-    {KeyStrategy::None, "none"},
-    {KeyStrategy::DeadLast, "dead-last"},
-    {KeyStrategy::Fixed, "fixed"},
-    {KeyStrategy::Average, "average"},
-    {KeyStrategy::Ema, "ema"},
-    {KeyStrategy::Gaussian, "gaussian"},
-    {KeyStrategy::Origin, "origin"},
-    {KeyStrategy::Direction, "direction"},
-    {KeyStrategy::OriginDirection, "origin-direction"},
-    {KeyStrategy::TwoPoint, "two-point"},
-    {KeyStrategy::Oracle, "oracle"},
-};
 const std::pair<SortAlgorithm, const char*> kSortNames[] = {
     {SortAlgorithm::None, "none"}, {SortAlgorithm::Bitonic, "bitonic"}, {SortAlgorithm::Radix, "radix"},
     {SortAlgorithm::Tile, "tile"}};
@@ -59,13 +48,13 @@ std::optional<E> parse(const std::pair<E, const char*> (&table)[N], const std::s
 const std::vector<KeyStrategy>& allKeyStrategies() {
   static const std::vector<KeyStrategy> all = [] {
     std::vector<KeyStrategy> v;
-    for (const auto& [s, n] : kStrategyNames) v.push_back(s);
+    for (const KeyStrategyInfo& k : kKeyStrategies) v.push_back(k.strategy);
     return v;
   }();
   return all;
 }
 
-std::string toString(KeyStrategy s) { return nameOf(kStrategyNames, s); }
+std::string toString(KeyStrategy s) { return strategyInfo(s).name; }
 std::string toString(HeatmapView v) { return nameOf(kHeatmapNames, v); }
 std::optional<HeatmapView> parseHeatmapView(const std::string& n) { return parse(kHeatmapNames, n); }
 const std::vector<HeatmapView>& allHeatmapViews() {
@@ -82,7 +71,11 @@ std::optional<HeatmapKeyColour> parseHeatmapKeyColour(const std::string& n) { re
 std::optional<HeatmapScale> parseHeatmapScale(const std::string& n) { return parse(kScaleNames, n); }
 std::string toString(SortAlgorithm s) { return nameOf(kSortNames, s); }
 std::string toString(Kernel k) { return nameOf(kKernelNames, k); }
-std::optional<KeyStrategy> parseKeyStrategy(const std::string& n) { return parse(kStrategyNames, n); }
+std::optional<KeyStrategy> parseKeyStrategy(const std::string& n) {
+  for (const KeyStrategyInfo& k : kKeyStrategies)
+    if (n == k.name) return k.strategy;
+  return std::nullopt;
+}
 std::optional<SortAlgorithm> parseSortAlgorithm(const std::string& n) { return parse(kSortNames, n); }
 std::optional<Kernel> parseKernel(const std::string& n) { return parse(kKernelNames, n); }
 std::string toString(Tracer t) { return nameOf(kTracerNames, t); }
@@ -100,7 +93,7 @@ std::optional<TraceShade> parseTraceShade(const std::string& n) { return parse(k
 
 std::string keyStrategyNames() {
   std::string s;
-  for (const auto& [v, n] : kStrategyNames) s += (s.empty() ? "" : "|") + std::string(n);
+  for (const KeyStrategyInfo& k : kKeyStrategies) s += (s.empty() ? "" : "|") + std::string(k.name);
   return s;
 }
 

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "renderer/heatmap_rules.h"
+#include "renderer/reorder/key_strategies.h"
 #include "renderer/settings_validation.h"
 #include "ui/panel_layout.h"
 
@@ -61,12 +62,22 @@ void unavailableLine(const char* text, const std::string& why) {
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", why.c_str());
 }
 
-void drawSortSection(Settings& s, const ViewOptions& view) {
+// A line and a greyed title between the sections of one tab (ImGui 1.86, Debian 12's, has no SeparatorText).
+void sectionTitle(const char* title) {
+  ImGui::Separator();
+  ImGui::TextDisabled("%s", title);
+}
+
+void drawSortSection(Settings& s) {
   comboSetting("strategy", s, &Settings::strategy, allKeyStrategies());
   comboSetting("sort", s, &Settings::sort, {SortAlgorithm::None, SortAlgorithm::Bitonic, SortAlgorithm::Radix, SortAlgorithm::Tile});
   comboEnum("sort policy", s.sortPolicy, {SortPolicy::Always, SortPolicy::Never, SortPolicy::Auto});
   sliderU32("sorted key bits", s.sortBits, 0, 32);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("order only the key's top bits (0: all); 8 fewer is one radix pass less");
+}
+
+// How the frame is traced and shaded, and what it renders.
+void drawPipelineSection(Settings& s, ViewOptions& view) {
   comboSetting("fusion", s, &Settings::fusion, {Fusion::None, Fusion::Keys, Fusion::Gather, Fusion::Both});
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("keys: made in shade; gather: the reorder done by the next trace (compute wavefront only)");
@@ -91,13 +102,17 @@ void drawSortSection(Settings& s, const ViewOptions& view) {
   }
   if (!view.serUnavailable.empty()) {
     unavailableLine(("SER: " + toString(s.ser) + " (unavailable)").c_str(), view.serUnavailable);
-    return;
+  } else {
+    ImGui::BeginDisabled(s.tracer != Tracer::Rt || s.kernel != Kernel::Megakernel);
+    comboEnum("SER", s.ser, {Ser::Off, Ser::On, Ser::Hint});
+    ImGui::EndDisabled();
+    if (s.ser == Ser::Hint) ImGui::TextDisabled("hint: top bits of the strategy's key");
   }
-  ImGui::BeginDisabled(s.tracer != Tracer::Rt || s.kernel != Kernel::Megakernel);
-  comboEnum("SER", s.ser, {Ser::Off, Ser::On, Ser::Hint});
-  ImGui::EndDisabled();
-  if (s.ser == Ser::Hint)
-    ImGui::TextDisabled("hint: top bits of the strategy's key");
+  ImGui::Separator();
+  sliderU32("bounces", s.bounces, 1, L::kMaxBounces);
+  sliderU32("samples per frame", s.sppPerFrame, 1, L::kMaxSpp, kLog);
+  ImGui::SliderFloat("resolution scale", &view.resolutionScale, ViewOptions::kMinScale, ViewOptions::kMaxScale, "%.2f", kClamp);
+  ImGui::SliderFloat("exposure", &s.exposure, 0.01f, 100.0f, "%.2f", kLog);
 }
 
 void drawGridSection(Settings& s) {
@@ -117,15 +132,14 @@ void drawGridSection(Settings& s) {
 
 // Parameters of the length estimates; each is greyed out unless the chosen strategy uses it.
 void drawLengthSection(Settings& s) {
-  const KeyStrategy k = s.strategy;
-  ImGui::BeginDisabled(k != KeyStrategy::Fixed && k != KeyStrategy::TwoPoint && k != KeyStrategy::Average &&
-                       k != KeyStrategy::Ema && k != KeyStrategy::Gaussian);
+  const KeyStrategyInfo& k = strategyInfo(s.strategy);
+  ImGui::BeginDisabled(!k.readsFixedLength);
   ImGui::SliderFloat("fixed-length factor", &s.fixedFactor, L::kMinFixedFactor, L::kMaxFixedFactor, "%.3f", kClamp);
   ImGui::EndDisabled();
-  ImGui::BeginDisabled(k != KeyStrategy::Ema);
+  ImGui::BeginDisabled(!k.readsEmaAlpha);
   ImGui::SliderFloat("EMA alpha", &s.emaAlpha, L::kMinEmaAlpha, L::kMaxEmaAlpha, "%.3f", kLog);
   ImGui::EndDisabled();
-  ImGui::BeginDisabled(k != KeyStrategy::Gaussian);
+  ImGui::BeginDisabled(!k.samplesGaussian);
   bool never = std::isinf(s.gaussReset);
   if (ImGui::Checkbox("never reset", &never)) s.gaussReset = never ? INFINITY : 20.0f;
   ImGui::BeginDisabled(never);
@@ -134,7 +148,7 @@ void drawLengthSection(Settings& s) {
   ImGui::EndDisabled();
   ImGui::SliderFloat("outlier sigmas", &s.gaussOutlier, 0.0f, L::kMaxGaussOutlier, "%.2f", kClamp);
   ImGui::EndDisabled();
-  ImGui::BeginDisabled(k != KeyStrategy::Average && k != KeyStrategy::Ema && k != KeyStrategy::Gaussian);
+  ImGui::BeginDisabled(!k.learnsLengths);
   sliderU32("learn from 1 ray in", s.learnEvery, 1, 64);
   ImGui::EndDisabled();
 }
@@ -191,19 +205,37 @@ void drawMethodPanel(Settings& s, ViewOptions& view) {
     return;
   }
   ImGui::PushItemWidth(150);
-  drawSortSection(s, view);
-  sliderU32("bounces", s.bounces, 1, L::kMaxBounces);
-  sliderU32("samples per frame", s.sppPerFrame, 1, L::kMaxSpp, kLog);
-  ImGui::SliderFloat("resolution scale", &view.resolutionScale, ViewOptions::kMinScale, ViewOptions::kMaxScale, "%.2f", kClamp);
-  ImGui::SliderFloat("exposure", &s.exposure, 0.01f, 100.0f, "%.2f", kLog);
-  if (ImGui::CollapsingHeader("Key grid", ImGuiTreeNodeFlags_DefaultOpen)) drawGridSection(s);
-  if (ImGui::CollapsingHeader("Length estimates", ImGuiTreeNodeFlags_DefaultOpen)) drawLengthSection(s);
-  if (ImGui::CollapsingHeader("Heatmap", ImGuiTreeNodeFlags_DefaultOpen)) drawHeatmapSection(s);
-  ImGui::PopItemWidth();
-  if (ImGui::Button("Reset to defaults")) {
-    s = methodDefaults(s);
-    view.resolutionScale = view.defaultScale;
+  // Three tabs: all of the panel's controls in one column at 1280x720 measured 755 px, so the grid, clamp,
+  // Gaussian and heatmap controls sat below the fold. The keys' tab (what a reordering study tunes live)
+  // opens first and fits the default layout's height.
+  if (ImGui::BeginTabBar("method tabs")) {
+    if (ImGui::BeginTabItem("Keys")) {
+      drawSortSection(s);
+      sectionTitle("key grid");
+      ImGui::BeginDisabled(!strategyInfo(s.strategy).usesGrid);  // dead-last and none make no cells
+      drawGridSection(s);
+      ImGui::EndDisabled();
+      sectionTitle("length estimates");
+      drawLengthSection(s);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Pipeline")) {
+      drawPipelineSection(s, view);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Heatmap")) {
+      drawHeatmapSection(s);
+      ImGui::EndTabItem();
+    }
+    // At the tab bar's right end, not a row of its own below the controls.
+    if (ImGui::TabItemButton("Reset", ImGuiTabItemFlags_Trailing)) {
+      s = methodDefaults(s);
+      view.resolutionScale = view.defaultScale;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("every method setting back to its default (the scene and view stay)");
+    ImGui::EndTabBar();
   }
+  ImGui::PopItemWidth();
   ImGui::End();
 }
 

@@ -46,8 +46,9 @@ Box defaultPanelBox(Panel panel, float w, float h) {
   // Two columns as wide as their contents want, narrower in a small window; each split top and bottom.
   const auto [left, right] = columnsFor(w);
   const float usable = std::max(60.0f, h - 3.0f * kMargin);
-  // Speed vs accuracy gets the larger share on the right: its plot and table need it; timing scrolls.
-  const float methodHeight = std::min(540.0f, 0.6f * usable), timingHeight = 0.45f * usable;
+  // Speed vs accuracy gets the larger share on the right: its plot and table need it; timing scrolls. The
+  // Method panel's keys tab needs 418 px: at 1280x720 (usable 696) 0.62 of the height shows it whole.
+  const float methodHeight = std::min(540.0f, 0.62f * usable), timingHeight = 0.45f * usable;
   Box b;
   switch (panel) {
     case Panel::Method: b = {kMargin, kMargin, kMargin + left, kMargin + methodHeight}; break;
@@ -93,7 +94,7 @@ Box PanelLayout::place(const Anchored& a, float w, float h) {
   return {x0, y0, x0 + a.width, y0 + a.height};
 }
 
-Box PanelLayout::keepInside(Panel panel, const Box& actual, bool collapsed, float w, float h) {
+Box PanelLayout::keepInside(Panel panel, const Box& actual, bool collapsed, float w, float h, float hiddenHeight) {
   auto [it, fresh] = entries_.try_emplace(panel);
   Entry& e = it->second;
   Box want = actual;
@@ -118,19 +119,20 @@ Box PanelLayout::keepInside(Panel panel, const Box& actual, bool collapsed, floa
   Box placed = clampToDisplay(want, w, h);
   e.lastReturned = placed;
   e.displayWidth = w, e.displayHeight = h;
-  record(panelTitle(panel), actual, collapsed);  // as drawn this frame: what a screenshot shows
+  record(panelTitle(panel), actual, collapsed, hiddenHeight);  // as drawn this frame: what a screenshot shows
   return placed;
 }
 
-void PanelLayout::record(const std::string& title, const Box& drawn, bool collapsed) {
-  rects_.push_back({title, drawn, collapsed});
+void PanelLayout::record(const std::string& title, const Box& drawn, bool collapsed, float hiddenHeight) {
+  rects_.push_back({title, drawn, collapsed, hiddenHeight});
 }
 
 nlohmann::json panelRectsJson(const std::vector<PanelRect>& rects, float w, float h) {
   nlohmann::json list = nlohmann::json::array();
   for (const PanelRect& r : rects)
     list.push_back({{"title", r.title}, {"x", r.box.x0}, {"y", r.box.y0}, {"width", r.box.x1 - r.box.x0},
-                    {"height", r.box.y1 - r.box.y0}, {"collapsed", r.collapsed}});
+                    {"height", r.box.y1 - r.box.y0}, {"collapsed", r.collapsed},
+                    {"hidden_height", r.hiddenHeight}});
   return {{"display", {w, h}}, {"rects", list}};
 }
 

@@ -36,6 +36,7 @@ struct PanelRect {
   std::string title;
   Box box;
   bool collapsed = false;
+  float hiddenHeight = 0.0f;  // content below the panel's bottom edge (ImGui's scroll range): 0 when it all shows
 };
 
 class PanelLayout {
@@ -43,12 +44,14 @@ class PanelLayout {
   // Every frame for every panel, with where ImGui has it: returns where it must be. A box that differs from
   // the last one returned is the user's doing and becomes the panel's preferred place; a change of display
   // size moves the panel by its anchors from that preferred place. A collapsed panel keeps its size.
-  Box keepInside(Panel panel, const Box& actual, bool collapsed, float displayWidth, float displayHeight);
+  // `hiddenHeight` (its content below the bottom edge) is only recorded.
+  Box keepInside(Panel panel, const Box& actual, bool collapsed, float displayWidth, float displayHeight,
+                 float hiddenHeight = 0.0f);
   void forget() { entries_.clear(); }  // after a reset: the defaults become the preferred places
   // Where each panel was drawn this frame (before any correction), in call order.
   const std::vector<PanelRect>& rects() const { return rects_; }
   // A window placed by other means (the heatmap legend), listed with the panels.
-  void record(const std::string& title, const Box& drawn, bool collapsed = false);
+  void record(const std::string& title, const Box& drawn, bool collapsed = false, float hiddenHeight = 0.0f);
   void startFrame() { rects_.clear(); }
 
  private:
@@ -69,8 +72,9 @@ class PanelLayout {
   std::vector<PanelRect> rects_;
 };
 
-// {"display": [w, h], "rects": [{"title", "x", "y", "width", "height", "collapsed"}, ...]}: in the window
-// screenshot's sidecar, so tests can check that every panel is inside the window.
+// {"display": [w, h], "rects": [{"title", "x", "y", "width", "height", "collapsed", "hidden_height"}, ...]}: in
+// the window screenshot's sidecar, so tests can check that every panel is inside the window and which panels
+// must be scrolled to reach their controls.
 nlohmann::json panelRectsJson(const std::vector<PanelRect>& rects, float displayWidth, float displayHeight);
 
 }  // namespace raylab

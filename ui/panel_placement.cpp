@@ -19,7 +19,7 @@ bool keepPanelInside(Panel panel, PanelLayout& layout) {
   if (!window) return false;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const Box actual{window->Pos.x, window->Pos.y, window->Pos.x + window->Size.x, window->Pos.y + window->Size.y};
-  const Box placed = layout.keepInside(panel, actual, window->Collapsed, display.x, display.y);
+  const Box placed = layout.keepInside(panel, actual, window->Collapsed, display.x, display.y, window->ScrollMax.y);
   if (placed.x0 != actual.x0 || placed.y0 != actual.y0) ImGui::SetWindowPos(panelTitle(panel), ImVec2(placed.x0, placed.y0));
   const bool resized = placed.x1 - placed.x0 != actual.x1 - actual.x0 || placed.y1 - placed.y0 != actual.y1 - actual.y0;
   const bool moved = placed.x0 != actual.x0 || placed.y0 != actual.y0;
@@ -32,7 +32,7 @@ void recordWindow(const char* title, PanelLayout& layout) {
   ImGuiWindow* window = ImGui::FindWindowByName(title);
   if (!window || !window->Active) return;  // not drawn this frame
   layout.record(title, {window->Pos.x, window->Pos.y, window->Pos.x + window->Size.x, window->Pos.y + window->Size.y},
-                window->Collapsed);
+                window->Collapsed, window->ScrollMax.y);
 }
 
 }  // namespace raylab

@@ -5,6 +5,8 @@
 #include <cstdio>
 
 #include "renderer/reorder/key_functions.h"
+#include "renderer/reorder/key_strategies.h"
+#include "renderer/stages.h"
 
 namespace raylab {
 namespace {
@@ -12,10 +14,7 @@ namespace {
 using Baseline = MethodKey::Baseline;
 
 // Strategies whose keys read the fixed length (as the estimate, the seed of a cache, or a miss's end point).
-bool readsFixedLength(KeyStrategy s) {
-  return s == KeyStrategy::Fixed || s == KeyStrategy::TwoPoint || s == KeyStrategy::Average || s == KeyStrategy::Ema ||
-         s == KeyStrategy::Gaussian || s == KeyStrategy::Oracle;
-}
+bool readsFixedLength(KeyStrategy s) { return strategyInfo(s).readsFixedLength; }
 
 std::string number(const char* name, float v) {
   char text[48];
@@ -58,8 +57,8 @@ MethodKey methodKeyOf(const Settings& s) {
     k.grid = GridSetting{false, 0, {0, 0, 0}};
   }
   if (readsFixedLength(s.strategy)) k.fixedFactor = s.fixedFactor;
-  if (s.strategy == KeyStrategy::Ema) k.emaAlpha = s.emaAlpha;
-  if (s.strategy == KeyStrategy::Gaussian) k.gaussOutlier = s.gaussOutlier, k.gaussReset = s.gaussReset;
+  if (strategyInfo(s.strategy).readsEmaAlpha) k.emaAlpha = s.emaAlpha;
+  if (strategyInfo(s.strategy).samplesGaussian) k.gaussOutlier = s.gaussOutlier, k.gaussReset = s.gaussReset;
   k.sortBits = s.sortBits;
   if (usesLengthCache(s.strategy)) k.learnEvery = s.learnEvery;
   if (s.sorts() && s.tracer == Tracer::Compute) k.fusion = s.fusion;  // elsewhere it does nothing
@@ -88,8 +87,8 @@ std::string describe(const MethodKey& k) {
     if (k.clampDistance > 0.0f) text += number("clamp", k.clampDistance);
   }
   if (readsFixedLength(k.strategy)) text += " |" + number("f", k.fixedFactor);
-  if (k.strategy == KeyStrategy::Ema) text += number("a", k.emaAlpha);
-  if (k.strategy == KeyStrategy::Gaussian) text += number("out", k.gaussOutlier) + number("reset", k.gaussReset);
+  if (strategyInfo(k.strategy).readsEmaAlpha) text += number("a", k.emaAlpha);
+  if (strategyInfo(k.strategy).samplesGaussian) text += number("out", k.gaussOutlier) + number("reset", k.gaussReset);
   if (k.sortBits != 0) text += " | bits " + std::to_string(k.sortBits);
   if (k.learnEvery > 1) text += " | learn 1/" + std::to_string(k.learnEvery);
   if (k.fusion != Settings{}.fusion) text += " | fused " + toString(k.fusion);
@@ -157,8 +156,10 @@ void SpeedAccuracyBook::record(const Settings& rendered, const FrameStats& stats
   p.lastSeen = ++frame_;
   // A fused trace and shade has no trace time of its own to put on the axis.
   if (hasStage(stats, "trace") && !hasStage(stats, "trace+shade")) p.traceMs.add(stats.stageTotal("trace"));
-  p.reorderMs.add(stats.stageTotal("learn") + stats.stageTotal("keys") + stats.stageTotal("sort") +
-                  stats.stageTotal("reorder") + stats.stageTotal("oracle-trace"));
+  double reorderMs = 0.0;
+  for (const StageInfo& st : kStages)
+    if (isSortingCost(st.name)) reorderMs += stats.stageTotal(st.name);
+  p.reorderMs.add(reorderMs);
   p.frameMs.add(stats.frameMs);
   p.predictionError.add(meanOverBounces(stats.bounces, &BounceStats::predictionErrorMean, true));
   p.cellHitRate.add(meanOverBounces(stats.bounces, &BounceStats::cellHitRate, true));

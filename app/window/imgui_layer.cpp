@@ -55,8 +55,10 @@ std::string ImGuiSession::save() {
   try {
     writeFileChecked(iniPath_, std::string_view(text, size));
   } catch (const WriteError& e) {
-    return e.what();
+    if (lastFailure_ == e.what()) return "";
+    return lastFailure_ = e.what();
   }
+  lastFailure_.clear();
   return "";
 }
 

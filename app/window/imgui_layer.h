@@ -28,15 +28,19 @@ class ImGuiSession {
   ImGuiSession& operator=(const ImGuiSession&) = delete;
 
   // Saves imgui.ini when ImGui asks for it (io.WantSaveIniSettings: a panel moved, at most every few
-  // seconds); returns the failure ("cannot write PATH: reason"), empty when saved or nothing was due.
+  // seconds); returns the failure ("cannot write PATH: reason"), empty when saved or nothing was due. A
+  // failure is returned once, not at every later save that fails the same way (a read-only config folder
+  // would otherwise fill the log and the window's list of failed writes); a save that works, or fails
+  // differently, ends that silence.
   std::string saveIfDue();
-  // The last save, at the end of the run; returns the failure, empty when saved.
+  // The last save, at the end of the run; returns the failure (once, as above), empty when saved.
   std::string close();
 
  private:
   std::string save();
 
   std::string iniPath_;
+  std::string lastFailure_;  // the failure already returned, until a save works
   bool closed_ = false;
 };
 

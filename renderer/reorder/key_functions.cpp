@@ -9,17 +9,14 @@
 
 #include "renderer/reorder/key_functions.h"
 
+#include "renderer/reorder/key_strategies.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
 
 namespace raylab {
 
-static_assert(static_cast<uint32_t>(KeyStrategy::None) == RL_KEY_NONE);
-static_assert(static_cast<uint32_t>(KeyStrategy::DeadLast) == RL_KEY_DEAD_LAST);
-static_assert(static_cast<uint32_t>(KeyStrategy::Gaussian) == RL_KEY_GAUSSIAN);
-static_assert(static_cast<uint32_t>(KeyStrategy::TwoPoint) == RL_KEY_TWO_POINT);
-static_assert(static_cast<uint32_t>(KeyStrategy::Oracle) == RL_KEY_ORACLE);
 
 uint32_t pcgHash(uint32_t v) {
   uint32_t state = v * 747796405u + 2891336453u;
@@ -53,11 +50,9 @@ uint32_t keyCached(const KeyParams& p, const KeyEnv& env, const KeyPath& path, b
 
 }  // namespace
 
-uint32_t strategyId(KeyStrategy s) { return static_cast<uint32_t>(s); }
+uint32_t strategyId(KeyStrategy s) { return strategyInfo(s).shaderId; }
 
-bool usesLengthCache(KeyStrategy s) {
-  return s == KeyStrategy::Average || s == KeyStrategy::Ema || s == KeyStrategy::Gaussian;
-}
+bool usesLengthCache(KeyStrategy s) { return strategyInfo(s).learnsLengths; }
 
 uint32_t spatialKeyBits(KeyStrategy s, const gpu::GpuKeyGrid& g) {
   switch (s) {

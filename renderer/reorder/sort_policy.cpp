@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "renderer/stages.h"
+
 namespace raylab {
 namespace {
 
@@ -104,10 +106,11 @@ void SortPolicyModel::record(const SortPlan& plan, const std::vector<StageTime>&
   for (const StageTime& st : stages) {
     if (st.bounce < 0 || size_t(st.bounce) >= bounces) continue;
     const size_t b = size_t(st.bounce);
-    if (st.stage == "trace" || st.stage == "shade" || st.stage == "trace+shade") next[b] += st.ms;
-    else if (st.stage == "keys" || st.stage == "oracle-trace" || st.stage == "sort" || st.stage == "reorder")
-      cost[b] += st.ms;
-    else if (st.stage == "learn" && b >= 1) cost[b - 1] += st.ms;  // learning the rays sorted after b-1
+    const StageInfo* info = findStage(st.stage);
+    if (!info) continue;
+    if (info->role == StageRole::PathWork) next[b] += st.ms;
+    else if (info->role == StageRole::Reorder) cost[b] += st.ms;
+    else if (info->role == StageRole::LearnBefore && b >= 1) cost[b - 1] += st.ms;  // the rays sorted after b-1
   }
   if (estimates_.size() < bounces) estimates_.resize(bounces);
   for (size_t b = 0; b + 1 < bounces; ++b) {

@@ -2,10 +2,13 @@
 // StageTimer* and wrap each dispatch chain in begin/end; nullptr means untimed.
 #pragma once
 
+#include <stdexcept>
+#include <string>
 #include <string_view>
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/stages.h"
 #include "renderer/vk/compute_pipeline.h"
 
 namespace raylab {
@@ -21,6 +24,8 @@ class StageTimer {
 class ScopedStage {
  public:
   ScopedStage(StageTimer* timer, VkCommandBuffer cmd, std::string_view stage) : timer_(timer), cmd_(cmd) {
+    // Every stage has a row in renderer/stages.h, where the bench, the charts and the UI read them from.
+    if (!findStage(stage)) throw std::logic_error("stage '" + std::string(stage) + "' is not in renderer/stages.h");
     if (timer_) timer_->begin(cmd_, stage);
   }
   ~ScopedStage() {

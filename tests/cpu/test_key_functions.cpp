@@ -10,6 +10,7 @@
 #include "renderer/reorder/key_accuracy.h"
 #include "renderer/reorder/key_functions.h"
 #include "renderer/reorder/key_grid.h"
+#include "renderer/reorder/key_strategies.h"
 
 namespace raylab {
 namespace {
@@ -156,6 +157,40 @@ TEST(KeyAccuracy, FiguresOnHandMadeArrays) {
   EXPECT_EQ(toJson(a)["cache_bytes"], 1234);
   alive = {0, 0, 0, 0, 0};
   EXPECT_EQ(measureKeyAccuracy(grid, {origin, dir, predicted, hit, alive, {}}, 2, 9, 0, 0).evaluated, 0u);
+}
+
+// The strategy table's "reads the fixed length" and "uses the grid" are what the key functions do: with an
+// empty length cache and an oracle miss, a strategy's predicted length follows the fixed length exactly when
+// the table says it reads it, and its key changes with the grid's resolution exactly when it uses the grid.
+TEST(KeyStrategyTable, SaysWhatTheKeyFunctionsRead) {
+  Bounds b;
+  b.min = glm::vec3(0);
+  b.max = glm::vec3(10, 4, 6);
+  auto keyOf = [&](KeyStrategy strategy, float fixedLength, uint32_t cells, float& len) {
+    Settings s;
+    s.grid.automatic = false;
+    s.grid.cells = glm::uvec3(cells);
+    GpuKeyParams p{};
+    p.grid = makeKeyGrid(b, {}, s).gpu;
+    p.fixedLength = fixedLength;
+    p.cache.lengthMax = 20.0f;
+    const KeyPath path{{1.3f, 1.1f, 0.7f}, glm::normalize(glm::vec3(0.6f, 0.3f, 0.74f)), 9, -1.0f};  // a miss
+    return computeKey(strategyId(strategy), p, KeyEnv{}, path, 1u, len);
+  };
+  for (const KeyStrategyInfo& info : kKeyStrategies) {
+    if (info.strategy == KeyStrategy::None) continue;
+    float shortLen = 0, longLen = 0, coarseLen = 0;
+    const uint32_t shortKey = keyOf(info.strategy, 1.0f, 16, shortLen);
+    const uint32_t longKey = keyOf(info.strategy, 7.0f, 16, longLen);
+    const uint32_t coarseKey = keyOf(info.strategy, 1.0f, 2, coarseLen);
+    EXPECT_EQ(shortLen != longLen, info.readsFixedLength) << info.name << ": length " << shortLen << " vs " << longLen;
+    if (info.readsFixedLength) {
+      EXPECT_NE(shortKey, longKey) << info.name;
+    }
+    EXPECT_EQ(shortKey != coarseKey, info.usesGrid) << info.name;
+    EXPECT_EQ(strategyId(info.strategy), info.shaderId);
+    EXPECT_EQ(parseKeyStrategy(info.name), info.strategy);
+  }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "renderer/vk/shader_table.h"
 #include "renderer/vk/spirv_reflect.h"
 #include "shaders/heatmap_types.h"
+#include "shaders/hit_query_types.h"
 #include "shaders/key_types.h"
 #include "shaders/shared_types.h"
 #include "shaders/sort_types.h"
@@ -35,6 +36,7 @@ static_assert(sizeof(GpuHits) == 4 * 8);
 static_assert(offsetof(GpuFrame, scene) == 64);
 static_assert(offsetof(GpuFrame, state) == 64 + sizeof(GpuScene));
 static_assert(sizeof(PathStagePush) == 16);
+static_assert(sizeof(HitQueryPush) == 4 * 8 + 8);
 
 TEST(SharedLayout, StructSizesMatchScalarLayout) {
   // Scalar layout packs vec3 in 12 bytes with 4-byte alignment, as glm does on the host.
@@ -62,7 +64,7 @@ TEST(SharedLayout, PushConstantBlocksMatchTheHostStructs) {
       {"shade_rt", sizeof(PathStagePush)},       {"megakernel_rt", sizeof(PathStagePush)},
       {"megakernel_rt_atomic", sizeof(PathStagePush)}, {"megakernel_ser", sizeof(RtSerPush)},
       {"rt_miss", 0},                            {"rt_shadow_miss", 0},
-      {"rt_closest_hit", 0},
+      {"rt_closest_hit", 0},                     {"hit_query", sizeof(HitQueryPush)},
   };
   for (const auto& [name, bytes] : shaders)
     EXPECT_EQ(raylab::spirvPushConstantBytes(raylab::shaderSpirv(name)), bytes) << name;

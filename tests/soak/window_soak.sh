@@ -15,7 +15,8 @@ raylab=$(realpath "$1")
 frames=${2:-10000}
 out=${3:-soak-out}
 [ "$frames" -ge 30 ] || { echo "window_soak: FRAMES must be at least 30" >&2; exit 2; }
-command -v xvfb-run >/dev/null || { echo "window_soak: needs xvfb-run (apt-get install xvfb)" >&2; exit 2; }
+command -v Xvfb >/dev/null || { echo "window_soak: needs Xvfb (apt-get install xvfb)" >&2; exit 2; }
+on_xvfb="$(cd "$(dirname "${BASH_SOURCE[0]}")/../cli" && pwd)/on_xvfb.sh"
 mkdir -p "$out"
 out=$(realpath "$out")
 warm=$(( frames >= 1500 ? 500 : frames / 3 ))
@@ -55,7 +56,7 @@ every=$(( (frames - warm) / 10 > block ? (frames - warm) / 10 : block ))
 
 start=$(date +%s)
 code=0
-(cd "$out" && xvfb-run -a -s "-screen 0 640x480x24" "$raylab" --window-size 160x90 --scale 1 --screenshot-dir "$out" \
+(cd "$out" && bash "$on_xvfb" 640x480x24 "$raylab" --window-size 160x90 --scale 1 --screenshot-dir "$out" \
    --script "$out/soak-script.txt" >"$out/soak-stdout.txt" 2>"$out/soak-stderr.txt") || code=$?
 seconds=$(( $(date +%s) - start ))
 [ $code -eq 0 ] || { echo "window_soak: the window exited $code" >&2; tail -20 "$out/soak-stderr.txt" >&2; exit 1; }

@@ -14,6 +14,12 @@ expect() {
   fi
 }
 expect 2 render --size 0x100
+expect 2 study
+expect 2 study temple cornell
+expect 2 study temple --sizes 0x0
+expect 2 study temple --sizes 512x256,100000x1
+expect 2 study temple --frobnicate
+expect 2 study temple --out-dir
 expect 2 render --size 100
 expect 2 render --size 100000x100
 expect 2 render --size -5x10

@@ -21,7 +21,7 @@ wait 2
 screenshot-window stepped
 quit
 SCRIPT
-timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$raylab" --window-size 160x90 --scale 1 --render-budget-ms 3 \
+timeout 600 bash "$on_xvfb" 1280x720x24 "$raylab" --window-size 160x90 --scale 1 --render-budget-ms 3 \
   --frame-log log.jsonl --screenshot-dir shots --script script.txt >run.log 2>&1 ||
   { echo "FAIL: the window exited $?"; tail -20 run.log; exit 1; }
 if grep -q "validation error" run.log; then echo "FAIL: validation errors"; grep "validation error" run.log | head; exit 1; fi

@@ -31,7 +31,7 @@ strategies="none fixed average gaussian two-point"
   for s in $strategies; do printf 'set strategy %s\nwait %d\n' "$s" "$frames"; done
   printf 'set sort-policy auto\nwait %d\nquit\n' "$auto_frames"
 } >script.txt
-timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$raylab" --window-size $size --scale 1 \
+timeout 600 bash "$on_xvfb" 1280x720x24 "$raylab" --window-size $size --scale 1 \
   --frame-log log.jsonl --script script.txt >window.log 2>&1 || { echo "FAIL: the window exited $?"; tail -20 window.log; exit 1; }
 if grep -q "validation error" window.log; then echo "FAIL: validation errors"; grep "validation error" window.log | head; exit 1; fi
 for s in $strategies auto; do

@@ -6,7 +6,7 @@ set -eu
 raylab="$1"
 source "$(dirname "$0")/../window_test_setup.sh"  # skips without a window; temporary folder; validation on
 # The smallest render scale: this test is about the panels, not the image.
-xvfb() { timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$raylab" --scale 0.05 --screenshot-dir shots "$@"; }
+xvfb() { timeout 600 bash "$on_xvfb" 1280x720x24 "$raylab" --scale 0.05 --screenshot-dir shots "$@"; }
 
 for size in 1280x720 800x500; do
   printf '%s\n' "set strategy gaussian" "set heatmap traversal-steps" "wait 2" "screenshot-window steps-$size" \

@@ -9,7 +9,7 @@ repo="$2"
 source "$(dirname "$0")/../window_test_setup.sh"  # skips without a window; temporary folder; validation on
 # Generous: the scripted run walks every setting combination (about 500 frames) and shares two cores with
 # the other tests.
-xvfb() { timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" "$raylab" "$@"; }
+xvfb() { timeout 600 bash "$on_xvfb" 1280x720x24 "$raylab" "$@"; }
 
 # The names come from the program itself: the render help lists the strategies, and a script with a wrong
 # heatmap is rejected with the list of views (before any window opens).
@@ -135,7 +135,7 @@ assert json.load(open('shots/remembered.json'))['settings']['bounces'] == 4, 'ho
 # Unasked files go to the config folder ($XDG_CONFIG_HOME/raylab), never the working directory.
 mkdir -p cwd cfg
 printf 'wait 1\nscreenshot default-place\nquit\n' >place.txt
-(cd cwd && XDG_CONFIG_HOME="$dir/cfg" timeout 120 xvfb-run -a -s "-screen 0 1280x720x24" "$raylab" --window-size 160x90 \
+(cd cwd && XDG_CONFIG_HOME="$dir/cfg" timeout 120 bash "$on_xvfb" 1280x720x24 "$raylab" --window-size 160x90 \
    --script ../place.txt >../place.log 2>&1) || { echo "FAIL: default-place run"; tail place.log; exit 1; }
 [ -s cfg/raylab/screenshots/default-place.png ] || { echo "FAIL: screenshot not in the config folder"; ls -R cfg cwd; exit 1; }
 grep -qF '$XDG_CONFIG_HOME/raylab/screenshots' "$repo/README.md" ||

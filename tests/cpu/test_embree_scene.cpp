@@ -1,0 +1,89 @@
+// The CPU hit reference (renderer/embree_scene.h) checked itself: Embree's closest hit and shadow-ray answer
+// against a brute-force double-precision intersection of every triangle, on the temple with random rays.
+// The GPU traversal is then checked against Embree (tests/gpu/test_embree_hits.cpp), where brute force
+// over Sponza's 262k triangles would be too slow.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "renderer/embree_scene.h"
+#include "scenes/procedural.h"
+
+namespace raylab {
+namespace {
+
+struct ExactHit {
+  double t = -1.0;
+  uint32_t triangle = 0;
+};
+
+// Moeller-Trumbore in double, both faces, t > 0.
+ExactHit exactClosestHit(const std::vector<Triangle>& tris, glm::dvec3 o, glm::dvec3 d) {
+  ExactHit best;
+  for (uint32_t i = 0; i < tris.size(); ++i) {
+    const Triangle& t = tris[i];
+    glm::dvec3 e1 = glm::dvec3(t.v[1]) - glm::dvec3(t.v[0]), e2 = glm::dvec3(t.v[2]) - glm::dvec3(t.v[0]);
+    glm::dvec3 p = glm::cross(d, e2);
+    double det = glm::dot(e1, p);
+    if (std::abs(det) < 1e-15) continue;
+    glm::dvec3 s = o - glm::dvec3(t.v[0]);
+    double u = glm::dot(s, p) / det;
+    glm::dvec3 q = glm::cross(s, e1);
+    double v = glm::dot(d, q) / det;
+    double dist = glm::dot(e2, q) / det;
+    if (u >= 0 && v >= 0 && u + v <= 1 && dist > 0 && (best.t < 0 || dist < best.t)) best = {dist, i};
+  }
+  return best;
+}
+
+TEST(EmbreeScene, ClosestHitsAndShadowRaysEqualBruteForceOnTheTemple) {
+  Scene temple = makeTemple();
+  EmbreeScene embree(temple.triangles);
+  Bounds b = temple.bounds();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::normal_distribution<float> gauss;
+  uint32_t rays = 0, hits = 0, sameTriangle = 0, tMismatch = 0, shadowMismatch = 0;
+  for (int i = 0; i < 3000; ++i) {
+    glm::vec3 o = b.min + glm::vec3(unit(rng), unit(rng), unit(rng)) * b.extent();
+    glm::vec3 d = glm::normalize(glm::vec3(gauss(rng), gauss(rng), gauss(rng)));
+    ExactHit ref = exactClosestHit(temple.triangles, o, d);
+    EmbreeHit hit = embree.intersect(o, d);
+    ++rays;
+    if (ref.t < 1e-4) continue;  // a miss, or an origin on a surface: either answer is right
+    ++hits;
+    if (std::abs(hit.t - ref.t) > 1e-4 * (1.0 + ref.t)) ++tMismatch;
+    sameTriangle += hit.triangle == ref.triangle;
+    // A shadow ray to a point before the hit is free, one past it is blocked.
+    shadowMismatch += embree.occluded(o, d, static_cast<float>(0.99 * ref.t));
+    shadowMismatch += !embree.occluded(o, d, static_cast<float>(1.01 * ref.t));
+  }
+  EXPECT_GT(hits, rays / 2);
+  EXPECT_EQ(tMismatch, 0u);
+  EXPECT_EQ(shadowMismatch, 0u);
+  // Two triangles can share the hit point (an edge, coplanar faces): the triangle may differ there only.
+  EXPECT_GE(sameTriangle, hits * 99 / 100);
+}
+
+TEST(EmbreeScene, EmptySceneAndTMaxAreHonoured) {
+  EmbreeScene empty({});
+  EXPECT_LT(empty.intersect({0, 0, 0}, {0, 0, 1}).t, 0.0f);
+  EXPECT_FALSE(empty.occluded({0, 0, 0}, {0, 0, 1}, 1e30f));
+  std::vector<Triangle> one(1);
+  one[0].v[0] = {-1, -1, 2};
+  one[0].v[1] = {1, -1, 2};
+  one[0].v[2] = {0, 1, 2};
+  EmbreeScene scene(one);
+  EmbreeHit hit = scene.intersect({0, 0, 0}, {0, 0, 1});
+  EXPECT_NEAR(hit.t, 2.0f, 1e-6f);
+  EXPECT_EQ(hit.triangle, 0u);
+  EXPECT_LT(scene.intersect({0, 0, 0}, {0, 0, 1}, 1.5f).t, 0.0f);   // beyond tMax
+  EXPECT_LT(scene.intersect({0, 0, 0}, {0, 0, -1}).t, 0.0f);        // behind the origin
+  EXPECT_NEAR(scene.intersect({0, 0, 4}, {0, 0, -1}).t, 2.0f, 1e-6f);  // the back face counts
+  EXPECT_TRUE(scene.occluded({0, 0, 0}, {0, 0, 1}, 3.0f));
+  EXPECT_FALSE(scene.occluded({0, 0, 0}, {0, 0, 1}, 1.0f));
+}
+
+}  // namespace
+}  // namespace raylab

@@ -1,0 +1,81 @@
+// raylab_bvh_report: builds the BVH of each scene named on the command line `repeats` times and prints one
+// JSON line a scene (triangles, nodes, leaves, depth, SAH cost, build ms: median and min of the wall time,
+// median of the process CPU time). It measures the builder on its own, without a Vulkan device or a render
+// (docs/results/embree-bvh/README.md).
+// Usage: raylab_bvh_report [--repeats N] [--max-leaf N] [--out FILE] SCENE...
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "renderer/bvh.h"
+#include "renderer/bvh_sah.h"
+#include "renderer/checked_write.h"
+#include "scenes/scene_library.h"
+
+int main(int argc, char** argv) {
+  int repeats = 5;
+  uint32_t maxLeaf = 0;  // 0: buildBvh's default
+  std::string outPath;
+  std::vector<std::string> scenes;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--repeats" && i + 1 < argc) {
+      repeats = std::max(1, std::atoi(argv[++i]));
+    } else if (a == "--max-leaf" && i + 1 < argc) {
+      maxLeaf = static_cast<uint32_t>(std::max(1, std::atoi(argv[++i])));
+    } else if (a == "--out" && i + 1 < argc) {
+      outPath = argv[++i];
+    } else {
+      scenes.push_back(a);
+    }
+  }
+  if (scenes.empty()) {
+    std::fprintf(stderr, "usage: raylab_bvh_report [--repeats N] [--max-leaf N] [--out FILE] SCENE...\n");
+    return 2;
+  }
+  std::string lines;
+  try {
+    for (const std::string& name : scenes) {
+      raylab::Scene scene = raylab::loadSceneByName(name);
+      std::vector<double> ms, cpuMs;
+      raylab::Bvh bvh;
+      for (int r = 0; r < repeats; ++r) {
+        // Process CPU time (every thread's) beside the wall time: on a shared machine the wall time says
+        // as much about the other jobs as about the builder.
+        std::clock_t cpu0 = std::clock();
+        bvh = maxLeaf ? raylab::buildBvh(scene.triangles, maxLeaf) : raylab::buildBvh(scene.triangles);
+        cpuMs.push_back(1000.0 * static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC);
+        ms.push_back(bvh.stats.buildMs);
+      }
+      std::sort(ms.begin(), ms.end());
+      std::sort(cpuMs.begin(), cpuMs.end());
+      uint32_t largestLeaf = 0;
+      for (const raylab::gpu::BvhNode& n : bvh.nodes) largestLeaf = std::max(largestLeaf, n.triCount);
+      nlohmann::json row = {{"scene", name},
+                            {"triangles", scene.triangles.size()},
+                            {"nodes", bvh.stats.nodeCount},
+                            {"leaves", bvh.stats.leafCount},
+                            {"largest_leaf", largestLeaf},
+                            {"max_leaf_size", maxLeaf ? nlohmann::json(maxLeaf) : nlohmann::json("default")},
+                            {"max_depth", bvh.stats.maxDepth},
+                            {"sah_cost", raylab::bvhSahCost(bvh)},
+                            {"build_ms_median", ms[ms.size() / 2]},
+                            {"build_ms_min", ms.front()},
+                            {"build_cpu_ms_median", cpuMs[cpuMs.size() / 2]},
+                            {"repeats", repeats}};
+      lines += row.dump() + "\n";
+      std::printf("%s\n", row.dump().c_str());
+      std::fflush(stdout);
+    }
+    if (!outPath.empty()) raylab::writeFileChecked(outPath, lines);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "raylab_bvh_report: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
