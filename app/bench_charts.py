@@ -16,7 +16,14 @@ count (<case> = scene-view-b<bounces>), draw only its stage breakdown, and add p
                          independent), against the triangle count (log), one column per bounce count; a
                          dashed line where the BVH (nodes + triangles) passes the H200's 50 MB L2
   crossover_bounces_<view>.png    the same ratios against the bounce count, one column per scene size
-Uses Debian's python3-matplotlib (run with /usr/bin/python3).
+Sweeps over the path count (--sizes, --spps) name each case by its size and spp too
+(<case> = scene-view-WxH-sppN) and add
+  paths_per_frame.png    the best sorted frame over the best unsorted one, and the megakernel's over the best
+                         unsorted one, against paths per frame (width x height x spp, log), one line per case
+                         and bounce count; below them the same ratios against the unsorted virtual warp
+                         efficiency of bounces >= 1
+Uses Debian's python3-matplotlib (run with /usr/bin/python3). Exit status: 0 charts drawn, 1 a chart could
+not be written (named), 2 usage, 3 matplotlib is missing.
 """
 import csv
 import json
@@ -24,7 +31,20 @@ import math
 import os
 import sys
 
-import matplotlib
+EXIT_NO_MATPLOTLIB = 3  # app/bench_charts_run.cpp knows it: no charts, and no error of the sweep
+
+# `raylab bench` runs this script at the end of a sweep with --quiet-if-unavailable and tells this exit
+# status from a chart that failed: a machine without matplotlib keeps its CSV, and the bench says so, once.
+QUIET_IF_UNAVAILABLE = "--quiet-if-unavailable" in sys.argv[1:]
+if QUIET_IF_UNAVAILABLE:
+    sys.argv.remove("--quiet-if-unavailable")
+try:
+    import matplotlib
+except ImportError:
+    if not QUIET_IF_UNAVAILABLE:
+        print("bench_charts.py: matplotlib is missing (Debian: apt-get install python3-matplotlib): no charts drawn",
+              file=sys.stderr)
+    sys.exit(EXIT_NO_MATPLOTLIB)
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -43,7 +63,8 @@ def load(folder):
     with open(os.path.join(folder, "results.jsonl")) as f:
         for line in f:
             j = json.loads(line)
-            key = (j["settings"]["scene"], j["view"], j["label"])
+            st = j["settings"]
+            key = (st["scene"], j["view"], j["label"], paths_group_of(st["width"], st["height"], st["spp_per_frame"]))
             curves[key] = (j["result"]["error_curve_ms"], j["result"]["error_curve_rel_mse"])
     return rows, curves
 
@@ -64,8 +85,28 @@ def scene_name(row):
     return scene.replace(":", "-")
 
 
-def case_name(row, with_bounces=False):
-    return f'{scene_name(row)}-{row["view"]}' + (f'-b{row["bounces"]}' if with_bounces else "")
+def paths_group_of(width, height, spp):
+    """The (width, height, spp) a cell's paths per frame come from: cells of one case differ by it in a
+    --sizes/--spps sweep."""
+    return (int(width), int(height), int(spp))
+
+
+def paths_group(row):
+    return paths_group_of(row["width"], row["height"], row["spp_per_frame"])
+
+
+def paths_per_frame(row):
+    """width x height x spp: the CSV's column, or made from the size for a CSV from before it."""
+    if row.get("paths_per_frame"):
+        return int(row["paths_per_frame"])
+    w, h, spp = paths_group(row)
+    return w * h * spp
+
+
+def case_name(row, with_bounces=False, with_paths=False):
+    w, h, spp = paths_group(row)
+    return (f'{scene_name(row)}-{row["view"]}' + (f"-{w}x{h}-spp{spp}" if with_paths else "")
+            + (f'-b{row["bounces"]}' if with_bounces else ""))
 
 
 def num(row, key):
@@ -117,7 +158,7 @@ def speed_accuracy(rows, title, path):
 def equal_time(rows, curves, title, path):
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for r in rows:
-        ms, err = curves.get((r["scene"], r["view"], r["label"]), ([], []))
+        ms, err = curves.get((r["scene"], r["view"], r["label"], paths_group(r)), ([], []))
         if ms and min(err) > 0:
             ax.plot(ms, err, marker=".", label=r["label"])
     ax.set_xscale("log")
@@ -274,16 +315,91 @@ def crossover_bounces(rows, methods, title, path):
     plt.close(fig)
 
 
-def crossover_charts(folder, rows):
+def crossover_charts(folder, all_rows):
+    # The ratios compare cells of one image size and spp: a --sizes/--spps sweep gets a set per size and spp.
+    groups = sorted({paths_group(r) for r in all_rows})
+    for group in groups:
+        rows = [r for r in all_rows if paths_group(r) == group]
+        suffix = f"-{group[0]}x{group[1]}-spp{group[2]}" if len(groups) > 1 else ""
+        crossover_charts_of(folder, rows, suffix)
+
+
+def crossover_charts_of(folder, rows, suffix):
     for (view, tracer), methods in frame_ratios(rows).items():
         view_rows = [r for r in rows if r["view"] == view and r["tracer"] == tracer]
-        name = view + ("" if tracer == "compute" else f"-{tracer}")
-        title = f'{view}, {tracer} tracer, {rows[0]["width"]}x{rows[0]["height"]}, {rows[0]["device"]}'
+        name = view + ("" if tracer == "compute" else f"-{tracer}") + suffix
+        title = (f'{view}, {tracer} tracer, {rows[0]["width"]}x{rows[0]["height"]} at {rows[0]["spp_per_frame"]} spp, '
+                 f'{rows[0]["device"]}')
         if len({r["triangles"] for r in view_rows}) > 1:
             crossover_triangles(view_rows, methods, title, os.path.join(folder, f"crossover_triangles_{name}.png"))
         if len({r["bounces"] for r in view_rows}) > 1:
             crossover_bounces(view_rows, methods, title, os.path.join(folder, f"crossover_bounces_{name}.png"))
         print(f"crossover charts for {name} in {folder}")
+
+
+def is_unsorted(row):
+    """Any unsorted wavefront cell: the bench's own and its variants (compaction, trace and shade fused)."""
+    return row["kernel"] == "wavefront" and row["strategy"] == "none"
+
+
+def is_megakernel(row):
+    return row["kernel"] == "megakernel" and row["strategy"] == "none" and row.get("ser", "off") == "off"
+
+
+def path_count_ratios(rows):
+    """{(case, bounces, tracer): [(paths per frame, best sorted / best unsorted, megakernel / best unsorted,
+    unsorted virtual warp efficiency of bounces >= 1 or nan)]}, sorted by paths; a point only where the
+    group has an unsorted frame. Best: the fastest median frame of the kind in that group."""
+    groups = {}
+    for r in rows:
+        key = (f'{scene_name(r)}@{r["view"]}', int(r["bounces"]), r.get("tracer", "compute"), paths_group(r))
+        groups.setdefault(key, []).append(r)
+    lines = {}
+    for (case, bounces, tracer, _), group in groups.items():
+        def best(pick):
+            times = [num(r, "frame_ms_median") for r in group if pick(r)]
+            times = [t for t in times if t > 0]
+            return min(times) if times else float("nan")
+        unsorted = best(is_unsorted)
+        if not unsorted > 0:
+            continue
+        sorted_best = best(lambda r: r["kernel"] == "wavefront" and r["strategy"] != "none")
+        mega = best(is_megakernel)
+        vwe = [num(r, "virtual_warp_efficiency_after_first") for r in group if is_baseline(r)]
+        vwe = vwe[0] if vwe and vwe[0] >= 0 else float("nan")
+        lines.setdefault((case, bounces, tracer), []).append(
+            (paths_per_frame(group[0]), sorted_best / unsorted, mega / unsorted, vwe))
+    return {k: sorted(v) for k, v in lines.items()}
+
+
+def paths_chart(rows, path):
+    lines = path_count_ratios(rows)
+    several_tracers = len({k[2] for k in lines}) > 1
+    fig, axes = plt.subplots(2, 2, figsize=(12, 9))
+    for i, ((case, bounces, tracer), pts) in enumerate(sorted(lines.items())):
+        label = f"{case}, {bounces} bounce{'s' if bounces != 1 else ''}" + (f", {tracer}" if several_tracers else "")
+        colour = f"C{i % 10}"
+        for col, index in ((0, 1), (1, 2)):
+            axes[0][col].plot([p[0] for p in pts], [p[index] for p in pts], marker="o", color=colour, label=label)
+            coherent = [p for p in pts if p[3] == p[3]]  # nan: not measured (--no-detail, the rt tracer)
+            axes[1][col].scatter([p[3] for p in coherent], [p[index] for p in coherent], color=colour, label=label)
+    for col, what in ((0, "best sorted frame"), (1, "megakernel frame")):
+        top, bottom = axes[0][col], axes[1][col]
+        top.set_xscale("log")
+        top.set_xlabel("paths per frame (width x height x spp)")
+        bottom.set_xlabel("unsorted virtual warp efficiency, bounces >= 1")
+        bottom.set_xlim(0, 1)
+        for ax in (top, bottom):
+            ax.axhline(1.0, color="black", lw=0.8)
+            ax.set_ylabel(f"{what} / best unsorted frame")
+    axes[0][0].set_title("Sorting: below 1 it pays", fontsize=9)
+    axes[0][1].set_title("The megakernel: below 1 it beats the unsorted wavefront", fontsize=9)
+    axes[0][1].legend(fontsize=7)
+    fig.suptitle(f'Frame ratios against the path count — {rows[0]["device"]}', fontsize=10)
+    fig.tight_layout()
+    save(fig, path)
+    plt.close(fig)
+    print(f"paths chart in {path}")
 
 
 def main():
@@ -292,13 +408,18 @@ def main():
         return 2
     folder = sys.argv[1]
     rows, curves = load(folder)
+    if not rows:
+        print(f"bench_charts.py: {folder}/results.csv has no cells: no charts", file=sys.stderr)
+        return 0
     several_bounces = len({r["bounces"] for r in rows}) > 1
+    several_paths = len({paths_group(r) for r in rows}) > 1
     scale_sweep = several_bounces or len({r["scene"] for r in rows if r["scene"].startswith("temple-detail")}) > 1
     cases = {}
     for r in rows:
-        cases.setdefault(case_name(r, several_bounces), []).append(r)
+        cases.setdefault(case_name(r, several_bounces, several_paths), []).append(r)
     for name, case_rows in cases.items():
-        title = f'{name}, {case_rows[0]["width"]}x{case_rows[0]["height"]}, {case_rows[0]["device"]}'
+        title = (f'{name}, {case_rows[0]["width"]}x{case_rows[0]["height"]} at {case_rows[0]["spp_per_frame"]} spp, '
+                 f'{case_rows[0]["device"]}')
         stacked_stages(case_rows, title, os.path.join(folder, f"stages_{name}.png"))
         if scale_sweep:
             continue
@@ -310,6 +431,8 @@ def main():
         print(f"charts for {name} in {folder}")
     if scale_sweep:
         crossover_charts(folder, rows)
+    if len({paths_per_frame(r) for r in rows}) > 1:
+        paths_chart(rows, os.path.join(folder, "paths_per_frame.png"))
     return 0
 
 

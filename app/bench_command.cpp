@@ -8,12 +8,16 @@
 #include <memory>
 #include <set>
 
+#include "app/bench_charts_run.h"
 #include "app/bench_measure.h"
+#include "app/bench_merge.h"
+#include "app/bench_shard.h"
 #include "app/bench_results.h"
 #include "app/bench_resume.h"
 #include "app/bench_sweep.h"
 #include "app/scene_setup.h"
 #include "renderer/checked_write.h"
+#include "renderer/device_limits.h"
 #include "renderer/rt_tracer.h"
 #include "renderer/stats_json.h"
 #include "renderer/git_revision.h"
@@ -21,13 +25,38 @@
 namespace raylab {
 namespace {
 
+// What a case's reference image and error curve depend on besides the scene: one per group of cells.
+struct ReferenceGroup {
+  uint32_t bounces = 0, width = 0, height = 0, spp = 0;
+  bool operator==(const ReferenceGroup& o) const {
+    return bounces == o.bounces && width == o.width && height == o.height && spp == o.spp;
+  }
+  void applyTo(Settings& s) const {
+    s.bounces = bounces;
+    s.width = width;
+    s.height = height;
+    s.sppPerFrame = spp;
+  }
+};
+ReferenceGroup referenceGroupOf(const Settings& s) { return {s.bounces, s.width, s.height, s.sppPerFrame}; }
+
+// The reference's samples per frame: all of them in one frame where that is few paths, else as many as keep
+// a frame within the cell's own path count or 2M paths, whichever is more. 64 spp at 4096x2048 would be half
+// a billion paths in one frame, past the settings' limit and any device's memory.
+uint32_t referenceSppPerFrame(const Settings& base, uint32_t spp) {
+  const uint64_t pixels = std::max<uint64_t>(1, uint64_t(base.width) * base.height);
+  const uint64_t budget = std::max<uint64_t>(pixels * base.sppPerFrame, uint64_t(1) << 21);
+  const uint64_t fits = std::max<uint64_t>(1, std::min<uint64_t>(budget, SettingLimits::kMaxPathsPerFrame) / pixels);
+  return static_cast<uint32_t>(std::min<uint64_t>({spp, SettingLimits::kMaxSpp, fits}));
+}
+
 // The reference image of a case: the megakernel with many samples.
 std::vector<glm::vec3> renderReference(PathTracer& tracer, const Settings& base, uint32_t spp) {
   Settings ref = base;
   ref.kernel = Kernel::Megakernel;
   ref.strategy = KeyStrategy::None;
   ref.seed = base.seed + 1000003;  // independent of the measured frames' samples
-  ref.sppPerFrame = std::min<uint32_t>(spp, SettingLimits::kMaxSpp);
+  ref.sppPerFrame = referenceSppPerFrame(base, spp);
   tracer.applySettings(ref);
   tracer.restartAccumulation();
   for (uint32_t done = 0; done < spp; done += ref.sppPerFrame) tracer.renderFrame();
@@ -58,16 +87,28 @@ std::vector<std::string> withoutOutDir(std::vector<std::string> args) {
 
 // The plan to run: from the arguments, or with --resume DIR from DIR's sweep.json (the arguments recorded
 // there when none are given), refused unless it is the sweep DIR recorded at this build. Throws UsageError.
-BenchPlan planFor(std::vector<std::string> args, std::string* resumeDir, std::vector<std::string>* recordArgs) {
+BenchPlan planFor(std::vector<std::string> args, std::string* resumeDir, std::vector<std::string>* recordArgs,
+                  BenchShard* shard) {
   *resumeDir = takeResume(args);
+  const bool shardGiven = std::find(args.begin(), args.end(), "--shard") != args.end();
+  *shard = takeShard(args);
   if (resumeDir->empty()) {
     *recordArgs = withoutOutDir(args);
     return parseBenchPlan(args);
   }
   if (std::find(args.begin(), args.end(), "--out-dir") != args.end())
     throw UsageError("--resume DIR continues the sweep in DIR: leave out --out-dir");
-  const SweepRecord recorded = readSweepRecord(*resumeDir);
+  SweepRecord recorded;
+  try {
+    recorded = readSweepRecord(*resumeDir);
+  } catch (const UsageError& e) {
+    throw UsageError(std::string("--resume ") + e.what());
+  }
   if (args.empty()) args = recorded.args;
+  if (!shardGiven) *shard = recorded.shard;
+  if (!(*shard == recorded.shard))
+    throw UsageError("--resume " + *resumeDir + ": it holds shard " + recorded.shard.text() + " of its sweep, not " +
+                     shard->text());
   *recordArgs = withoutOutDir(args);
   BenchPlan plan = parseBenchPlan(args);
   plan.outDir = *resumeDir;
@@ -78,13 +119,16 @@ BenchPlan planFor(std::vector<std::string> args, std::string* resumeDir, std::ve
 // Runs every cell not in `finished`, case by case, appending each result durably to `jsonl` as it ends;
 // returns how many cells failed. A case that fails (a scene that does not load, a device error) fails its
 // cells and the sweep goes on; a result that cannot be stored (WriteError) ends the sweep.
-size_t runCells(const BenchPlan& plan, const VulkanContext& ctx, const std::set<size_t>& finished, AppendFile& jsonl) {
+size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanContext& ctx, const std::set<size_t>& finished,
+                AppendFile& jsonl) {
+  size_t total = 0;  // this shard's cells
+  for (size_t i = 0; i < plan.cells.size(); ++i) total += shard.contains(i);
   size_t done = finished.size(), failed = 0;
   auto start = std::chrono::steady_clock::now();
   for (size_t ci = 0; ci < plan.cases.size(); ++ci) {
     std::vector<size_t> cells;  // indices into plan.cells
     for (size_t i = 0; i < plan.cells.size(); ++i)
-      if (plan.cells[i].caseIndex == ci && !finished.count(i)) cells.push_back(i);
+      if (plan.cells[i].caseIndex == ci && shard.contains(i) && !finished.count(i)) cells.push_back(i);
     if (cells.empty()) continue;
     try {
       Settings caseSettings = plan.cells[cells.front()].settings;
@@ -100,26 +144,30 @@ size_t runCells(const BenchPlan& plan, const VulkanContext& ctx, const std::set<
       std::fprintf(stderr, "%s: %llu triangles, BVH %.1f MB (built in %.0f ms), wide BVH %.1f MB, scene made in %.0f ms\n",
                    loaded.scene.name.c_str(), static_cast<unsigned long long>(facts.triangles), facts.bvhBytes / 1e6,
                    facts.bvhBuildMs, facts.wideBvhBytes / 1e6, facts.sceneLoadMs);
-      // The reference and the error curve depend on the path length: made again for each bounce count.
-      uint32_t referenceBounces = 0;
+      // The reference and the error curve depend on the path length, the image size and the samples per
+      // frame: made again for each group of those (cells of one group are consecutive in the plan). The BVH
+      // layout changes no converged image: one reference serves both.
+      ReferenceGroup referenceGroup;
       std::vector<glm::vec3> reference;
       std::vector<double> errorCurve;
       for (size_t index : cells) {
         const BenchCell& cell = plan.cells[index];
-        if (cell.settings.bounces != referenceBounces) {
-          Settings group = caseSettings;
-          group.bounces = referenceBounces = cell.settings.bounces;
-          reference = renderReference(tracer, group, plan.referenceSpp);
-          errorCurve = measureErrorCurve(tracer, group, plan.timedFrames, reference);
+        if (const ReferenceGroup group = referenceGroupOf(cell.settings); !(group == referenceGroup)) {
+          referenceGroup = group;
+          Settings groupSettings = caseSettings;
+          group.applyTo(groupSettings);
+          reference = renderReference(tracer, groupSettings, plan.referenceSpp);
+          errorCurve = measureErrorCurve(tracer, groupSettings, plan.timedFrames, reference);
         }
         ++done;
         CellResult r = measureCell(tracer, cell.settings, plan.warmupFrames, plan.timedFrames, reference,
                                    errorCurve, plan.detailFrame);
         jsonl.append(benchRecord(index, ctx, cell, loaded.view.name, facts, r).dump() + "\n", /*durable=*/true);
         double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "[%zu/%zu %.0fs] %s@%s b=%u %-32s frame %.2f ms, trace(b>=1) %.2f ms\n", done,
-                     plan.cells.size(), elapsed, loaded.scene.name.c_str(), loaded.view.name.c_str(),
-                     cell.settings.bounces, cell.label.c_str(), r.frameMs.median, r.traceAfterFirstMs.median);
+        std::fprintf(stderr, "[%zu/%zu %.0fs] %s@%s %ux%u spp=%u b=%u %-32s frame %.2f ms, trace(b>=1) %.2f ms\n", done,
+                     total, elapsed, loaded.scene.name.c_str(), loaded.view.name.c_str(),
+                     cell.settings.width, cell.settings.height, cell.settings.sppPerFrame, cell.settings.bounces,
+                     cell.label.c_str(), r.frameMs.median, r.traceAfterFirstMs.median);
       }
     } catch (const WriteError&) {
       throw;
@@ -140,22 +188,28 @@ int runBenchCommand(const std::vector<std::string>& args) {
     std::printf("usage: raylab bench [options]\n%s", benchHelp().c_str());
     return kExitOk;
   }
+  if (std::find(args.begin(), args.end(), "--merge") != args.end()) return runBenchMerge(args);
   BenchPlan plan;
   std::string resumeDir;
   std::vector<std::string> recordArgs;
+  BenchShard shard;
   try {
-    plan = planFor(args, &resumeDir, &recordArgs);
+    plan = planFor(args, &resumeDir, &recordArgs, &shard);
   } catch (const UsageError& e) {
     std::fprintf(stderr, "raylab bench: %s\n\n%s", e.what(), benchHelp().c_str());
     return kExitUsage;
   }
-  std::filesystem::create_directories(plan.outDir);
   VulkanContext ctx(contextOptionsFor(plan.common));
-  for (const BenchCell& cell : plan.cells)
+  for (const BenchCell& cell : plan.cells)  // the whole plan, whichever shard: one refusal for every shard
     if (std::string why = unsupportedSettings(ctx.info(), cell.settings); !why.empty()) {
       std::fprintf(stderr, "raylab bench: %s\n", why.c_str());
       return kExitUsage;
+    } else if (std::string beyond = pathsBeyondDevice(ctx.info(), cell.settings); !beyond.empty()) {
+      // Every cell is checked before the first renders: a size the device cannot run is a bad sweep.
+      std::fprintf(stderr, "raylab bench: cell '%s': %s\n", cell.label.c_str(), beyond.c_str());
+      return kExitUsage;
     }
+  std::filesystem::create_directories(plan.outDir);  // once the sweep is known to run: a refused one leaves no folder
   const std::string jsonlPath = plan.outDir + "/results.jsonl", csvPath = plan.outDir + "/results.csv";
   size_t failed = 0;
   try {
@@ -163,7 +217,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
     std::filesystem::remove(csvPath);
     std::set<size_t> finished;
     if (resumeDir.empty()) {
-      writeSweepRecord(plan.outDir, plan, recordArgs);
+      writeSweepRecord(plan.outDir, plan, recordArgs, shard);
     } else {
       BenchRecords old = readBenchRecords(jsonlPath);
       if (old.droppedLastLine) {  // a kill cut the last line: keep the whole ones, run that cell again
@@ -172,11 +226,13 @@ int runBenchCommand(const std::vector<std::string>& args) {
         writeFileChecked(jsonlPath, std::string_view(text).substr(0, old.wholeBytes));
       }
       for (const nlohmann::json& r : old.records) finished.insert(r.at("cell").get<size_t>());
+      size_t shardCells = 0;
+      for (size_t i = 0; i < plan.cells.size(); ++i) shardCells += shard.contains(i);
       std::fprintf(stderr, "raylab bench: resuming %s: %zu of %zu cells done%s\n", resumeDir.c_str(), finished.size(),
-                   plan.cells.size(), old.droppedLastLine ? " (a cut-off last line dropped)" : "");
+                   shardCells, old.droppedLastLine ? " (a cut-off last line dropped)" : "");
     }
     AppendFile jsonl(jsonlPath, resumeDir.empty() ? AppendFile::Start::Empty : AppendFile::Start::Keep);
-    failed = runCells(plan, ctx, finished, jsonl);
+    failed = runCells(plan, shard, ctx, finished, jsonl);
     jsonl.close();
     writeFileChecked(csvPath, benchCsv(readBenchRecords(jsonlPath).records));
   } catch (const WriteError& e) {
@@ -184,10 +240,15 @@ int runBenchCommand(const std::vector<std::string>& args) {
                  "continues the sweep\n", e.what(), jsonlPath.c_str(), plan.outDir.c_str());
     return kExitFailure;
   }
-  std::printf("bench: %zu cells, %zu failed; results in %s/results.csv and results.jsonl\n", plan.cells.size(),
+  size_t cells = 0;
+  for (size_t i = 0; i < plan.cells.size(); ++i) cells += shard.contains(i);
+  std::printf("bench: %zu cells%s, %zu failed; results in %s/results.csv and results.jsonl\n", cells,
+              shard.whole() ? "" : (" (shard " + shard.text() + " of " + std::to_string(plan.cells.size()) + ")").c_str(),
               failed, plan.outDir.c_str());
+  std::fflush(stdout);  // before the chart script's own lines
+  const bool chartsFailed = plan.charts && !drawAndReportCharts(plan.outDir);
   if (ctx.validationErrors() > 0) return kExitValidation;
-  return failed == 0 ? kExitOk : kExitFailure;
+  return failed == 0 && !chartsFailed ? kExitOk : kExitFailure;
 }
 
 }  // namespace raylab

@@ -39,6 +39,7 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   row.add("device", csvQuote(ctx.info().name)).add("driver", csvQuote(ctx.info().driver)).add("git_revision", gitRevision());
   row.add("scene", csvQuote(s.scene)).add("view", view).add("width", s.width).add("height", s.height);
   row.add("bounces", s.bounces).add("spp_per_frame", s.sppPerFrame).add("kernel", toString(s.kernel));
+  row.add("paths_per_frame", uint64_t(s.width) * s.height * s.sppPerFrame);
   row.add("tracer", toString(s.tracer)).add("ser", toString(s.ser));
   row.add("ser_reordering_hint", s.reordersInHardware() ? ctx.info().serReorderingHint : "");
   row.add("strategy", toString(s.strategy)).add("sort", toString(s.sort)).add("label", csvQuote(cell.label));
@@ -81,14 +82,16 @@ std::vector<std::string> benchCsvColumns() {
                         "cell_hit_rate", "key_bits", "length_cache_bytes", "final_rel_mse", "sort_policy", "sorted_after",
                         "triangles", "bvh_nodes", "bvh_bytes", "scene_bytes", "bvh_build_ms", "scene_load_ms",
                         "tracer_setup_ms", "sort_bits", "learn_every", "fusion", "compaction", "trace_shade", "bvh",
-                        "wide_bvh_nodes", "wide_bvh_bytes"})
+                        "wide_bvh_nodes", "wide_bvh_bytes", "paths_per_frame"})
     columns.push_back(c);
   return columns;
 }
 
 nlohmann::json benchRecord(size_t cellIndex, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
                            const SceneFacts& scene, const CellResult& r) {
+  const Settings& s = cell.settings;
   return {{"cell", cellIndex},
+          {"paths_per_frame", uint64_t(s.width) * s.height * s.sppPerFrame},
           {"device", toJson(ctx.info())},
           {"git_revision", gitRevision()},
           {"view", view},

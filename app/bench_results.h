@@ -15,8 +15,8 @@
 
 namespace raylab {
 
-// One results.jsonl line: "cell" (its index in the plan), device, git_revision, view, label, settings,
-// scene, result, and "csv" (column name -> the CSV's text).
+// One results.jsonl line: "cell" (its index in the plan), paths_per_frame (width x height x spp), device,
+// git_revision, view, label, settings, scene, result, and "csv" (column name -> the CSV's text).
 nlohmann::json benchRecord(size_t cellIndex, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
                            const SceneFacts& scene, const CellResult& r);
 

@@ -30,19 +30,30 @@ nlohmann::json sweepDefinition(const BenchPlan& plan) {
           {"detail_frame", plan.detailFrame}};
 }
 
-void writeSweepRecord(const std::string& dir, const BenchPlan& plan, const std::vector<std::string>& args) {
-  const nlohmann::json record = {{"git_revision", gitRevision()}, {"args", args}, {"definition", sweepDefinition(plan)}};
+void writeSweepRecord(const std::string& dir, const SweepRecord& r) {
+  const nlohmann::json record = {
+      {"git_revision", r.gitRevision}, {"args", r.args}, {"shard", r.shard.text()}, {"definition", r.definition}};
   writeFileChecked(sweepPath(dir), record.dump(1) + "\n");
+}
+
+void writeSweepRecord(const std::string& dir, const BenchPlan& plan, const std::vector<std::string>& args,
+                      const BenchShard& shard) {
+  writeSweepRecord(dir, SweepRecord{gitRevision(), args, sweepDefinition(plan), shard});
 }
 
 SweepRecord readSweepRecord(const std::string& dir) {
   std::ifstream in(sweepPath(dir));
-  if (!in) throw UsageError("--resume " + dir + ": no sweep.json there (not a raylab bench folder)");
+  if (!in) throw UsageError(dir + ": no sweep.json there (not a raylab bench folder)");
   try {
     const nlohmann::json j = nlohmann::json::parse(in);
-    return {j.at("git_revision").get<std::string>(), j.at("args").get<std::vector<std::string>>(), j.at("definition")};
+    // Folders from before --shard have no "shard": they hold the whole sweep.
+    const BenchShard shard = j.contains("shard") ? parseShard(j.at("shard").get<std::string>()) : BenchShard{};
+    return {j.at("git_revision").get<std::string>(), j.at("args").get<std::vector<std::string>>(), j.at("definition"),
+            shard};
+  } catch (const UsageError& e) {
+    throw UsageError(dir + ": sweep.json is damaged (" + e.what() + ")");
   } catch (const nlohmann::json::exception& e) {
-    throw UsageError("--resume " + dir + ": sweep.json is damaged (" + e.what() + ")");
+    throw UsageError(dir + ": sweep.json is damaged (" + e.what() + ")");
   }
 }
 

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/bench_shard.h"
 #include "app/bench_sweep.h"
 
 namespace raylab {
@@ -19,12 +20,15 @@ nlohmann::json sweepDefinition(const BenchPlan& plan);
 
 struct SweepRecord {
   std::string gitRevision;
-  std::vector<std::string> args;  // the bench's arguments, without --out-dir and --resume
+  std::vector<std::string> args;  // the bench's arguments, without --out-dir, --resume and --shard
   nlohmann::json definition;
+  BenchShard shard;               // which cells of the definition the folder runs (0/1: all)
 };
 
 // Writes DIR/sweep.json through writeFileChecked (throws WriteError).
-void writeSweepRecord(const std::string& dir, const BenchPlan& plan, const std::vector<std::string>& args);
+void writeSweepRecord(const std::string& dir, const BenchPlan& plan, const std::vector<std::string>& args,
+                      const BenchShard& shard = {});
+void writeSweepRecord(const std::string& dir, const SweepRecord& record);
 // Reads DIR/sweep.json; throws UsageError when it is missing or unreadable (not a bench folder).
 SweepRecord readSweepRecord(const std::string& dir);
 

@@ -55,6 +55,8 @@ struct Axes {
   std::vector<std::string> learnEvery{};  // --learn-every-list: strategies with a length cache only
   std::vector<std::string> bounces{};     // --bounces with a list: one group of cells per count
   std::vector<std::string> scaleTris{};   // --scale-tris: the sizes of every bare temple-detail case
+  std::vector<std::string> sizes{};       // --sizes: image sizes (WxH); empty keeps --size's
+  std::vector<std::string> spps{};        // --spps: samples per frame; empty keeps --spp's
 };
 
 // `raylab bench --bounces 2,4,8,16` sweeps the path length; every other mode takes one count. The list is
@@ -68,6 +70,34 @@ std::vector<std::string> takeBounceList(std::vector<std::string>& args) {
       args[i + 1] = list.front();
     }
   return list;
+}
+
+// A sweep axis given as a flag must name at least one value: `--sizes ,` is a mistake, not "the default".
+std::vector<std::string> nonEmptyList(const std::string& flag, const std::string& value) {
+  std::vector<std::string> list = splitList(value);
+  if (list.empty()) throw UsageError(flag + " needs at least one value, got '" + value + "'");
+  return list;
+}
+
+// The path count per frame as an axis: one settings per (--sizes, --spps) pair, size-major, each checked as
+// a whole like the render flags (a size alone may pass and fail with the spp: too many paths per frame).
+std::vector<Settings> pathCountGroups(const Settings& base, const Axes& axes) {
+  const std::vector<std::string> sizes = axes.sizes.empty() ? std::vector<std::string>{""} : axes.sizes;
+  const std::vector<std::string> spps = axes.spps.empty() ? std::vector<std::string>{""} : axes.spps;
+  std::vector<Settings> out;
+  for (const std::string& size : sizes)
+    for (const std::string& spp : spps) {
+      std::vector<std::string> flags;
+      if (!size.empty()) flags.insert(flags.end(), {"--size", size});
+      if (!spp.empty()) flags.insert(flags.end(), {"--spp", spp});
+      try {
+        out.push_back(overlaySettingFlags(base, flags));
+      } catch (const UsageError& e) {
+        throw UsageError(std::string(axes.sizes.empty() ? "--spps" : axes.spps.empty() ? "--sizes" : "--sizes x --spps") +
+                         ": " + e.what());
+      }
+    }
+  return out;
 }
 
 // Throws UsageError for a scene name or family size loadSceneByName would refuse, so that a bad case stops
@@ -158,10 +188,16 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
       plan.detailFrame = false;
       continue;
     }
+    if (flag == "--no-charts") {
+      plan.charts = false;
+      continue;
+    }
     if (i + 1 >= rest.size()) throw UsageError(flag + " needs a value");
     const std::string& v = rest[++i];
     if (flag == "--cases") caseList = splitList(v), casesGiven = true;
     else if (flag == "--scale-tris") axes.scaleTris = splitList(v);
+    else if (flag == "--sizes") axes.sizes = nonEmptyList(flag, v);
+    else if (flag == "--spps") axes.spps = nonEmptyList(flag, v);
     else if (flag == "--strategies") axes.strategies = splitList(v);
     else if (flag == "--sorts") axes.sorts = splitList(v);
     else if (flag == "--sort-policies") axes.policies = splitList(v);
@@ -203,22 +239,25 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
   if (axes.bvhs.empty()) axes.bvhs = {toString(base.bvh)};
   if (axes.bounces.empty()) axes.bounces = {std::to_string(base.bounces)};
   // Every group has its megakernel and unsorted cells at least.
-  checkCellCount(plan.cases.size() * axes.bounces.size() * axes.tracers.size() * axes.bvhs.size() * 2);
+  const std::vector<Settings> pathCounts = pathCountGroups(base, axes);
+  checkCellCount(plan.cases.size() * pathCounts.size() * axes.bounces.size() * axes.tracers.size() * axes.bvhs.size() * 2);
   auto addCell = [&](BenchCell cell) {
     plan.cells.push_back(std::move(cell));
     checkCellCount(plan.cells.size());
   };
   for (size_t ci = 0; ci < plan.cases.size(); ++ci) {
-    // One group of cells per bounce count, tracer and BVH layout (the compute tracer's; the rt tracer has one
-    // group); the runner renders a reference per bounce count.
+    // One group of cells per image size and spp, bounce count, tracer and BVH layout (in that order, so the
+    // tracer reallocates its path buffers once per size; the rt tracer has one layout); the runner renders a
+    // reference per size, spp and bounce count.
     std::vector<Settings> groups;
-    for (const std::string& bounces : axes.bounces)
-      for (const std::string& tracer : axes.tracers)
-        for (const std::string& bvh : axes.bvhs) {
-          Settings g = withFlag(withFlag(withFlag(base, "--bounces", bounces), "--tracer", tracer), "--bvh", bvh);
-          if (g.tracer == Tracer::Rt && bvh != axes.bvhs.front()) continue;
-          groups.push_back(g);
-        }
+    for (const Settings& paths : pathCounts)
+      for (const std::string& bounces : axes.bounces)
+        for (const std::string& tracer : axes.tracers)
+          for (const std::string& bvh : axes.bvhs) {
+            Settings g = withFlag(withFlag(withFlag(paths, "--bounces", bounces), "--tracer", tracer), "--bvh", bvh);
+            if (g.tracer == Tracer::Rt && bvh != axes.bvhs.front()) continue;
+            groups.push_back(g);
+          }
     for (const Settings& group : groups) {
       Settings caseBase = group;
       caseBase.scene = plan.cases[ci].scene;
@@ -316,6 +355,9 @@ std::string benchHelp() {
          "  --scale-tris 1e4,1e5,...  one case per size for every bare temple-detail case (default case\n"
          "                            temple-detail@hall): the scene-scale sweep\n"
          "  --bounces 2,4,8,16        path lengths to sweep (each case renders its reference per count)\n"
+         "  --sizes 512x256,1024x512  image sizes to sweep (default: --size's); with --spps, the paths per\n"
+         "                            frame (width x height x spp) as an axis; a reference per size and spp\n"
+         "  --spps 1,4                samples per frame to sweep (default: --spp's)\n"
          "  --strategies all|a,b,...  key strategies besides the baselines (default all)\n"
          "  --sorts radix,bitonic     sorts to sweep (default radix)\n"
          "  --sort-policies always,auto  sort policies to sweep (default always)\n"
@@ -337,14 +379,24 @@ std::string benchHelp() {
          "  --warmup N                unmeasured frames first (default 2)\n"
          "  --reference-spp N         samples of the megakernel reference image (default 64)\n"
          "  --no-detail               skip the untimed counting frame (no SIMT/accuracy figures)\n"
+         "  --no-charts               write no charts (by default the sweep ends by running\n"
+         "                            python3 app/bench_charts.py DIR; RAYLAB_PYTHON picks the interpreter)\n"
          "  --out-dir DIR             results.jsonl (each cell as it ends), results.csv (at the end) and\n"
          "                            sweep.json (the sweep and the git revision) (default bench-out)\n"
          "  --resume DIR              continue a sweep that was killed: run only the cells not yet in\n"
          "                            DIR/results.jsonl; the same flags as that sweep (or none: those in\n"
          "                            DIR/sweep.json), at the same revision, else exit 2\n"
          "  --sweep FILE              the same flags as `name = value` lines\n"
-         "The megakernel and the unsorted wavefront are always measured, per tracer. Charts of the results:\n"
-         "  python3 app/bench_charts.py DIR   (needs matplotlib)\n";
+         "  --shard i/K               run only the cells n (0-based, in plan order) with n mod K = i, 0 <= i < K:\n"
+         "                            one of K disjoint parts of the sweep, for K GPUs or hosts\n"
+         "  --merge DIR... [--out-dir OUT]  put the K shard folders of one sweep back together (CSV, JSONL,\n"
+         "                            charts); refuses folders of other sweeps or revisions, or a shard missing\n"
+         "The megakernel and the unsorted wavefront are always measured, per tracer. The charts (needs\n"
+         "matplotlib; without python3 or matplotlib the sweep says so and keeps its CSV) can be drawn again with\n"
+         "  python3 app/bench_charts.py DIR\n"
+         "Exit status: 0 every cell measured and charted (or charts unavailable), 1 a cell failed, a result could\n"
+         "not be written or a chart failed (results.csv and results.jsonl are kept), 2 a bad sweep (before any\n"
+         "rendering), 4 validation errors.\n";
 }
 
 }  // namespace raylab

@@ -28,6 +28,7 @@ struct BenchPlan {
   uint32_t warmupFrames = 2;
   uint32_t referenceSpp = 64;
   bool detailFrame = true;  // one untimed counting/readback frame per cell (SIMT, warp efficiency, accuracy)
+  bool charts = true;       // draw the charts at the end (app/bench_charts.py); --no-charts: the CSV only
   std::string outDir = "bench-out";
 };
 

@@ -17,6 +17,7 @@
 #include "renderer/checked_write.h"
 #include "renderer/path_tracer.h"
 #include "renderer/png_writer.h"
+#include "renderer/device_limits.h"
 #include "renderer/rt_tracer.h"
 #include "renderer/stats_json.h"
 #include "renderer/git_revision.h"
@@ -77,6 +78,10 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
 
   VulkanContext ctx(contextOptionsFor(options));
   if (std::string why = unsupportedSettings(ctx.info(), s); !why.empty()) {
+    std::fprintf(stderr, "raylab render: %s\n", why.c_str());
+    return kExitUsage;
+  }
+  if (std::string why = pathsBeyondDevice(ctx.info(), s); !why.empty()) {
     std::fprintf(stderr, "raylab render: %s\n", why.c_str());
     return kExitUsage;
   }

@@ -1,14 +1,12 @@
 #include "app/study_command.h"
 
-#include <sys/stat.h>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
 
 #include "app/bench_command.h"
-#include "app/child_process.h"
+#include "app/bench_charts_run.h"
 #include "app/cli_options.h"
 #include "app/command_errors.h"
 #include "app/scene_setup.h"
@@ -107,38 +105,37 @@ std::vector<std::string> benchArgs(const StudyOptions& o, const StudyPreset& p, 
                              "--strategies", o.strategies.empty() ? p.strategies : o.strategies,
                              "--sort-policies", "always,auto", "--trace-shades", "split,fused",
                              "--timed-frames", p.timedFrames, "--warmup", p.warmup, "--reference-spp", "16",
+                             "--no-charts",  // the report draws its own
                              "--out-dir", o.outDir + "/size-" + size};
   if (!o.device.empty()) a.insert(a.end(), {"--device", o.device});
   a.insert(a.end(), o.passOn.begin(), o.passOn.end());
   return a;
 }
 
-std::string reportScript() { return std::string(RAYLAB_SOURCE_DIR) + "/app/study_report.py"; }
-
 // The report from every size's folder; a missing Python or matplotlib leaves the results and says how to
 // make the report elsewhere.
 int makeReport(const StudyOptions& o, const std::vector<std::string>& folders, const std::string& note) {
   const std::string out = o.outDir + "/report.html";
-  std::vector<std::string> argv{"/usr/bin/python3", reportScript(), out};
-  argv.insert(argv.end(), folders.begin(), folders.end());
-  if (!note.empty()) argv.insert(argv.begin() + 2, {"--note", note});
-  std::string command;
-  for (const std::string& a : argv) command += (command.empty() ? "" : " ") + a;
-  struct stat st {};
-  const bool haveScript = stat(reportScript().c_str(), &st) == 0;
-  const int rc = haveScript && runChildProcess({"/usr/bin/python3", "-c", "import matplotlib"}) == 0 ? runChildProcess(argv) : -1;
-  if (rc == -1) {
-    std::fprintf(stderr, "raylab study: no report: %s; the results are in %s; make it where matplotlib is with:\n  %s\n",
-                 haveScript ? "python3-matplotlib is not installed" : ("cannot find " + reportScript()).c_str(),
-                 o.outDir.c_str(), command.c_str());
-    return kExitOk;
+  std::vector<std::string> args;
+  if (!note.empty()) args = {"--note", note};
+  args.push_back(out);
+  args.insert(args.end(), folders.begin(), folders.end());
+  const ChartsOutcome report = runLabScript("study_report.py", args);
+  std::string command = "python3 " + labScript("study_report.py");
+  for (const std::string& a : args) command += " '" + a + "'";
+  switch (report.kind) {
+    case ChartsOutcome::Kind::Drawn:
+      std::printf("study: report in %s\n", out.c_str());
+      return kExitOk;
+    case ChartsOutcome::Kind::Unavailable:
+      std::fprintf(stderr, "raylab study: no report: %s; the results are in %s; make it where matplotlib is with:\n  %s\n",
+                   report.why.c_str(), o.outDir.c_str(), command.c_str());
+      return kExitOk;
+    case ChartsOutcome::Kind::Failed:
+      break;
   }
-  if (rc != 0) {
-    std::fprintf(stderr, "raylab study: the report failed (exit %d); the results are in %s\n", rc, o.outDir.c_str());
-    return kExitFailure;
-  }
-  std::printf("study: report in %s\n", out.c_str());
-  return kExitOk;
+  std::fprintf(stderr, "raylab study: the report failed: %s; the results are in %s\n", report.why.c_str(), o.outDir.c_str());
+  return kExitFailure;
 }
 
 }  // namespace

@@ -27,7 +27,13 @@ import math
 import os
 import sys
 
-import matplotlib
+EXIT_NO_MATPLOTLIB = 3  # app/bench_charts_run.cpp knows it: the study then keeps its results and says so
+try:
+    import matplotlib
+except ImportError:
+    print("study_report.py: matplotlib is missing (Debian: apt-get install python3-matplotlib): no report",
+          file=sys.stderr)
+    sys.exit(EXIT_NO_MATPLOTLIB)
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402

@@ -6,6 +6,7 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "scenes/clutter.h"
 #include "scenes/gltf_loader.h"
 #include "scenes/procedural.h"
 #include "scenes/temple_detail.h"
@@ -30,6 +31,7 @@ const char* const kFixedScenes[] = {"temple", "cornell", "furnace"};
 std::vector<std::string> builtinSceneNames() {
   std::vector<std::string> names(std::begin(kFixedScenes), std::end(kFixedScenes));
   names.push_back(std::string(kTempleDetailName) + ":1e5");
+  names.push_back(std::string(kClutterName) + ":2e5");
   return names;
 }
 
@@ -39,11 +41,16 @@ void checkSceneName(const std::string& nameOrPath) {
     parseTempleDetailTriangles(nameOrPath);
     return;
   }
+  if (isClutterName(nameOrPath)) {
+    parseClutterTriangles(nameOrPath);
+    return;
+  }
   if (endsWithNoCase(nameOrPath, ".gltf") || endsWithNoCase(nameOrPath, ".glb")) return;
   std::string names;
   for (const char* n : kFixedScenes) names += std::string(n) + ", ";
   throw std::invalid_argument("unknown scene '" + nameOrPath + "': expected one of " + names + kTempleDetailName +
-                              ":N (N triangles, 1e4 to 3e7), or a path to a .gltf or .glb file");
+                              ":N (N triangles, 1e4 to 3e7), " + kClutterName +
+                              ":N (5e4 to 3e6), or a path to a .gltf or .glb file");
 }
 
 Scene loadSceneByName(const std::string& nameOrPath) {
@@ -52,6 +59,7 @@ Scene loadSceneByName(const std::string& nameOrPath) {
   if (nameOrPath == "cornell") return makeCornell();
   if (nameOrPath == "furnace") return makeFurnace();
   if (isTempleDetailName(nameOrPath)) return makeTempleDetail(parseTempleDetailTriangles(nameOrPath));
+  if (isClutterName(nameOrPath)) return makeClutter(parseClutterTriangles(nameOrPath));
   // A glTF file. Checked here so the message is the same for both formats and does not depend on tinygltf's.
   std::error_code ec;
   if (!std::filesystem::is_regular_file(nameOrPath, ec)) throw SceneLoadError(nameOrPath + ": file not found");

@@ -90,7 +90,9 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
 
   VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
   VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+  VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
   subgroup.pNext = &driver;
+  driver.pNext = &maintenance3;
   VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
   props.pNext = &subgroup;
   vkGetPhysicalDeviceProperties2(physical_, &props);
@@ -102,6 +104,7 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
   info_.maxGroupCountX = props.properties.limits.maxComputeWorkGroupCount[0];
   info_.maxGroupCountY = props.properties.limits.maxComputeWorkGroupCount[1];
   setDispatchRowGroups(0);
+  info_.maxMemoryAllocationSize = maintenance3.maxMemoryAllocationSize;
   info_.isCpu = props.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   vkGetPhysicalDeviceMemoryProperties(physical_, &memoryProperties_);
 }

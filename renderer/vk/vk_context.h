@@ -35,6 +35,7 @@ struct DeviceInfo {
   // The row length of every dispatch made from a thread count (renderer/vk/dispatch_size.h), written into
   // GpuFrame for the indirect sizes shaders make: maxGroupCountX, or what setDispatchRowGroups set.
   uint32_t dispatchRowGroups = 0;
+  uint64_t maxMemoryAllocationSize = 0;  // VkPhysicalDeviceMaintenance3Properties (0: not known)
   bool isCpu = false;
 
   // Hardware-API ray tracing (the rt tracer): VK_KHR_acceleration_structure and VK_KHR_ray_tracing_pipeline

@@ -175,7 +175,7 @@ TEST(ValidGltf, HierarchyIsFlattenedWithWorldTransforms) {
 }
 
 TEST(SceneLibrary, NamesAndPaths) {
-  EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"temple", "cornell", "furnace", "temple-detail:1e5"}));
+  EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"temple", "cornell", "furnace", "temple-detail:1e5", "clutter:2e5"}));
   EXPECT_EQ(loadSceneByName("temple").triangles.size(), makeTemple().triangles.size());
   EXPECT_EQ(loadSceneByName("cornell").name, "cornell");
   EXPECT_EQ(loadSceneByName("furnace").triangles.size(), makeFurnace().triangles.size());

@@ -36,7 +36,7 @@ TEST_P(SceneRenders, NonBlackAndFinite) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, SceneRenders,
-                         ::testing::Values("temple", "cornell", "furnace", "temple-detail:1e4",
+                         ::testing::Values("temple", "cornell", "furnace", "temple-detail:1e4", "clutter:5e4",
                                            RAYLAB_SOURCE_DIR "/../shared/scenes/Box/Box.gltf",
                                            RAYLAB_SOURCE_DIR "/../shared/scenes/CornellBox/cornellBox.gltf",
                                            RAYLAB_SOURCE_DIR "/../shared/scenes/DamagedHelmet/DamagedHelmet.glb",

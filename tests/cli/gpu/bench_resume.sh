@@ -3,7 +3,8 @@
 # SIGKILLed after some cells and then run with `--resume DIR` measures only the missing cells (a cut-off
 # last line is dropped) and ends with the same cells and the same non-timing columns as a sweep that was
 # never interrupted. `--resume` refuses, with exit 2, a different sweep or a folder of another revision.
-# bench_charts.py, run on the finished folder, stops non-zero naming a chart it cannot write.
+# bench_charts.py, run on the finished folder, stops non-zero naming a chart it cannot write (the sweeps run
+# with --no-charts, so that the script draws every chart itself).
 #
 # Timing columns, which no two runs share: frame_ms_*, trace_after_first_ms, every *_ms stage column,
 # rays_per_second, bvh_build_ms, scene_load_ms, tracer_setup_ms. Everything else (settings, labels,
@@ -18,7 +19,7 @@ source_dir="$2"
 dir=$(mktemp -d)
 pid=
 trap '[ -n "$pid" ] && kill -9 $pid 2>/dev/null; rm -rf "$dir"' EXIT
-sweep=(--cases cornell@front --strategies dead-last,fixed,two-point --compaction none --size 32x16 --timed-frames 1
+sweep=(--cases cornell@front --strategies dead-last,fixed,two-point --compaction none --size 32x16 --timed-frames 1 --no-charts
        --warmup 0 --reference-spp 1)
 cells=5  # megakernel, none, dead-last, fixed, two-point
 
