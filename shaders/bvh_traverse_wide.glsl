@@ -12,6 +12,12 @@
 // quantized child boxes tested) or one leaf visited (its triangles tested): the binary traversal's step is one
 // binary node (two child boxes) or one leaf. Steps of the two layouts count different work; compare them as
 // what they are, the spread within a warp that reordering shrinks.
+//
+// Slower than the binary traversal on an H200 (docs/results/h200-wide-bvh: 1.4-1.6x the frame time at
+// 2.1M-8.4M paths, with 2.4x fewer steps). What CWBVH does and this does not, the likely places to look: the
+// ray transformed once per node into its quantized frame (here each child box is decoded to floats and
+// slab-tested), the node read as 5 aligned 16-byte loads, triangles packed behind their node (here a leaf is
+// an extra 8-byte record and 48-byte triangles), and the hit-mask loop without a per-child branch.
 #ifndef RAYLAB_BVH_TRAVERSE_WIDE_GLSL
 #define RAYLAB_BVH_TRAVERSE_WIDE_GLSL
 
