@@ -12,7 +12,6 @@
 #include <stdexcept>
 
 namespace raylab {
-namespace {
 
 std::vector<std::string> splitList(const std::string& text) {
   std::vector<std::string> out;
@@ -21,6 +20,8 @@ std::vector<std::string> splitList(const std::string& text) {
     if (!item.empty()) out.push_back(item);
   return out;
 }
+
+namespace {
 
 // Reads `name = value` lines (# comments) into flag/value pairs.
 std::vector<std::string> readSweepFile(const std::string& path) {

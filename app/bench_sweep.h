@@ -35,5 +35,7 @@ struct BenchPlan {
 // Throws UsageError for unknown names or values.
 BenchPlan parseBenchPlan(const std::vector<std::string>& args);
 std::string benchHelp();
+// "a,b,,c" -> {"a", "b", "c"}: the comma lists of the sweep flags (and of `raylab study`'s).
+std::vector<std::string> splitList(const std::string& text);
 
 }  // namespace raylab

@@ -3,9 +3,9 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 
 #include "app/bench_command.h"
+#include "app/bench_sweep.h"
 #include "app/bench_charts_run.h"
 #include "app/cli_options.h"
 #include "app/command_errors.h"
@@ -54,14 +54,6 @@ const char* kStudyHelp =
     "DIR/size-WxH/ (results.csv, results.jsonl): a size that is killed continues with\n"
     "`raylab bench --resume DIR/size-WxH`.\n";
 
-std::vector<std::string> splitCommas(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
 StudyOptions parseStudyOptions(const std::vector<std::string>& args) {
   StudyOptions o;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -72,7 +64,7 @@ StudyOptions parseStudyOptions(const std::vector<std::string>& args) {
     };
     if (a == "--quick") o.quick = true;
     else if (a == "--out-dir") o.outDir = value();
-    else if (a == "--sizes") o.sizes = splitCommas(value());
+    else if (a == "--sizes") o.sizes = splitList(value());
     else if (a == "--bounces") o.bounces = value();
     else if (a == "--strategies") o.strategies = value();
     else if (a == "--device") o.device = value();

@@ -51,6 +51,16 @@ void intersectTriangle(GpuTriangle tri, uint index, vec3 origin, vec3 dir, inout
   }
 }
 
+// What a traversal starts from (both layouts): no hit yet, no step taken.
+HitRecord noHit() {
+  HitRecord hit;
+  hit.t = -1.0;
+  hit.triangle = 0u;
+  hit.bary = vec2(0.0);
+  hit.steps = 0u;
+  return hit;
+}
+
 // Avoid division by zero in the slab test while keeping the sign of each direction component.
 vec3 safeInverse(vec3 d) {
   const float eps = 1e-20;
@@ -61,11 +71,7 @@ vec3 safeInverse(vec3 d) {
 
 // anyHit: stop at the first hit (shadow rays).
 HitRecord traverseBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool anyHit) {
-  HitRecord hit;
-  hit.t = -1.0;
-  hit.triangle = 0u;
-  hit.bary = vec2(0.0);
-  hit.steps = 0u;
+  HitRecord hit = noHit();
   vec3 invDir = safeInverse(dir);
   uint stack[RL_BVH_STACK];
   uint sp = 0u;

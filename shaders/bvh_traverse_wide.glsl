@@ -24,11 +24,7 @@
 uint wideByte(uint word, uint slot) { return (word >> ((slot & 3u) * 8u)) & 0xFFu; }
 
 HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool anyHit) {
-  HitRecord hit;
-  hit.t = -1.0;
-  hit.triangle = 0u;
-  hit.bary = vec2(0.0);
-  hit.steps = 0u;
+  HitRecord hit = noHit();
   vec3 invDir = safeInverse(dir);
   uint octant = (dir.x < 0.0 ? 1u : 0u) | (dir.y < 0.0 ? 2u : 0u) | (dir.z < 0.0 ? 4u : 0u);
   uvec2 stack[RL_BVH_STACK];

@@ -18,15 +18,6 @@
 
 layout(constant_id = 2) const bool kGatherFirst = false;
 
-HitRecord noHit() {
-  HitRecord hit;
-  hit.t = -1.0;
-  hit.triangle = 0u;
-  hit.bary = vec2(0.0);
-  hit.steps = 0u;
-  return hit;
-}
-
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   gCounters = f.counters;

@@ -13,11 +13,7 @@ void main() {
   vec3 origin, direction;
   bool live = pathRay(s, i, origin, direction);
   rtCountRays(f.counters, pc.bounce * RL_COUNTER_STRIDE, live ? 1u : 0u);
-  HitRecord hit;
-  hit.t = -1.0;
-  hit.triangle = 0u;
-  hit.bary = vec2(0.0);
-  hit.steps = 0u;
+  HitRecord hit = noHit();
   if (live) hit = rtTraceClosest(f.scene, origin, direction, 1e30);
   storeHit(f.hits, i, hit);
 }

@@ -9,32 +9,14 @@
 
 #include "renderer/embree_scene.h"
 #include "scenes/procedural.h"
+#include "tests/exact_hit.h"
 
 namespace raylab {
 namespace {
 
-struct ExactHit {
-  double t = -1.0;
-  uint32_t triangle = 0;
-};
-
-// Moeller-Trumbore in double, both faces, t > 0.
+using test::ExactHit;
 ExactHit exactClosestHit(const std::vector<Triangle>& tris, glm::dvec3 o, glm::dvec3 d) {
-  ExactHit best;
-  for (uint32_t i = 0; i < tris.size(); ++i) {
-    const Triangle& t = tris[i];
-    glm::dvec3 e1 = glm::dvec3(t.v[1]) - glm::dvec3(t.v[0]), e2 = glm::dvec3(t.v[2]) - glm::dvec3(t.v[0]);
-    glm::dvec3 p = glm::cross(d, e2);
-    double det = glm::dot(e1, p);
-    if (std::abs(det) < 1e-15) continue;
-    glm::dvec3 s = o - glm::dvec3(t.v[0]);
-    double u = glm::dot(s, p) / det;
-    glm::dvec3 q = glm::cross(s, e1);
-    double v = glm::dot(d, q) / det;
-    double dist = glm::dot(e2, q) / det;
-    if (u >= 0 && v >= 0 && u + v <= 1 && dist > 0 && (best.t < 0 || dist < best.t)) best = {dist, i};
-  }
-  return best;
+  return test::exactClosestHit(tris, o, d, 1e-15);
 }
 
 TEST(EmbreeScene, ClosestHitsAndShadowRaysEqualBruteForceOnTheTemple) {

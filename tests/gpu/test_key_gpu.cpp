@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tests/exact_hit.h"
 #include "tests/gpu_test.h"
 #include "tests/test_key_support.h"
 
@@ -158,22 +159,7 @@ TEST_F(KeyGpu, ConfigureAndResizeKeepOrResetTheCacheAsDocumented) {
 }
 
 // Closest hit by brute force in double precision (the oracle's reference).
-double closestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d) {
-  double best = -1.0;
-  for (const Triangle& t : scene.triangles) {
-    glm::dvec3 e1 = glm::dvec3(t.v[1]) - glm::dvec3(t.v[0]), e2 = glm::dvec3(t.v[2]) - glm::dvec3(t.v[0]);
-    glm::dvec3 p = glm::cross(d, e2);
-    double det = glm::dot(e1, p);
-    if (std::abs(det) < 1e-12) continue;
-    glm::dvec3 s = o - glm::dvec3(t.v[0]);
-    double u = glm::dot(s, p) / det;
-    glm::dvec3 q = glm::cross(s, e1);
-    double v = glm::dot(d, q) / det;
-    double dist = glm::dot(e2, q) / det;
-    if (u >= 0 && v >= 0 && u + v <= 1 && dist > 0 && (best < 0 || dist < best)) best = dist;
-  }
-  return best;
-}
+double closestHit(const Scene& scene, glm::dvec3 o, glm::dvec3 d) { return exactClosestHit(scene.triangles, o, d, 1e-12).t; }
 
 TEST_F(KeyGpu, OracleTraceFindsTheTrueHit) {
   Scene scene = boxScene();
