@@ -9,7 +9,8 @@
 
 namespace raylab {
 
-GpuBuffer::GpuBuffer(const VulkanContext& ctx, VkDeviceSize bytes, MemoryKind kind, VkBufferUsageFlags extraUsage)
+GpuBuffer::GpuBuffer(const VulkanContext& ctx, VkDeviceSize bytes, MemoryKind kind, VkBufferUsageFlags extraUsage,
+                     VkDeviceSize memoryBytes)
     : ctx_(&ctx) {
   size_ = std::max<VkDeviceSize>(bytes, 16);
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
@@ -26,7 +27,7 @@ GpuBuffer::GpuBuffer(const VulkanContext& ctx, VkDeviceSize bytes, MemoryKind ki
   flags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.pNext = &flags;
-  alloc.allocationSize = req.size;
+  alloc.allocationSize = std::max(req.size, memoryBytes);
   alloc.memoryTypeIndex = ctx.findMemoryType(
       req.memoryTypeBits, kind == MemoryKind::HostVisible
                               ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT

@@ -18,9 +18,10 @@ class GpuBuffer {
  public:
   GpuBuffer() = default;
   // `extraUsage` adds usages beyond storage, transfer, device address and indirect (acceleration-structure
-  // storage and build input, shader binding tables).
+  // storage and build input, shader binding tables). `memoryBytes` allocates more memory than the buffer
+  // needs, the buffer at its start: the rest is mapped memory outside every buffer (the GPU-AV proof reads it).
   GpuBuffer(const VulkanContext& ctx, VkDeviceSize bytes, MemoryKind kind = MemoryKind::DeviceLocal,
-            VkBufferUsageFlags extraUsage = 0);
+            VkBufferUsageFlags extraUsage = 0, VkDeviceSize memoryBytes = 0);
   ~GpuBuffer();
   GpuBuffer(GpuBuffer&& other) noexcept;
   GpuBuffer& operator=(GpuBuffer&& other) noexcept;
