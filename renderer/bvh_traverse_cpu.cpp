@@ -123,10 +123,16 @@ CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& 
     const gpu::BvhWideNode& n = bvh.nodes[nodeIndex];
     const uint32_t interiorMask = n.masks & 0xFFu, leafMask = (n.masks >> 8) & 0xFFu;
     uint32_t nodeHits = 0, leafHits = 0;
+    // The ray in the node's quantized frame, as the shader does: a child plane q is at t = q * tScale + tOrigin.
+    const glm::vec3 scale = wideScale(n);
+    const glm::vec3 tScale = scale * invDir, tOrigin = (n.origin - origin) * invDir;
     for (uint32_t s = 0; s < RL_BVH_WIDTH; ++s) {
       if (((interiorMask | leafMask) & (1u << s)) == 0) continue;
-      const WideChildBox box = decodeChildBox(n, s);
-      if (cpuIntersectBox(box.min, box.max, origin, invDir, tMax) >= 1e30f) continue;
+      const glm::vec3 t0 = wideLowPlanes(n, s) * tScale + tOrigin, t1 = wideHighPlanes(n, s) * tScale + tOrigin;
+      const glm::vec3 tn = glm::min(t0, t1), tf = glm::max(t0, t1);
+      const float enter = std::max(std::max(tn.x, tn.y), std::max(tn.z, 0.0f));
+      const float leave = std::min(std::min(tf.x, tf.y), std::min(tf.z, tMax));
+      if (enter > leave) continue;
       if (interiorMask & (1u << s))
         nodeHits |= 1u << (s ^ octant);
       else

@@ -198,6 +198,20 @@ WideChildBox decodeChildBox(const gpu::BvhWideNode& node, uint32_t slot) {
   return b;
 }
 
+glm::vec3 wideScale(const gpu::BvhWideNode& node) {
+  glm::vec3 s;
+  for (uint32_t axis = 0; axis < 3; ++axis) s[axis] = scaleOf((node.exponents >> (8u * axis)) & 0xFFu);
+  return s;
+}
+
+glm::vec3 wideLowPlanes(const gpu::BvhWideNode& node, uint32_t slot) {
+  return {float(getByte(node.qlo, 0, slot)), float(getByte(node.qlo, 1, slot)), float(getByte(node.qlo, 2, slot))};
+}
+
+glm::vec3 wideHighPlanes(const gpu::BvhWideNode& node, uint32_t slot) {
+  return {float(getByte(node.qhi, 0, slot)), float(getByte(node.qhi, 1, slot)), float(getByte(node.qhi, 2, slot))};
+}
+
 WideSlot slotKind(const gpu::BvhWideNode& node, uint32_t slot) {
   if ((node.masks >> slot) & 1u) return WideSlot::Interior;
   if ((node.masks >> (8u + slot)) & 1u) return WideSlot::Leaf;

@@ -37,6 +37,11 @@ struct WideChildBox {
   glm::vec3 min, max;
 };
 WideChildBox decodeChildBox(const gpu::BvhWideNode& node, uint32_t slot);
+// What the traversal tests instead (the ray moved into the node's frame): each axis's power-of-two scale, and
+// slot s's 8-bit planes as floats.
+glm::vec3 wideScale(const gpu::BvhWideNode& node);
+glm::vec3 wideLowPlanes(const gpu::BvhWideNode& node, uint32_t slot);
+glm::vec3 wideHighPlanes(const gpu::BvhWideNode& node, uint32_t slot);
 // Slot s's kind: 0 empty, 1 interior, 2 leaf; and its index (wide node or leaf record).
 enum class WideSlot { Empty, Interior, Leaf };
 WideSlot slotKind(const gpu::BvhWideNode& node, uint32_t slot);

@@ -59,27 +59,40 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
 
     hit.steps++;
     RL_TRAVERSAL_STEP();
-    BvhWideNode n = scene.wideNodes.v[nodeIndex];
-    vec3 scale = vec3(uintBitsToFloat((n.exponents & 0xFFu) << 23), uintBitsToFloat(((n.exponents >> 8) & 0xFFu) << 23),
-                      uintBitsToFloat(((n.exponents >> 16) & 0xFFu) << 23));
-    uint interiorMask = n.masks & 0xFFu;
-    uint leafMask = (n.masks >> 8) & 0xFFu;
+    // The node in five 16-byte loads: origin + exponents, bases + masks, then the 12 words of planes.
+    BvhWideNodeQuads quads = BvhWideNodeQuads(scene.wideNodes);
+    uint base = nodeIndex * 5u;
+    uvec4 w0 = quads.v[base], w1 = quads.v[base + 1u], w2 = quads.v[base + 2u], w3 = quads.v[base + 3u],
+          w4 = quads.v[base + 4u];
+    uint qlo[6] = uint[6](w2.x, w2.y, w2.z, w2.w, w3.x, w3.y);
+    uint qhi[6] = uint[6](w3.z, w3.w, w4.x, w4.y, w4.z, w4.w);
+    vec3 scale = vec3(uintBitsToFloat((w0.w & 0xFFu) << 23), uintBitsToFloat(((w0.w >> 8) & 0xFFu) << 23),
+                      uintBitsToFloat(((w0.w >> 16) & 0xFFu) << 23));
+    // The ray in the node's quantized frame, once per node: a child plane q is at t = q * tScale + tOrigin.
+    vec3 tScale = scale * invDir;
+    vec3 tOrigin = (uintBitsToFloat(w0.xyz) - origin) * invDir;
+    uint interiorMask = w1.z & 0xFFu;
+    uint leafMask = (w1.z >> 8) & 0xFFu;
     uint childMask = interiorMask | leafMask;
     uint nodeHits = 0u;
     uint leafHits = 0u;
     for (uint s = 0u; s < RL_BVH_WIDTH; ++s) {
-      if ((childMask & (1u << s)) == 0u) continue;
       uint word = s >> 2;
-      vec3 qlo = vec3(wideByte(n.qlo[word], s), wideByte(n.qlo[2u + word], s), wideByte(n.qlo[4u + word], s));
-      vec3 qhi = vec3(wideByte(n.qhi[word], s), wideByte(n.qhi[2u + word], s), wideByte(n.qhi[4u + word], s));
-      if (intersectBox(n.origin + qlo * scale, n.origin + qhi * scale, origin, invDir, tMax) >= 1e30) continue;
+      vec3 qlo3 = vec3(wideByte(qlo[word], s), wideByte(qlo[2u + word], s), wideByte(qlo[4u + word], s));
+      vec3 qhi3 = vec3(wideByte(qhi[word], s), wideByte(qhi[2u + word], s), wideByte(qhi[4u + word], s));
+      vec3 t0 = qlo3 * tScale + tOrigin;
+      vec3 t1 = qhi3 * tScale + tOrigin;
+      vec3 tn = min(t0, t1), tf = max(t0, t1);
+      float enter = max(max(tn.x, tn.y), max(tn.z, 0.0));
+      float leave = min(min(tf.x, tf.y), min(tf.z, tMax));
+      if ((childMask & (1u << s)) == 0u || enter > leave) continue;
       if ((interiorMask & (1u << s)) != 0u)
         nodeHits |= 1u << (s ^ octant);
       else
         leafHits |= 1u << bitCount(leafMask & ((1u << s) - 1u));
     }
-    nodeGroup = uvec2(n.childBase, (interiorMask << 8) | nodeHits);
-    leafGroup = uvec2(n.leafBase, leafHits);
+    nodeGroup = uvec2(w1.x, (interiorMask << 8) | nodeHits);
+    leafGroup = uvec2(w1.y, leafHits);
   }
   return hit;
 }

@@ -161,6 +161,9 @@ struct GpuCamera {
 #ifndef __cplusplus
 layout(buffer_reference, scalar) buffer BvhNodeBuf { BvhNode v[]; };
 layout(buffer_reference, scalar) buffer BvhWideNodeBuf { BvhWideNode v[]; };
+// The same nodes as five aligned 16-byte words each (80 bytes, in BvhWideNode's order), for the traversal's
+// vector loads: a struct of scalars is read field by field.
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer BvhWideNodeQuads { uvec4 v[]; };
 layout(buffer_reference, scalar) buffer BvhWideLeafBuf { BvhWideLeaf v[]; };
 layout(buffer_reference, scalar) buffer TriangleBuf { GpuTriangle v[]; };
 layout(buffer_reference, scalar) buffer TriangleUvBuf { GpuTriangleUv v[]; };
