@@ -56,8 +56,10 @@ CpuHit traverseBinaryCpu(const std::vector<gpu::BvhNode>& nodes, const std::vect
   if (cpuIntersectBox(nodes[0].boundsMin, nodes[0].boundsMax, origin, invDir, tMax) >= 1e30f) return hit;
   while (true) {
     hit.steps++;
+    hit.nodeVisits++;
     const gpu::BvhNode& n = nodes[node];
     if (n.triCount > 0) {
+      hit.triangleTests += n.triCount;
       for (uint32_t i = 0; i < n.triCount; ++i)
         cpuIntersectTriangle(triangles[n.leftOrFirst + i], n.leftOrFirst + i, origin, dir, hit, tMax);
       if (anyHit && hit.t > 0.0f) return hit;
@@ -104,6 +106,8 @@ CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& 
       const uint32_t rank = std::countr_zero(leafGroup.y);
       leafGroup.y &= leafGroup.y - 1u;
       const gpu::BvhWideLeaf& leaf = bvh.leaves[leafGroup.x + rank];
+      hit.leafRecords++;
+      hit.triangleTests += leaf.count;
       for (uint32_t i = 0; i < leaf.count; ++i)
         cpuIntersectTriangle(triangles[leaf.first + i], leaf.first + i, origin, dir, hit, tMax);
       if (anyHit && hit.t > 0.0f) return hit;
@@ -120,6 +124,7 @@ CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& 
     if ((nodeGroup.y & 0xFFu) != 0) stack[sp++] = nodeGroup;
 
     hit.steps++;
+    hit.nodeVisits++;
     const gpu::BvhWideNode& n = bvh.nodes[nodeIndex];
     const uint32_t interiorMask = n.masks & 0xFFu, leafMask = (n.masks >> 8) & 0xFFu;
     uint32_t nodeHits = 0, leafHits = 0;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <random>
@@ -128,6 +129,9 @@ struct Agreement {
   uint64_t rays = 0, hits = 0, ties = 0, binaryMisses = 0, checkedByAll = 0, axisAlignedWideMisses = 0;
   uint64_t closestMismatches = 0, anyHitMismatches = 0;
   double binarySteps = 0, wideSteps = 0;
+  // Fetches per ray (CpuHit's counts) and the CPU twins' time, for the closest-hit traversals.
+  double binaryNodes = 0, binaryTriangles = 0, wideNodes = 0, wideLeafRecords = 0, wideTriangles = 0;
+  double binaryNs = 0, wideNs = 0;
 };
 
 bool sameHitT(const CpuHit& a, const CpuHit& b) {
@@ -149,10 +153,20 @@ Agreement compare(const Scene& scene, const Bvh& binary, const BvhWide& wide, co
   const std::vector<gpu::GpuTriangle> tris = bvhOrderTriangles(scene.triangles, binary.triangleOrder);
   Agreement a;
   for (const Ray& r : rays) {
+    const auto t0 = std::chrono::steady_clock::now();
     const CpuHit b = traverseBinaryCpu(binary.nodes, tris, r.origin, r.dir, 1e30f, false);
+    const auto t1 = std::chrono::steady_clock::now();
     const CpuHit w = traverseWideCpu(wide, tris, r.origin, r.dir, 1e30f, false);
+    const auto t2 = std::chrono::steady_clock::now();
+    a.binaryNs += std::chrono::duration<double, std::nano>(t1 - t0).count();
+    a.wideNs += std::chrono::duration<double, std::nano>(t2 - t1).count();
     a.binarySteps += b.steps;
     a.wideSteps += w.steps;
+    a.binaryNodes += b.nodeVisits;
+    a.binaryTriangles += b.triangleTests;
+    a.wideNodes += w.nodeVisits;
+    a.wideLeafRecords += w.leafRecords;
+    a.wideTriangles += w.triangleTests;
     CpuHit reference = b;
     const bool agree = sameHitT(b, w) && (b.triangle == w.triangle ? b.t == w.t : true);
     if (!agree || a.rays % allEvery == 0) {
@@ -196,6 +210,13 @@ void expectAgreement(const Agreement& a, const char* what) {
               (unsigned long long)a.checkedByAll, (unsigned long long)a.binaryMisses,
               (unsigned long long)a.axisAlignedWideMisses, a.binarySteps / double(a.rays),
               a.wideSteps / double(a.rays));
+  std::printf("%s: per ray, wide %.2f nodes + %.2f leaf records + %.2f triangles (%.0f bytes), binary %.2f nodes + "
+              "%.2f triangles (%.0f bytes); CPU twin %.0f ns a ray wide, %.0f binary\n",
+              what, a.wideNodes / double(a.rays), a.wideLeafRecords / double(a.rays), a.wideTriangles / double(a.rays),
+              (80.0 * a.wideNodes + 8.0 * a.wideLeafRecords + 48.0 * a.wideTriangles) / double(a.rays),
+              a.binaryNodes / double(a.rays), a.binaryTriangles / double(a.rays),
+              (64.0 * a.binaryNodes + 48.0 * a.binaryTriangles) / double(a.rays), a.wideNs / double(a.rays),
+              a.binaryNs / double(a.rays));
   EXPECT_EQ(a.closestMismatches, 0u) << what;
   EXPECT_EQ(a.anyHitMismatches, 0u) << what;
   EXPECT_GT(a.hits, a.rays / 4) << what << ": the rays must mostly hit something to test anything";
