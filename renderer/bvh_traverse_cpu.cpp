@@ -99,18 +99,17 @@ CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& 
   glm::uvec2 stack[RL_BVH_STACK];
   uint32_t sp = 0;
   glm::uvec2 nodeGroup(0u, (1u << 8) | (1u << octant));
-  glm::uvec2 leafGroup(0u);
+  glm::uvec2 triangleGroup(0u);
   while (true) {
-    if (leafGroup.y != 0) {
+    if (triangleGroup.y != 0) {  // the leaves the last node's visit hit: their triangles, one step
       hit.steps++;
-      const uint32_t rank = std::countr_zero(leafGroup.y);
-      leafGroup.y &= leafGroup.y - 1u;
-      const gpu::BvhWideLeaf& leaf = bvh.leaves[leafGroup.x + rank];
-      hit.leafRecords++;
-      hit.triangleTests += leaf.count;
-      for (uint32_t i = 0; i < leaf.count; ++i)
-        cpuIntersectTriangle(triangles[leaf.first + i], leaf.first + i, origin, dir, hit, tMax);
-      if (anyHit && hit.t > 0.0f) return hit;
+      while (triangleGroup.y != 0) {
+        const uint32_t index = triangleGroup.x + std::countr_zero(triangleGroup.y);
+        triangleGroup.y &= triangleGroup.y - 1u;
+        hit.triangleTests++;
+        cpuIntersectTriangle(triangles[index], index, origin, dir, hit, tMax);
+        if (anyHit && hit.t > 0.0f) return hit;
+      }
       continue;
     }
     if ((nodeGroup.y & 0xFFu) == 0) {
@@ -126,13 +125,12 @@ CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& 
     hit.steps++;
     hit.nodeVisits++;
     const gpu::BvhWideNode& n = bvh.nodes[nodeIndex];
-    const uint32_t interiorMask = n.masks & 0xFFu, leafMask = (n.masks >> 8) & 0xFFu;
-    uint32_t nodeHits = 0, leafHits = 0;
+    const uint32_t interiorMask = wideInteriorMask(n);
+    uint32_t nodeHits = 0, triangleHits = 0;
     // The ray in the node's quantized frame, as the shader does: a child plane q is at t = q * tScale + tOrigin.
     const glm::vec3 scale = wideScale(n);
     const glm::vec3 tScale = scale * invDir, tOrigin = (n.origin - origin) * invDir;
     for (uint32_t s = 0; s < RL_BVH_WIDTH; ++s) {
-      if (((interiorMask | leafMask) & (1u << s)) == 0) continue;
       const glm::vec3 t0 = wideLowPlanes(n, s) * tScale + tOrigin, t1 = wideHighPlanes(n, s) * tScale + tOrigin;
       const glm::vec3 tn = glm::min(t0, t1), tf = glm::max(t0, t1);
       const float enter = std::max(std::max(tn.x, tn.y), std::max(tn.z, 0.0f));
@@ -141,10 +139,10 @@ CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& 
       if (interiorMask & (1u << s))
         nodeHits |= 1u << (s ^ octant);
       else
-        leafHits |= 1u << std::popcount(leafMask & ((1u << s) - 1u));
+        triangleHits |= wideLeafBits(wideMeta(n, s));
     }
     nodeGroup = {n.childBase, (interiorMask << 8) | nodeHits};
-    leafGroup = {n.leafBase, leafHits};
+    triangleGroup = {n.triBase, triangleHits};
   }
   return hit;
 }

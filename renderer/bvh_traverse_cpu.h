@@ -20,7 +20,8 @@ struct CpuHit {
   glm::vec2 bary{0.0f};
   uint32_t steps = 0;  // loop iterations: nodes (and, wide, leaves) visited
   // What the traversal fetched: nodes visited (binary: one 32-byte node, an interior one's two children read
-  // besides; wide: one 80-byte node), wide leaf records read (8 bytes) and triangles tested (48 bytes each).
+  // besides; wide: one 80-byte node), wide leaf records read (8 bytes; none since the wide leaves are triangle
+  // ranges of their node) and triangles tested (48 bytes each).
   uint32_t nodeVisits = 0, leafRecords = 0, triangleTests = 0;
 };
 

@@ -5,19 +5,17 @@
 // The stack holds node groups, not nodes: (first child node, the children's interior-slot mask << 8 | a hit
 // mask over visit positions). Visit position i of slot s is s ^ octant(ray), so the lowest set bit is the child
 // nearest in the direction-slot order; one group is pushed per level descended, so the stack never holds more
-// than the tree's depth (BvhWideStats::maxDepth + 1 <= RL_BVH_STACK). Leaves hit at a node are a second group
-// (first leaf record, mask over the node's leaf ranks), tested before the next node is visited.
+// than the tree's depth (BvhWideStats::maxDepth + 1 <= RL_BVH_STACK). The leaves hit at a node are a second
+// group, CWBVH's triangle group: (the node's triBase, a mask over its leaf block's triangles, each leaf's bits
+// from its meta byte), tested before the next node is visited; no leaf record is read.
 //
 // One loop iteration, and one step (HitRecord::steps, RL_TRAVERSAL_STEP()), is one wide node visited (its 8
-// quantized child boxes tested) or one leaf visited (its triangles tested): the binary traversal's step is one
-// binary node (two child boxes) or one leaf. Steps of the two layouts count different work; compare them as
-// what they are, the spread within a warp that reordering shrinks.
+// quantized child boxes tested) or the leaves one node's visit hit (all their triangles tested): the binary
+// traversal's step is one binary node (two child boxes) or one leaf. Steps of the two layouts count different
+// work; compare them as what they are, the spread within a warp that reordering shrinks.
 //
-// Slower than the binary traversal on an H200 (docs/results/h200-wide-bvh: 1.4-1.6x the frame time at
-// 2.1M-8.4M paths, with 2.4x fewer steps). What CWBVH does and this does not, the likely places to look: the
-// ray transformed once per node into its quantized frame (here each child box is decoded to floats and
-// slab-tested), the node read as 5 aligned 16-byte loads, triangles packed behind their node (here a leaf is
-// an extra 8-byte record and 48-byte triangles), and the hit-mask loop without a per-child branch.
+// Slower than the binary traversal on an H200 before the node's vector loads and the ray's per-node transform
+// (docs/results/h200-wide-bvh: 1.4-1.6x the frame time at 2.1M-8.4M paths, 1.21-1.32x with them).
 #ifndef RAYLAB_BVH_TRAVERSE_WIDE_GLSL
 #define RAYLAB_BVH_TRAVERSE_WIDE_GLSL
 
@@ -31,19 +29,17 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
   uint sp = 0u;
   // A virtual parent whose only child, interior slot 0, is the root: the loop's first visit is the root's.
   uvec2 nodeGroup = uvec2(0u, (1u << 8) | (1u << octant));
-  uvec2 leafGroup = uvec2(0u);
+  uvec2 triangleGroup = uvec2(0u);
   while (true) {
-    if (leafGroup.y != 0u) {
+    if (triangleGroup.y != 0u) {
       hit.steps++;
       RL_TRAVERSAL_STEP();
-      uint rank = findLSB(leafGroup.y);
-      leafGroup.y &= leafGroup.y - 1u;
-      BvhWideLeaf leaf = scene.wideLeaves.v[leafGroup.x + rank];
-      for (uint i = 0u; i < leaf.count; ++i) {
-        uint index = leaf.first + i;
+      while (triangleGroup.y != 0u) {
+        uint index = triangleGroup.x + uint(findLSB(triangleGroup.y));
+        triangleGroup.y &= triangleGroup.y - 1u;
         intersectTriangle(scene.triangles.v[index], index, origin, dir, hit, tMax);
+        if (anyHit && hit.t > 0.0) return hit;
       }
-      if (anyHit && hit.t > 0.0) return hit;
       continue;
     }
     if ((nodeGroup.y & 0xFFu) == 0u) {
@@ -59,7 +55,7 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
 
     hit.steps++;
     RL_TRAVERSAL_STEP();
-    // The node in five 16-byte loads: origin + exponents, bases + masks, then the 12 words of planes.
+    // The node in five 16-byte loads: origin + exponents/interior mask, bases + meta, then the 12 words of planes.
     BvhWideNodeQuads quads = BvhWideNodeQuads(scene.wideNodes);
     uint base = nodeIndex * 5u;
     uvec4 w0 = quads.v[base], w1 = quads.v[base + 1u], w2 = quads.v[base + 2u], w3 = quads.v[base + 3u],
@@ -71,11 +67,9 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
     // The ray in the node's quantized frame, once per node: a child plane q is at t = q * tScale + tOrigin.
     vec3 tScale = scale * invDir;
     vec3 tOrigin = (uintBitsToFloat(w0.xyz) - origin) * invDir;
-    uint interiorMask = w1.z & 0xFFu;
-    uint leafMask = (w1.z >> 8) & 0xFFu;
-    uint childMask = interiorMask | leafMask;
+    uint interiorMask = w0.w >> 24;
     uint nodeHits = 0u;
-    uint leafHits = 0u;
+    uint triangleHits = 0u;
     for (uint s = 0u; s < RL_BVH_WIDTH; ++s) {
       uint word = s >> 2;
       vec3 qlo3 = vec3(wideByte(qlo[word], s), wideByte(qlo[2u + word], s), wideByte(qlo[4u + word], s));
@@ -85,14 +79,17 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
       vec3 tn = min(t0, t1), tf = max(t0, t1);
       float enter = max(max(tn.x, tn.y), max(tn.z, 0.0));
       float leave = min(min(tf.x, tf.y), min(tf.z, tMax));
-      if ((childMask & (1u << s)) == 0u || enter > leave) continue;
-      if ((interiorMask & (1u << s)) != 0u)
+      if (enter > leave) continue;
+      if ((interiorMask & (1u << s)) != 0u) {
         nodeHits |= 1u << (s ^ octant);
-      else
-        leafHits |= 1u << bitCount(leafMask & ((1u << s) - 1u));
+      } else {
+        // A leaf's meta byte (0: an empty slot): (count - 1) << 5 | offset, its bits in the triangle mask.
+        uint meta = wideByte(s < 4u ? w1.z : w1.w, s);
+        if (meta != 0u) triangleHits |= ((2u << (meta >> 5)) - 1u) << (meta & 31u);
+      }
     }
     nodeGroup = uvec2(w1.x, (interiorMask << 8) | nodeHits);
-    leafGroup = uvec2(w1.y, leafHits);
+    triangleGroup = uvec2(w1.y, triangleHits);
   }
   return hit;
 }
