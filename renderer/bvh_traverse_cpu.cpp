@@ -99,19 +99,7 @@ CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& 
   glm::uvec2 stack[RL_BVH_STACK];
   uint32_t sp = 0;
   glm::uvec2 nodeGroup(0u, (1u << 8) | (1u << octant));
-  glm::uvec2 triangleGroup(0u);
   while (true) {
-    if (triangleGroup.y != 0) {  // the leaves the last node's visit hit: their triangles, one step
-      hit.steps++;
-      while (triangleGroup.y != 0) {
-        const uint32_t index = triangleGroup.x + std::countr_zero(triangleGroup.y);
-        triangleGroup.y &= triangleGroup.y - 1u;
-        hit.triangleTests++;
-        cpuIntersectTriangle(triangles[index], index, origin, dir, hit, tMax);
-        if (anyHit && hit.t > 0.0f) return hit;
-      }
-      continue;
-    }
     if ((nodeGroup.y & 0xFFu) == 0) {
       if (sp == 0) break;
       nodeGroup = stack[--sp];
@@ -120,7 +108,6 @@ CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& 
     nodeGroup.y &= ~(1u << position);
     const uint32_t slot = position ^ octant;
     const uint32_t nodeIndex = nodeGroup.x + std::popcount((nodeGroup.y >> 8) & ((1u << slot) - 1u));
-    if ((nodeGroup.y & 0xFFu) != 0) stack[sp++] = nodeGroup;
 
     hit.steps++;
     hit.nodeVisits++;
@@ -141,8 +128,17 @@ CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& 
       else
         triangleHits |= wideLeafBits(wideMeta(n, s));
     }
-    nodeGroup = {n.childBase, (interiorMask << 8) | nodeHits};
-    triangleGroup = {n.triBase, triangleHits};
+    if (nodeHits != 0) {  // descending: the siblings wait on the stack
+      if ((nodeGroup.y & 0xFFu) != 0) stack[sp++] = nodeGroup;
+      nodeGroup = {n.childBase, (interiorMask << 8) | nodeHits};
+    }
+    while (triangleHits != 0) {  // the node's triangle group, in the same step
+      const uint32_t index = n.triBase + std::countr_zero(triangleHits);
+      triangleHits &= triangleHits - 1u;
+      hit.triangleTests++;
+      cpuIntersectTriangle(triangles[index], index, origin, dir, hit, tMax);
+      if (anyHit && hit.t > 0.0f) return hit;
+    }
   }
   return hit;
 }

@@ -2,15 +2,16 @@
 // Karras and Laine (HPG 2017). Included by bvh_traverse.glsl, whose HitRecord, box and triangle tests it uses;
 // its C++ twin is renderer/bvh_traverse_cpu.cpp (keep the two in step).
 //
-// The stack holds node groups, not nodes: (first child node, the children's interior-slot mask << 8 | a hit
-// mask over visit positions). Visit position i of slot s is s ^ octant(ray), so the lowest set bit is the child
-// nearest in the direction-slot order; one group is pushed per level descended, so the stack never holds more
-// than the tree's depth (BvhWideStats::maxDepth + 1 <= RL_BVH_STACK). The leaves hit at a node are a second
-// group, CWBVH's triangle group: (the node's triBase, a mask over its leaf block's triangles, each leaf's bits
-// from its meta byte), tested before the next node is visited; no leaf record is read.
+// The stack holds node groups, not nodes (CWBVH's): (first child node, the children's interior-slot mask << 8 |
+// a hit mask over visit positions). Visit position i of slot s is s ^ octant(ray), so the lowest set bit is the
+// child nearest in the direction-slot order. The current group stays in registers; it is pushed only when the
+// visited node has interior children to descend into, at most once per level, so the stack never holds more
+// than the tree's depth (BvhWideStats::maxDepth + 1 <= RL_BVH_STACK). The leaves hit at a node are its
+// triangle group: (the node's triBase, a mask over its leaf block's triangles, each leaf's bits from its meta
+// byte), tested in the same iteration, before the next node; no leaf record is read.
 //
-// One loop iteration, and one step (HitRecord::steps, RL_TRAVERSAL_STEP()), is one wide node visited (its 8
-// quantized child boxes tested) or the leaves one node's visit hit (all their triangles tested): the binary
+// One loop iteration, and one step (HitRecord::steps, RL_TRAVERSAL_STEP()), is one wide node visited: its 8
+// quantized child boxes tested, then the triangles of the leaves among them that the ray entered. The binary
 // traversal's step is one binary node (two child boxes) or one leaf. Steps of the two layouts count different
 // work; compare them as what they are, the spread within a warp that reordering shrinks.
 //
@@ -29,19 +30,7 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
   uint sp = 0u;
   // A virtual parent whose only child, interior slot 0, is the root: the loop's first visit is the root's.
   uvec2 nodeGroup = uvec2(0u, (1u << 8) | (1u << octant));
-  uvec2 triangleGroup = uvec2(0u);
   while (true) {
-    if (triangleGroup.y != 0u) {
-      hit.steps++;
-      RL_TRAVERSAL_STEP();
-      while (triangleGroup.y != 0u) {
-        uint index = triangleGroup.x + uint(findLSB(triangleGroup.y));
-        triangleGroup.y &= triangleGroup.y - 1u;
-        intersectTriangle(scene.triangles.v[index], index, origin, dir, hit, tMax);
-        if (anyHit && hit.t > 0.0) return hit;
-      }
-      continue;
-    }
     if ((nodeGroup.y & 0xFFu) == 0u) {
       if (sp == 0u) break;
       nodeGroup = stack[--sp];
@@ -51,7 +40,6 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
     uint slot = position ^ octant;
     uint interiorBelow = (nodeGroup.y >> 8) & ((1u << slot) - 1u);
     uint nodeIndex = nodeGroup.x + bitCount(interiorBelow);
-    if ((nodeGroup.y & 0xFFu) != 0u) stack[sp++] = nodeGroup;  // the siblings still to visit
 
     hit.steps++;
     RL_TRAVERSAL_STEP();
@@ -88,8 +76,20 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
         if (meta != 0u) triangleHits |= ((2u << (meta >> 5)) - 1u) << (meta & 31u);
       }
     }
-    nodeGroup = uvec2(w1.x, (interiorMask << 8) | nodeHits);
-    triangleGroup = uvec2(w1.y, triangleHits);
+    // Descending: the siblings still to visit wait on the stack (only then: a node without interior hits
+    // leaves the current group as it is, no push and pop).
+    if (nodeHits != 0u) {
+      if ((nodeGroup.y & 0xFFu) != 0u) stack[sp++] = nodeGroup;
+      nodeGroup = uvec2(w1.x, (interiorMask << 8) | nodeHits);
+    }
+    // The node's triangle group, in the same iteration: every lane that visited a node tests its triangles
+    // together, before the next node's box tests (which then cull with the shorter tMax).
+    while (triangleHits != 0u) {
+      uint index = w1.y + uint(findLSB(triangleHits));
+      triangleHits &= triangleHits - 1u;
+      intersectTriangle(scene.triangles.v[index], index, origin, dir, hit, tMax);
+      if (anyHit && hit.t > 0.0) return hit;
+    }
   }
   return hit;
 }
