@@ -118,8 +118,15 @@ CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& 
     const glm::vec3 scale = wideScale(n);
     const glm::vec3 tScale = scale * invDir, tOrigin = (n.origin - origin) * invDir;
     for (uint32_t s = 0; s < RL_BVH_WIDTH; ++s) {
-      const glm::vec3 t0 = wideLowPlanes(n, s) * tScale + tOrigin, t1 = wideHighPlanes(n, s) * tScale + tOrigin;
-      const glm::vec3 tn = glm::min(t0, t1), tf = glm::max(t0, t1);
+      // Near and far planes by the ray's sign per axis, as the shader picks them (no min and max per child).
+      const glm::vec3 lo = wideLowPlanes(n, s), hi = wideHighPlanes(n, s);
+      glm::vec3 qnear, qfar;
+      for (int k = 0; k < 3; ++k) {
+        const bool negative = (octant >> k) & 1u;
+        qnear[k] = negative ? hi[k] : lo[k];
+        qfar[k] = negative ? lo[k] : hi[k];
+      }
+      const glm::vec3 tn = qnear * tScale + tOrigin, tf = qfar * tScale + tOrigin;
       const float enter = std::max(std::max(tn.x, tn.y), std::max(tn.z, 0.0f));
       const float leave = std::min(std::min(tf.x, tf.y), std::min(tf.z, tMax));
       if (enter > leave) continue;

@@ -48,8 +48,12 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
     uint base = nodeIndex * 5u;
     uvec4 w0 = quads.v[base], w1 = quads.v[base + 1u], w2 = quads.v[base + 2u], w3 = quads.v[base + 3u],
           w4 = quads.v[base + 4u];
-    uint qlo[6] = uint[6](w2.x, w2.y, w2.z, w2.w, w3.x, w3.y);
-    uint qhi[6] = uint[6](w3.z, w3.w, w4.x, w4.y, w4.z, w4.w);
+    // Each axis's near and far planes chosen by the ray's sign once per node (CWBVH): the entry and exit
+    // distances then need no min and max per child. Words 2k, 2k + 1 hold axis k's 8 planes.
+    uvec2 loX = w2.xy, loY = w2.zw, loZ = w3.xy, hiX = w3.zw, hiY = w4.xy, hiZ = w4.zw;
+    uvec2 nearX = (octant & 1u) != 0u ? hiX : loX, farX = (octant & 1u) != 0u ? loX : hiX;
+    uvec2 nearY = (octant & 2u) != 0u ? hiY : loY, farY = (octant & 2u) != 0u ? loY : hiY;
+    uvec2 nearZ = (octant & 4u) != 0u ? hiZ : loZ, farZ = (octant & 4u) != 0u ? loZ : hiZ;
     vec3 scale = vec3(uintBitsToFloat((w0.w & 0xFFu) << 23), uintBitsToFloat(((w0.w >> 8) & 0xFFu) << 23),
                       uintBitsToFloat(((w0.w >> 16) & 0xFFu) << 23));
     // The ray in the node's quantized frame, once per node: a child plane q is at t = q * tScale + tOrigin.
@@ -60,11 +64,12 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
     uint triangleHits = 0u;
     for (uint s = 0u; s < RL_BVH_WIDTH; ++s) {
       uint word = s >> 2;
-      vec3 qlo3 = vec3(wideByte(qlo[word], s), wideByte(qlo[2u + word], s), wideByte(qlo[4u + word], s));
-      vec3 qhi3 = vec3(wideByte(qhi[word], s), wideByte(qhi[2u + word], s), wideByte(qhi[4u + word], s));
-      vec3 t0 = qlo3 * tScale + tOrigin;
-      vec3 t1 = qhi3 * tScale + tOrigin;
-      vec3 tn = min(t0, t1), tf = max(t0, t1);
+      vec3 qnear = vec3(wideByte(nearX[word], s), wideByte(nearY[word], s), wideByte(nearZ[word], s));
+      vec3 qfar = vec3(wideByte(farX[word], s), wideByte(farY[word], s), wideByte(farZ[word], s));
+      // The slab test's min and max of the two planes, without them: tScale has the ray's sign per axis and
+      // the lower plane is never above the upper one (an empty slot has both 0).
+      vec3 tn = qnear * tScale + tOrigin;
+      vec3 tf = qfar * tScale + tOrigin;
       float enter = max(max(tn.x, tn.y), max(tn.z, 0.0));
       float leave = min(min(tf.x, tf.y), min(tf.z, tMax));
       if (enter > leave) continue;
