@@ -28,6 +28,8 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
   uint octant = (dir.x < 0.0 ? 1u : 0u) | (dir.y < 0.0 ? 2u : 0u) | (dir.z < 0.0 ? 4u : 0u);
   uvec2 stack[RL_BVH_STACK];
   uint sp = 0u;
+  BvhWideNodeQuads quads = BvhWideNodeQuads(scene.wideNodes);
+  TriangleQuads triangleQuads = TriangleQuads(scene.triangles);
   // A virtual parent whose only child, interior slot 0, is the root: the loop's first visit is the root's.
   uvec2 nodeGroup = uvec2(0u, (1u << 8) | (1u << octant));
   while (true) {
@@ -44,7 +46,6 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
     hit.steps++;
     RL_TRAVERSAL_STEP();
     // The node in five 16-byte loads: origin + exponents/interior mask, bases + meta, then the 12 words of planes.
-    BvhWideNodeQuads quads = BvhWideNodeQuads(scene.wideNodes);
     uint base = nodeIndex * 5u;
     uvec4 w0 = quads.v[base], w1 = quads.v[base + 1u], w2 = quads.v[base + 2u], w3 = quads.v[base + 3u],
           w4 = quads.v[base + 4u];
@@ -92,7 +93,9 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
     while (triangleHits != 0u) {
       uint index = w1.y + uint(findLSB(triangleHits));
       triangleHits &= triangleHits - 1u;
-      intersectTriangle(scene.triangles.v[index], index, origin, dir, hit, tMax);
+      // Three 16-byte loads (v0, e1, e2 and the shading words beside them), not a field at a time.
+      vec4 a = triangleQuads.v[3u * index], b = triangleQuads.v[3u * index + 1u], c = triangleQuads.v[3u * index + 2u];
+      intersectTriangleEdges(a.xyz, b.xyz, c.xyz, index, origin, dir, hit, tMax);
       if (anyHit && hit.t > 0.0) return hit;
     }
   }

@@ -164,6 +164,9 @@ layout(buffer_reference, scalar) buffer BvhWideNodeBuf { BvhWideNode v[]; };
 // vector loads: a struct of scalars is read field by field.
 layout(buffer_reference, std430, buffer_reference_align = 16) buffer BvhWideNodeQuads { uvec4 v[]; };
 layout(buffer_reference, scalar) buffer TriangleBuf { GpuTriangle v[]; };
+// The same triangles as three aligned 16-byte words each (48 bytes: v0, e1, e2 in xyz, GpuTriangle's order), for
+// the wide traversal's vector loads.
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer TriangleQuads { vec4 v[]; };
 layout(buffer_reference, scalar) buffer TriangleUvBuf { GpuTriangleUv v[]; };
 layout(buffer_reference, scalar) buffer MaterialBuf { GpuMaterial v[]; };
 layout(buffer_reference, scalar) buffer TextureInfoBuf { GpuTextureInfo v[]; };
