@@ -56,8 +56,10 @@ CpuHit traverseBinaryCpu(const std::vector<gpu::BvhNode>& nodes, const std::vect
   if (cpuIntersectBox(nodes[0].boundsMin, nodes[0].boundsMax, origin, invDir, tMax) >= 1e30f) return hit;
   while (true) {
     hit.steps++;
+    hit.nodeVisits++;
     const gpu::BvhNode& n = nodes[node];
     if (n.triCount > 0) {
+      hit.triangleTests += n.triCount;
       for (uint32_t i = 0; i < n.triCount; ++i)
         cpuIntersectTriangle(triangles[n.leftOrFirst + i], n.leftOrFirst + i, origin, dir, hit, tMax);
       if (anyHit && hit.t > 0.0f) return hit;
@@ -97,18 +99,7 @@ CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& 
   glm::uvec2 stack[RL_BVH_STACK];
   uint32_t sp = 0;
   glm::uvec2 nodeGroup(0u, (1u << 8) | (1u << octant));
-  glm::uvec2 leafGroup(0u);
   while (true) {
-    if (leafGroup.y != 0) {
-      hit.steps++;
-      const uint32_t rank = std::countr_zero(leafGroup.y);
-      leafGroup.y &= leafGroup.y - 1u;
-      const gpu::BvhWideLeaf& leaf = bvh.leaves[leafGroup.x + rank];
-      for (uint32_t i = 0; i < leaf.count; ++i)
-        cpuIntersectTriangle(triangles[leaf.first + i], leaf.first + i, origin, dir, hit, tMax);
-      if (anyHit && hit.t > 0.0f) return hit;
-      continue;
-    }
     if ((nodeGroup.y & 0xFFu) == 0) {
       if (sp == 0) break;
       nodeGroup = stack[--sp];
@@ -117,23 +108,44 @@ CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& 
     nodeGroup.y &= ~(1u << position);
     const uint32_t slot = position ^ octant;
     const uint32_t nodeIndex = nodeGroup.x + std::popcount((nodeGroup.y >> 8) & ((1u << slot) - 1u));
-    if ((nodeGroup.y & 0xFFu) != 0) stack[sp++] = nodeGroup;
 
     hit.steps++;
+    hit.nodeVisits++;
     const gpu::BvhWideNode& n = bvh.nodes[nodeIndex];
-    const uint32_t interiorMask = n.masks & 0xFFu, leafMask = (n.masks >> 8) & 0xFFu;
-    uint32_t nodeHits = 0, leafHits = 0;
+    const uint32_t interiorMask = wideInteriorMask(n);
+    uint32_t nodeHits = 0, triangleHits = 0;
+    // The ray in the node's quantized frame, as the shader does: a child plane q is at t = q * tScale + tOrigin.
+    const glm::vec3 scale = wideScale(n);
+    const glm::vec3 tScale = scale * invDir, tOrigin = (n.origin - origin) * invDir;
     for (uint32_t s = 0; s < RL_BVH_WIDTH; ++s) {
-      if (((interiorMask | leafMask) & (1u << s)) == 0) continue;
-      const WideChildBox box = decodeChildBox(n, s);
-      if (cpuIntersectBox(box.min, box.max, origin, invDir, tMax) >= 1e30f) continue;
+      // Near and far planes by the ray's sign per axis, as the shader picks them (no min and max per child).
+      const glm::vec3 lo = wideLowPlanes(n, s), hi = wideHighPlanes(n, s);
+      glm::vec3 qnear, qfar;
+      for (int k = 0; k < 3; ++k) {
+        const bool negative = (octant >> k) & 1u;
+        qnear[k] = negative ? hi[k] : lo[k];
+        qfar[k] = negative ? lo[k] : hi[k];
+      }
+      const glm::vec3 tn = qnear * tScale + tOrigin, tf = qfar * tScale + tOrigin;
+      const float enter = std::max(std::max(tn.x, tn.y), std::max(tn.z, 0.0f));
+      const float leave = std::min(std::min(tf.x, tf.y), std::min(tf.z, tMax));
+      if (enter > leave) continue;
       if (interiorMask & (1u << s))
         nodeHits |= 1u << (s ^ octant);
       else
-        leafHits |= 1u << std::popcount(leafMask & ((1u << s) - 1u));
+        triangleHits |= wideLeafBits(wideMeta(n, s));
     }
-    nodeGroup = {n.childBase, (interiorMask << 8) | nodeHits};
-    leafGroup = {n.leafBase, leafHits};
+    if (nodeHits != 0) {  // descending: the siblings wait on the stack
+      if ((nodeGroup.y & 0xFFu) != 0) stack[sp++] = nodeGroup;
+      nodeGroup = {n.childBase, (interiorMask << 8) | nodeHits};
+    }
+    while (triangleHits != 0) {  // the node's triangle group, in the same step
+      const uint32_t index = n.triBase + std::countr_zero(triangleHits);
+      triangleHits &= triangleHits - 1u;
+      hit.triangleTests++;
+      cpuIntersectTriangle(triangles[index], index, origin, dir, hit, tMax);
+      if (anyHit && hit.t > 0.0f) return hit;
+    }
   }
   return hit;
 }

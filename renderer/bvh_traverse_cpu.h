@@ -18,7 +18,11 @@ struct CpuHit {
   float t = -1.0f;  // negative: no hit
   uint32_t triangle = 0;  // BVH-order triangle index
   glm::vec2 bary{0.0f};
-  uint32_t steps = 0;  // loop iterations: nodes (and, wide, leaves) visited
+  uint32_t steps = 0;  // loop iterations: nodes visited (binary: interior nodes and leaves; wide: wide nodes)
+  // What the traversal fetched: nodes visited (binary: one 32-byte node, an interior one's two children read
+  // besides; wide: one 80-byte node), wide leaf records read (8 bytes; none since the wide leaves are triangle
+  // ranges of their node) and triangles tested (48 bytes each).
+  uint32_t nodeVisits = 0, leafRecords = 0, triangleTests = 0;
 };
 
 // `triangles` in BVH order (bvhOrderTriangles); anyHit stops at the first hit, as shadow rays do.

@@ -95,12 +95,42 @@ std::array<int, RL_BVH_WIDTH> assignSlots(const std::vector<gpu::BvhNode>& kids,
   return childOfSlot;
 }
 
-struct Collapser {
-  const Bvh& binary;
-  BvhWide& out;
+uint32_t slotsOfLeaf(uint32_t count) { return (count + kWideLeafSlotTriangles - 1) / kWideLeafSlotTriangles; }
 
-  // Up to 8 binary subtrees under binary node `index`: open the largest-area interior one until 8 or only
-  // leaves remain. Empty boxes (the empty scene's placeholder nodes) are dropped.
+void setMeta(gpu::BvhWideNode& node, uint32_t slot, uint32_t meta) {
+  uint32_t& w = node.meta[slot >> 2];
+  const uint32_t shift = (slot & 3u) * 8u;
+  w = (w & ~(0xFFu << shift)) | (meta << shift);
+}
+
+// One slot's content while a node is built: a binary interior node (or a binary leaf given a wide node of its
+// own, when the node's leaf budget is spent), or up to 8 triangles of a binary leaf.
+struct SlotEntry {
+  uint32_t binary;  // binary node index
+  bool leaf;
+  uint32_t first, count;  // leaf: the triangles, at their old BVH positions
+};
+
+struct Collapser {
+  Bvh& binary;
+  BvhWide& out;
+  std::vector<uint32_t> newOrder;                              // the wide tree's leaf order of triangleOrder
+  std::vector<std::pair<uint32_t, uint32_t>> movedLeaves;      // (binary leaf, its new first triangle)
+
+  // Whether kids fit one wide node with every binary leaf among them as leaf slots: 8 slots, a leaf taking one
+  // per 8 triangles, and at most 32 triangles.
+  bool fitsAsLeaves(const std::vector<uint32_t>& kids) const {
+    uint32_t slots = 0, tris = 0;
+    for (uint32_t k : kids) {
+      const gpu::BvhNode& n = binary.nodes[k];
+      slots += n.triCount > 0 ? slotsOfLeaf(n.triCount) : 1u;
+      tris += n.triCount;
+    }
+    return slots <= RL_BVH_WIDTH && tris <= kWideNodeTriangles;
+  }
+
+  // Up to 8 binary subtrees under binary node `index`: open the largest-area interior one (that keeps the
+  // node within its leaf budget) until 8 or none remain. Empty boxes (the empty scene's placeholders) are dropped.
   std::vector<uint32_t> childrenOf(uint32_t index) const {
     const gpu::BvhNode& n = binary.nodes.at(index);
     std::vector<uint32_t> kids;
@@ -110,33 +140,64 @@ struct Collapser {
     }
     for (uint32_t c : {n.leftOrFirst, n.leftOrFirst + 1})
       if (!emptyBox(binary.nodes.at(c))) kids.push_back(c);
+    std::vector<uint32_t> unopenable;
     while (kids.size() < RL_BVH_WIDTH) {
       int best = -1;
       float bestArea = -1.0f;
       for (int i = 0; i < int(kids.size()); ++i) {
         const gpu::BvhNode& k = binary.nodes[kids[i]];
-        if (k.triCount == 0 && halfArea(k) > bestArea) {
+        if (k.triCount == 0 && halfArea(k) > bestArea &&
+            std::find(unopenable.begin(), unopenable.end(), kids[i]) == unopenable.end()) {
           best = i;
           bestArea = halfArea(k);
         }
       }
       if (best < 0) break;
       const gpu::BvhNode& open = binary.nodes[kids[best]];
-      kids.erase(kids.begin() + best);
+      std::vector<uint32_t> next = kids;
+      next.erase(next.begin() + best);
       for (uint32_t c : {open.leftOrFirst, open.leftOrFirst + 1})
-        if (!emptyBox(binary.nodes.at(c))) kids.push_back(c);
+        if (!emptyBox(binary.nodes.at(c))) next.push_back(c);
+      // Opening must not push a leaf out of the node when the current set fits.
+      if (next.size() <= RL_BVH_WIDTH && (fitsAsLeaves(next) || !fitsAsLeaves(kids))) {
+        kids = std::move(next);
+      } else {
+        unopenable.push_back(kids[best]);
+      }
     }
     return kids;
+  }
+
+  // The slots' contents: binary leaves as leaf slots while the budget lasts (in order), the rest as interior
+  // children (a binary leaf that does not fit gets a wide node of its own).
+  std::vector<SlotEntry> entriesOf(const std::vector<uint32_t>& kids) const {
+    uint32_t slots = uint32_t(kids.size()), tris = 0;
+    std::vector<SlotEntry> entries;
+    for (uint32_t k : kids) {
+      const gpu::BvhNode& n = binary.nodes[k];
+      const uint32_t extra = n.triCount > 0 ? slotsOfLeaf(n.triCount) - 1u : 0u;
+      if (n.triCount > 0 && slots + extra <= RL_BVH_WIDTH && tris + n.triCount <= kWideNodeTriangles) {
+        slots += extra;
+        tris += n.triCount;
+        for (uint32_t f = 0; f < n.triCount; f += kWideLeafSlotTriangles)
+          entries.push_back({k, true, n.leftOrFirst + f, std::min(kWideLeafSlotTriangles, n.triCount - f)});
+      } else {
+        entries.push_back({k, false, 0, 0});
+      }
+    }
+    return entries;
   }
 
   void build(uint32_t wideIndex, uint32_t binaryIndex, uint32_t depth) {
     if (depth >= RL_BVH_STACK) throw std::runtime_error("wide BVH: deeper than the traversal stack");
     out.stats.maxDepth = std::max(out.stats.maxDepth, depth);
-    const std::vector<uint32_t> kidIndices = childrenOf(binaryIndex);
+    std::vector<uint32_t> kidIndices = childrenOf(binaryIndex);
+    // A binary leaf reached as a wide node of its own (its parent's budget was spent) is that node's one leaf.
+    std::vector<SlotEntry> entries = entriesOf(kidIndices);
     std::vector<gpu::BvhNode> kids;
     glm::vec3 lo(1e30f), hi(-1e30f);
-    for (uint32_t k : kidIndices) {
-      kids.push_back(binary.nodes[k]);
+    for (const SlotEntry& e : entries) {
+      kids.push_back(binary.nodes[e.binary]);
       lo = glm::min(lo, kids.back().boundsMin);
       hi = glm::max(hi, kids.back().boundsMax);
     }
@@ -147,28 +208,56 @@ struct Collapser {
     }
     const std::array<int, RL_BVH_WIDTH> childOfSlot = assignSlots(kids, 0.5f * (lo + hi));
     std::vector<std::pair<uint32_t, gpu::BvhNode>> placed;
-    uint32_t interiorMask = 0, leafMask = 0;
+    uint32_t interiorMask = 0;
     for (uint32_t s = 0; s < RL_BVH_WIDTH; ++s) {
       if (childOfSlot[s] < 0) continue;
-      const gpu::BvhNode& k = kids[childOfSlot[s]];
-      placed.push_back({s, k});
-      (k.triCount > 0 ? leafMask : interiorMask) |= 1u << s;
+      placed.push_back({s, kids[childOfSlot[s]]});
+      if (!entries[childOfSlot[s]].leaf) interiorMask |= 1u << s;
     }
     node.origin = lo;
     for (uint32_t axis = 0; axis < 3; ++axis) quantizeAxis(node, axis, placed, lo[axis], hi[axis]);
-    node.masks = interiorMask | (leafMask << 8);
+    node.exponents |= interiorMask << 24;
     node.childBase = uint32_t(out.nodes.size());
-    node.leafBase = uint32_t(out.leaves.size());
     out.nodes.resize(out.nodes.size() + std::popcount(interiorMask));
+
+    // The leaf block: binary leaves by decreasing size (a leaf's slots stay together, in order), so the block
+    // starts with a leaf of 2 or more triangles and no meta byte is 0; all single triangles: from offset 1.
+    std::vector<uint32_t> leafKids;  // binary leaf indices, each once
+    uint32_t largest = 0;
+    for (const SlotEntry& e : entries)
+      if (e.leaf && (leafKids.empty() || leafKids.back() != e.binary)) {
+        leafKids.push_back(e.binary);
+        largest = std::max(largest, binary.nodes[e.binary].triCount);
+      }
+    std::stable_sort(leafKids.begin(), leafKids.end(), [&](uint32_t a, uint32_t b) {
+      return binary.nodes[a].triCount > binary.nodes[b].triCount;
+    });
+    const uint32_t start = largest == 1 ? 1u : 0u;
+    node.triBase = uint32_t(newOrder.size()) - start;
+    std::vector<std::pair<uint32_t, uint32_t>> offsetOf;  // (binary leaf, its offset in the block)
+    uint32_t offset = start;
+    for (uint32_t b : leafKids) {
+      const gpu::BvhNode& leaf = binary.nodes[b];
+      offsetOf.push_back({b, offset});
+      movedLeaves.push_back({b, uint32_t(newOrder.size())});
+      newOrder.insert(newOrder.end(), binary.triangleOrder.begin() + leaf.leftOrFirst,
+                      binary.triangleOrder.begin() + leaf.leftOrFirst + leaf.triCount);
+      offset += leaf.triCount;
+    }
     std::vector<std::pair<uint32_t, uint32_t>> interiors;  // (wide index, binary index), in slot order
     for (uint32_t s = 0; s < RL_BVH_WIDTH; ++s) {
       if (childOfSlot[s] < 0) continue;
-      const uint32_t b = kidIndices[childOfSlot[s]];
-      const gpu::BvhNode& k = binary.nodes[b];
-      if (k.triCount > 0)
-        out.leaves.push_back({k.leftOrFirst, k.triCount});
-      else
-        interiors.push_back({node.childBase + uint32_t(interiors.size()), b});
+      const SlotEntry& e = entries[childOfSlot[s]];
+      if (e.leaf) {
+        uint32_t leafOffset = 0;
+        for (const auto& [b, o] : offsetOf)
+          if (b == e.binary) leafOffset = o;
+        leafOffset += e.first - binary.nodes[e.binary].leftOrFirst;
+        setMeta(node, s, ((e.count - 1u) << 5) | leafOffset);
+        out.stats.leafCount++;
+      } else {
+        interiors.push_back({node.childBase + uint32_t(interiors.size()), e.binary});
+      }
     }
     out.nodes[wideIndex] = node;
     for (const auto& [w, b] : interiors) build(w, b, depth + 1);
@@ -177,13 +266,20 @@ struct Collapser {
 
 }  // namespace
 
-BvhWide collapseBvh(const Bvh& binary) {
+BvhWide collapseBvh(Bvh& binary) {
   const auto start = std::chrono::steady_clock::now();
   BvhWide wide;
   wide.nodes.resize(1);
-  if (!binary.nodes.empty()) Collapser{binary, wide}.build(0, 0, 0);
+  if (!binary.nodes.empty()) {
+    Collapser c{binary, wide, {}, {}};
+    c.newOrder.reserve(binary.triangleOrder.size());
+    c.build(0, 0, 0);
+    if (c.newOrder.size() != binary.triangleOrder.size())
+      throw std::runtime_error("wide BVH: its leaves hold another number of triangles than the binary tree's");
+    for (const auto& [b, first] : c.movedLeaves) binary.nodes[b].leftOrFirst = first;
+    binary.triangleOrder = std::move(c.newOrder);
+  }
   wide.stats.nodeCount = uint32_t(wide.nodes.size());
-  wide.stats.leafCount = uint32_t(wide.leaves.size());
   wide.stats.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return wide;
 }
@@ -198,16 +294,33 @@ WideChildBox decodeChildBox(const gpu::BvhWideNode& node, uint32_t slot) {
   return b;
 }
 
+glm::vec3 wideScale(const gpu::BvhWideNode& node) {
+  glm::vec3 s;
+  for (uint32_t axis = 0; axis < 3; ++axis) s[axis] = scaleOf((node.exponents >> (8u * axis)) & 0xFFu);
+  return s;
+}
+
+glm::vec3 wideLowPlanes(const gpu::BvhWideNode& node, uint32_t slot) {
+  return {float(getByte(node.qlo, 0, slot)), float(getByte(node.qlo, 1, slot)), float(getByte(node.qlo, 2, slot))};
+}
+
+glm::vec3 wideHighPlanes(const gpu::BvhWideNode& node, uint32_t slot) {
+  return {float(getByte(node.qhi, 0, slot)), float(getByte(node.qhi, 1, slot)), float(getByte(node.qhi, 2, slot))};
+}
+
 WideSlot slotKind(const gpu::BvhWideNode& node, uint32_t slot) {
-  if ((node.masks >> slot) & 1u) return WideSlot::Interior;
-  if ((node.masks >> (8u + slot)) & 1u) return WideSlot::Leaf;
+  if ((wideInteriorMask(node) >> slot) & 1u) return WideSlot::Interior;
+  if (wideMeta(node, slot) != 0) return WideSlot::Leaf;
   return WideSlot::Empty;
 }
 
 uint32_t slotChildIndex(const gpu::BvhWideNode& node, uint32_t slot) {
-  const uint32_t below = (1u << slot) - 1u;
-  if (slotKind(node, slot) == WideSlot::Interior) return node.childBase + std::popcount(node.masks & 0xFFu & below);
-  return node.leafBase + std::popcount((node.masks >> 8) & 0xFFu & below);
+  return node.childBase + std::popcount(wideInteriorMask(node) & ((1u << slot) - 1u));
+}
+
+WideLeafRange wideLeafRange(const gpu::BvhWideNode& node, uint32_t slot) {
+  const uint32_t meta = wideMeta(node, slot);
+  return {node.triBase + (meta & 31u), (meta >> 5) + 1u};
 }
 
 }  // namespace raylab

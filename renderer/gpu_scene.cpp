@@ -52,7 +52,7 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene) {
     if (t.material >= scene.materials.size()) throw SceneLoadError(scene.name + ": triangle material out of range");
   Bvh bvh = buildBvh(scene.triangles);
   bvhStats_ = bvh.stats;
-  const BvhWide wide = collapseBvh(bvh);
+  const BvhWide wide = collapseBvh(bvh);  // moves the leaves into its leaf order: before anything reads the order
   wideStats_ = wide.stats;
   bounds_ = scene.bounds();
   triangleCount_ = static_cast<uint32_t>(scene.triangles.size());
@@ -94,7 +94,6 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene) {
   };
   block_.nodes = add(bvh.nodes);
   block_.wideNodes = add(wide.nodes);
-  block_.wideLeaves = add(wide.leaves);
   block_.bvhLayout = RL_BVH_BINARY;  // PathTracer sets it per frame from Settings::bvh
   block_.triangles = add(tris);
   block_.uvs = add(uvs);

@@ -30,25 +30,30 @@ float intersectBox(vec3 bmin, vec3 bmax, vec3 origin, vec3 invDir, float tMax) {
   return enter <= leave ? enter : 1e30;
 }
 
-// Moeller-Trumbore; updates hit when nearer.
-void intersectTriangle(GpuTriangle tri, uint index, vec3 origin, vec3 dir, inout HitRecord hit, inout float tMax) {
-  vec3 p = cross(dir, tri.e2);
-  float det = dot(tri.e1, p);
+// Moeller-Trumbore on a triangle's first vertex and two edges; updates hit when nearer.
+void intersectTriangleEdges(vec3 v0, vec3 e1, vec3 e2, uint index, vec3 origin, vec3 dir, inout HitRecord hit,
+                            inout float tMax) {
+  vec3 p = cross(dir, e2);
+  float det = dot(e1, p);
   if (abs(det) < 1e-12) return;
   float inv = 1.0 / det;
-  vec3 s = origin - tri.v0;
+  vec3 s = origin - v0;
   float u = dot(s, p) * inv;
   if (u < 0.0 || u > 1.0) return;
-  vec3 q = cross(s, tri.e1);
+  vec3 q = cross(s, e1);
   float v = dot(dir, q) * inv;
   if (v < 0.0 || u + v > 1.0) return;
-  float t = dot(tri.e2, q) * inv;
+  float t = dot(e2, q) * inv;
   if (t > 0.0 && t < tMax) {
     tMax = t;
     hit.t = t;
     hit.triangle = index;
     hit.bary = vec2(u, v);
   }
+}
+
+void intersectTriangle(GpuTriangle tri, uint index, vec3 origin, vec3 dir, inout HitRecord hit, inout float tMax) {
+  intersectTriangleEdges(tri.v0, tri.e1, tri.e2, index, origin, dir, hit, tMax);
 }
 
 // What a traversal starts from (both layouts): no hit yet, no step taken.

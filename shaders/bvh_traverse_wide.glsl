@@ -2,22 +2,21 @@
 // Karras and Laine (HPG 2017). Included by bvh_traverse.glsl, whose HitRecord, box and triangle tests it uses;
 // its C++ twin is renderer/bvh_traverse_cpu.cpp (keep the two in step).
 //
-// The stack holds node groups, not nodes: (first child node, the children's interior-slot mask << 8 | a hit
-// mask over visit positions). Visit position i of slot s is s ^ octant(ray), so the lowest set bit is the child
-// nearest in the direction-slot order; one group is pushed per level descended, so the stack never holds more
-// than the tree's depth (BvhWideStats::maxDepth + 1 <= RL_BVH_STACK). Leaves hit at a node are a second group
-// (first leaf record, mask over the node's leaf ranks), tested before the next node is visited.
+// The stack holds node groups, not nodes (CWBVH's): (first child node, the children's interior-slot mask << 8 |
+// a hit mask over visit positions). Visit position i of slot s is s ^ octant(ray), so the lowest set bit is the
+// child nearest in the direction-slot order. The current group stays in registers; it is pushed only when the
+// visited node has interior children to descend into, at most once per level, so the stack never holds more
+// than the tree's depth (BvhWideStats::maxDepth + 1 <= RL_BVH_STACK). The leaves hit at a node are its
+// triangle group: (the node's triBase, a mask over its leaf block's triangles, each leaf's bits from its meta
+// byte), tested in the same iteration, before the next node; no leaf record is read.
 //
-// One loop iteration, and one step (HitRecord::steps, RL_TRAVERSAL_STEP()), is one wide node visited (its 8
-// quantized child boxes tested) or one leaf visited (its triangles tested): the binary traversal's step is one
-// binary node (two child boxes) or one leaf. Steps of the two layouts count different work; compare them as
-// what they are, the spread within a warp that reordering shrinks.
+// One loop iteration, and one step (HitRecord::steps, RL_TRAVERSAL_STEP()), is one wide node visited: its 8
+// quantized child boxes tested, then the triangles of the leaves among them that the ray entered. The binary
+// traversal's step is one binary node (two child boxes) or one leaf. Steps of the two layouts count different
+// work; compare them as what they are, the spread within a warp that reordering shrinks.
 //
-// Slower than the binary traversal on an H200 (docs/results/h200-wide-bvh: 1.4-1.6x the frame time at
-// 2.1M-8.4M paths, with 2.4x fewer steps). What CWBVH does and this does not, the likely places to look: the
-// ray transformed once per node into its quantized frame (here each child box is decoded to floats and
-// slab-tested), the node read as 5 aligned 16-byte loads, triangles packed behind their node (here a leaf is
-// an extra 8-byte record and 48-byte triangles), and the hit-mask loop without a per-child branch.
+// Slower than the binary traversal on an H200 before the node's vector loads and the ray's per-node transform
+// (docs/results/h200-wide-bvh: 1.4-1.6x the frame time at 2.1M-8.4M paths, 1.21-1.32x with them).
 #ifndef RAYLAB_BVH_TRAVERSE_WIDE_GLSL
 #define RAYLAB_BVH_TRAVERSE_WIDE_GLSL
 
@@ -29,23 +28,11 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
   uint octant = (dir.x < 0.0 ? 1u : 0u) | (dir.y < 0.0 ? 2u : 0u) | (dir.z < 0.0 ? 4u : 0u);
   uvec2 stack[RL_BVH_STACK];
   uint sp = 0u;
+  BvhWideNodeQuads quads = BvhWideNodeQuads(scene.wideNodes);
+  TriangleQuads triangleQuads = TriangleQuads(scene.triangles);
   // A virtual parent whose only child, interior slot 0, is the root: the loop's first visit is the root's.
   uvec2 nodeGroup = uvec2(0u, (1u << 8) | (1u << octant));
-  uvec2 leafGroup = uvec2(0u);
   while (true) {
-    if (leafGroup.y != 0u) {
-      hit.steps++;
-      RL_TRAVERSAL_STEP();
-      uint rank = findLSB(leafGroup.y);
-      leafGroup.y &= leafGroup.y - 1u;
-      BvhWideLeaf leaf = scene.wideLeaves.v[leafGroup.x + rank];
-      for (uint i = 0u; i < leaf.count; ++i) {
-        uint index = leaf.first + i;
-        intersectTriangle(scene.triangles.v[index], index, origin, dir, hit, tMax);
-      }
-      if (anyHit && hit.t > 0.0) return hit;
-      continue;
-    }
     if ((nodeGroup.y & 0xFFu) == 0u) {
       if (sp == 0u) break;
       nodeGroup = stack[--sp];
@@ -55,31 +42,62 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
     uint slot = position ^ octant;
     uint interiorBelow = (nodeGroup.y >> 8) & ((1u << slot) - 1u);
     uint nodeIndex = nodeGroup.x + bitCount(interiorBelow);
-    if ((nodeGroup.y & 0xFFu) != 0u) stack[sp++] = nodeGroup;  // the siblings still to visit
 
     hit.steps++;
     RL_TRAVERSAL_STEP();
-    BvhWideNode n = scene.wideNodes.v[nodeIndex];
-    vec3 scale = vec3(uintBitsToFloat((n.exponents & 0xFFu) << 23), uintBitsToFloat(((n.exponents >> 8) & 0xFFu) << 23),
-                      uintBitsToFloat(((n.exponents >> 16) & 0xFFu) << 23));
-    uint interiorMask = n.masks & 0xFFu;
-    uint leafMask = (n.masks >> 8) & 0xFFu;
-    uint childMask = interiorMask | leafMask;
+    // The node in five 16-byte loads: origin + exponents/interior mask, bases + meta, then the 12 words of planes.
+    uint base = nodeIndex * 5u;
+    uvec4 w0 = quads.v[base], w1 = quads.v[base + 1u], w2 = quads.v[base + 2u], w3 = quads.v[base + 3u],
+          w4 = quads.v[base + 4u];
+    // Each axis's near and far planes chosen by the ray's sign once per node (CWBVH): the entry and exit
+    // distances then need no min and max per child. Words 2k, 2k + 1 hold axis k's 8 planes.
+    uvec2 loX = w2.xy, loY = w2.zw, loZ = w3.xy, hiX = w3.zw, hiY = w4.xy, hiZ = w4.zw;
+    uvec2 nearX = (octant & 1u) != 0u ? hiX : loX, farX = (octant & 1u) != 0u ? loX : hiX;
+    uvec2 nearY = (octant & 2u) != 0u ? hiY : loY, farY = (octant & 2u) != 0u ? loY : hiY;
+    uvec2 nearZ = (octant & 4u) != 0u ? hiZ : loZ, farZ = (octant & 4u) != 0u ? loZ : hiZ;
+    vec3 scale = vec3(uintBitsToFloat((w0.w & 0xFFu) << 23), uintBitsToFloat(((w0.w >> 8) & 0xFFu) << 23),
+                      uintBitsToFloat(((w0.w >> 16) & 0xFFu) << 23));
+    // The ray in the node's quantized frame, once per node: a child plane q is at t = q * tScale + tOrigin.
+    vec3 tScale = scale * invDir;
+    vec3 tOrigin = (uintBitsToFloat(w0.xyz) - origin) * invDir;
+    uint interiorMask = w0.w >> 24;
     uint nodeHits = 0u;
-    uint leafHits = 0u;
+    uint triangleHits = 0u;
     for (uint s = 0u; s < RL_BVH_WIDTH; ++s) {
-      if ((childMask & (1u << s)) == 0u) continue;
       uint word = s >> 2;
-      vec3 qlo = vec3(wideByte(n.qlo[word], s), wideByte(n.qlo[2u + word], s), wideByte(n.qlo[4u + word], s));
-      vec3 qhi = vec3(wideByte(n.qhi[word], s), wideByte(n.qhi[2u + word], s), wideByte(n.qhi[4u + word], s));
-      if (intersectBox(n.origin + qlo * scale, n.origin + qhi * scale, origin, invDir, tMax) >= 1e30) continue;
-      if ((interiorMask & (1u << s)) != 0u)
+      vec3 qnear = vec3(wideByte(nearX[word], s), wideByte(nearY[word], s), wideByte(nearZ[word], s));
+      vec3 qfar = vec3(wideByte(farX[word], s), wideByte(farY[word], s), wideByte(farZ[word], s));
+      // The slab test's min and max of the two planes, without them: tScale has the ray's sign per axis and
+      // the lower plane is never above the upper one (an empty slot has both 0).
+      vec3 tn = qnear * tScale + tOrigin;
+      vec3 tf = qfar * tScale + tOrigin;
+      float enter = max(max(tn.x, tn.y), max(tn.z, 0.0));
+      float leave = min(min(tf.x, tf.y), min(tf.z, tMax));
+      if (enter > leave) continue;
+      if ((interiorMask & (1u << s)) != 0u) {
         nodeHits |= 1u << (s ^ octant);
-      else
-        leafHits |= 1u << bitCount(leafMask & ((1u << s) - 1u));
+      } else {
+        // A leaf's meta byte (0: an empty slot): (count - 1) << 5 | offset, its bits in the triangle mask.
+        uint meta = wideByte(s < 4u ? w1.z : w1.w, s);
+        if (meta != 0u) triangleHits |= ((2u << (meta >> 5)) - 1u) << (meta & 31u);
+      }
     }
-    nodeGroup = uvec2(n.childBase, (interiorMask << 8) | nodeHits);
-    leafGroup = uvec2(n.leafBase, leafHits);
+    // Descending: the siblings still to visit wait on the stack (only then: a node without interior hits
+    // leaves the current group as it is, no push and pop).
+    if (nodeHits != 0u) {
+      if ((nodeGroup.y & 0xFFu) != 0u) stack[sp++] = nodeGroup;
+      nodeGroup = uvec2(w1.x, (interiorMask << 8) | nodeHits);
+    }
+    // The node's triangle group, in the same iteration: every lane that visited a node tests its triangles
+    // together, before the next node's box tests (which then cull with the shorter tMax).
+    while (triangleHits != 0u) {
+      uint index = w1.y + uint(findLSB(triangleHits));
+      triangleHits &= triangleHits - 1u;
+      // Three 16-byte loads (v0, e1, e2 and the shading words beside them), not a field at a time.
+      vec4 a = triangleQuads.v[3u * index], b = triangleQuads.v[3u * index + 1u], c = triangleQuads.v[3u * index + 2u];
+      intersectTriangleEdges(a.xyz, b.xyz, c.xyz, index, origin, dir, hit, tMax);
+      if (anyHit && hit.t > 0.0) return hit;
+    }
   }
   return hit;
 }

@@ -82,25 +82,24 @@ struct BvhNode {
 // shaders/bvh_traverse_wide.glsl), after Ylitie, Karras and Laine (HPG 2017): up to 8 children whose boxes are
 // quantized to 8 bits per plane against the node's `origin` and a power-of-two scale per axis, so a child's box
 // is origin + q * 2^e (rounded outwards when built: it always contains the child's exact box). A child slot is
-// empty, an interior node or a leaf (a contiguous range of BVH-order triangles, a BvhWideLeaf). Interior
-// children are consecutive nodes from `childBase` in slot order, leaf children consecutive BvhWideLeaf records
-// from `leafBase` in slot order, so a child's index is its base plus the number of slots of its kind below it.
+// empty, an interior node or a leaf. Interior children are consecutive nodes from `childBase` in slot order, so
+// an interior child's index is childBase plus the number of interior slots below it. A node's leaves are one
+// contiguous block of BVH-order triangles (the collapse puts them there): leaf slot s holds triangles
+// triBase + offset .. triBase + offset + count - 1, offset and count from its meta byte, no leaf record between.
 // Slots are assigned by direction (slot s holds the child lying most towards the corner whose axis k is
 // positive where bit k of s is set), so visiting slots in the order i ^ octant(ray) is roughly nearest first.
 struct BvhWideNode {
   vec3 origin;
-  uint exponents;  // byte k: the biased exponent (IEEE bits 23..30) of axis k's scale 2^e; byte 3 unused
+  uint exponents;  // byte k < 3: the biased exponent (IEEE bits 23..30) of axis k's scale 2^e; byte 3: the slots
+                   // holding interior children (bit s: slot s)
   uint childBase;  // first interior child (index into the wide node array)
-  uint leafBase;   // first leaf child (index into the BvhWideLeaf array)
-  uint masks;      // byte 0: slots holding interior children, byte 1: slots holding leaves
-  uint pad0;
+  uint triBase;    // bit 0 of the node's triangle mask: BVH-order triangle triBase (mod 2^32, see meta)
+  uint meta[2];    // byte (s & 3) of word s >> 2, slot s's leaf: (count - 1) << 5 | offset, its triangles the
+                   // mask bits offset .. offset + count - 1 (count <= 8, offset + count <= 32); 0: no leaf (an
+                   // interior or empty slot). No leaf encodes as 0: the node's block starts with a leaf of 2 or
+                   // more triangles, or, all its leaves single triangles, at offset 1 (triBase one below).
   uint qlo[6];     // 8-bit lower planes: byte (s & 3) of word 2 * axis + (s >> 2) is slot s's
   uint qhi[6];     // 8-bit upper planes, the same packing
-};
-// A leaf child of a wide node: triangles first .. first + count - 1 in BVH order.
-struct BvhWideLeaf {
-  uint first;
-  uint count;
 };
 #define RL_BVH_WIDTH 8u
 // GpuScene::bvhLayout: which tree traceClosest and occluded walk (Settings::bvh).
@@ -161,8 +160,13 @@ struct GpuCamera {
 #ifndef __cplusplus
 layout(buffer_reference, scalar) buffer BvhNodeBuf { BvhNode v[]; };
 layout(buffer_reference, scalar) buffer BvhWideNodeBuf { BvhWideNode v[]; };
-layout(buffer_reference, scalar) buffer BvhWideLeafBuf { BvhWideLeaf v[]; };
+// The same nodes as five aligned 16-byte words each (80 bytes, in BvhWideNode's order), for the traversal's
+// vector loads: a struct of scalars is read field by field.
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer BvhWideNodeQuads { uvec4 v[]; };
 layout(buffer_reference, scalar) buffer TriangleBuf { GpuTriangle v[]; };
+// The same triangles as three aligned 16-byte words each (48 bytes: v0, e1, e2 in xyz, GpuTriangle's order), for
+// the wide traversal's vector loads.
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer TriangleQuads { vec4 v[]; };
 layout(buffer_reference, scalar) buffer TriangleUvBuf { GpuTriangleUv v[]; };
 layout(buffer_reference, scalar) buffer MaterialBuf { GpuMaterial v[]; };
 layout(buffer_reference, scalar) buffer TextureInfoBuf { GpuTextureInfo v[]; };
@@ -191,7 +195,7 @@ struct GpuScene {
   // walks: RL_BVH_BINARY or RL_BVH_WIDE, set per frame from Settings::bvh. A uniform branch in traceClosest
   // and occluded rather than a specialization constant: one pipeline per stage as before.
   RL_REF(BvhWideNodeBuf) wideNodes;
-  RL_REF(BvhWideLeafBuf) wideLeaves;
+  RL_ADDRESS widePad;  // unused (the wide tree has no leaf records: its leaves are triangle ranges of its nodes)
   uint bvhLayout;
   uint pad0;
   RL_ADDRESS tlas;            // top-level acceleration structure of the rt tracer (0 with the compute tracer)

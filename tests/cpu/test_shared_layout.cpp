@@ -31,10 +31,10 @@ static_assert(sizeof(GpuCamera) == 64);
 static_assert(offsetof(GpuCamera, up) == 48);
 static_assert(sizeof(BvhWideNode) == 80);  // CWBVH's node size
 static_assert(offsetof(BvhWideNode, exponents) == 12);
-static_assert(offsetof(BvhWideNode, masks) == 24);
+static_assert(offsetof(BvhWideNode, triBase) == 20);
+static_assert(offsetof(BvhWideNode, meta) == 24);
 static_assert(offsetof(BvhWideNode, qlo) == 32);
 static_assert(offsetof(BvhWideNode, qhi) == 56);
-static_assert(sizeof(BvhWideLeaf) == 8);
 // + the wide BVH's two addresses, its layout word and pad, + the TLAS address (uvec2 in GLSL)
 static_assert(sizeof(GpuScene) == 7 * 8 + 8 + 16 + 2 * 8 + 8 + 8);
 static_assert(offsetof(GpuScene, wideNodes) == 80);

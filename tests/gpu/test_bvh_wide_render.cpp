@@ -4,7 +4,7 @@
 // hit on a binary box's face that an axis-parallel ray grazes (test_bvh_wide.cpp counts those on the CPU).
 // Such a path then continues elsewhere, so its pixel differs a lot while the rest are bit for bit equal. The
 // tolerance is stated that way: at most 1% of the pixels may differ at all, and the image mean by at most 0.5%.
-// The steps (one wide node or leaf) must differ from the binary ones, or the wide tree was never walked.
+// The steps (one wide node each) must differ from the binary ones, or the wide tree was never walked.
 #include <cstring>
 #include <string>
 
@@ -65,7 +65,7 @@ TEST_F(WideBvhRender, RendersTheBinaryImageUpToTies) {
   }
 }
 
-// The traversal statistics are defined for the wide tree too (a step being one node or leaf visited): the
+// The traversal statistics are defined for the wide tree too (a step being one wide node visited): the
 // per-bounce mean steps and the virtual warp efficiency exist, and the camera rays take fewer wide steps than
 // binary ones (a wide node does the work of up to 7 binary ones), which also shows the wide tree was walked.
 TEST_F(WideBvhRender, CountsItsOwnSteps) {
