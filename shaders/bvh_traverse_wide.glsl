@@ -15,8 +15,9 @@
 // traversal's step is one binary node (two child boxes) or one leaf. Steps of the two layouts count different
 // work; compare them as what they are, the spread within a warp that reordering shrinks.
 //
-// Slower than the binary traversal on an H200 before the node's vector loads and the ray's per-node transform
-// (docs/results/h200-wide-bvh: 1.4-1.6x the frame time at 2.1M-8.4M paths, 1.21-1.32x with them).
+// On an H200: 1.4-1.6x the binary frame time before the node's vector loads and the ray's per-node transform,
+// 1.21-1.32x with them, level with it unsorted once leaves lost their records and took no iteration of their
+// own, and faster than it sorted (docs/results/h200-wide-bvh/cwbvh).
 #ifndef RAYLAB_BVH_TRAVERSE_WIDE_GLSL
 #define RAYLAB_BVH_TRAVERSE_WIDE_GLSL
 
