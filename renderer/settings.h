@@ -142,6 +142,11 @@ std::optional<HeatmapKeyColour> parseHeatmapKeyColour(const std::string& name);
 std::optional<HeatmapScale> parseHeatmapScale(const std::string& name);
 std::optional<HeatmapView> parseHeatmapView(const std::string& name);
 const std::vector<HeatmapView>& allHeatmapViews();
+// Every value of a settings enum, in the order the help and the window list them (KeyStrategy, SortAlgorithm,
+// HeatmapView, HeatmapKeyColour, HeatmapScale, Kernel, Tracer, Ser, SortPolicy, Fusion, Compaction,
+// TraceShade, BvhLayout).
+template <class E>
+const std::vector<E>& allValues();
 
 // Grid resolution: automatic (near-cubic cells from the extents) or explicit cells per axis.
 struct GridSetting {

@@ -1,0 +1,17 @@
+// The JSON form of Settings (screenshot sidecars, imgui.ini, --stats, the bench's JSONL): one key or more per
+// row of the settings table (renderer/settings_table.h). settingsFromJson reads back what toJson wrote.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "renderer/settings.h"
+
+namespace raylab {
+
+nlohmann::json toJson(const Settings& s);
+// Throws SettingsError (a std::invalid_argument) naming the field that is missing or out of range, with the
+// ranges and messages every source of Settings is checked with (settings_validation.h). Keys older sidecars
+// lack take what those versions did.
+Settings settingsFromJson(const nlohmann::json& j);
+
+}  // namespace raylab
