@@ -2,6 +2,8 @@
 
 #include "renderer/settings_table.h"
 
+#include <string>
+
 namespace raylab {
 
 using nlohmann::json;
@@ -23,6 +25,21 @@ Settings settingsFromJson(const json& j) {
   }
   validateSettings(s);  // what no single field shows (paths per frame)
   return s;
+}
+
+constexpr const char* kIniKey = "settings=";
+
+std::string settingsIniLine(const Settings& s) { return kIniKey + toJson(s).dump(); }
+
+Settings settingsFromIniLine(const std::string& line) {
+  if (line.rfind(kIniKey, 0) != 0) throw SettingsError("imgui.ini: not a settings line");
+  json j;
+  try {
+    j = json::parse(line.substr(std::string(kIniKey).size()));
+  } catch (const json::exception& e) {
+    throw SettingsError(std::string("settings: ") + e.what());
+  }
+  return settingsFromJson(j);
 }
 
 }  // namespace raylab

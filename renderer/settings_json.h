@@ -14,4 +14,9 @@ nlohmann::json toJson(const Settings& s);
 // lack take what those versions did.
 Settings settingsFromJson(const nlohmann::json& j);
 
+// The line of imgui.ini that keeps the last Settings ("settings=" and the JSON; ui/settings_ini.cpp), and
+// back: throws SettingsError for a line that is not one or holds bad settings.
+std::string settingsIniLine(const Settings& s);
+Settings settingsFromIniLine(const std::string& line);
+
 }  // namespace raylab
