@@ -31,7 +31,8 @@ std::string unlessDefault(const char* name, T Settings::*m, const Settings& s) {
 
 std::vector<SettingRow> sceneAndImageRows() {
   return {
-      RAYLAB_FIELD(scene, "scene").json("scene").csv("scene", /*quoted=*/true).effects(kAccumulation | kCache)
+      RAYLAB_FIELD(scene, "scene").json("scene").csv("scene", /*quoted=*/true)
+          .effects(kEffectScene | kAccumulation | kCache)
           .help("temple|cornell|furnace|temple-detail:N|FILE.gltf|FILE.glb", " scene (default {default};\n"
                 "temple-detail:N is the temple with N triangles, 1e4 to 3e7)").sample("cornell"),
       // The CSV's view column is the viewpoint the bench resolved (bench_results.cpp): empty is the first.

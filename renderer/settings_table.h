@@ -33,6 +33,9 @@ enum SettingEffect : unsigned {
   kEffectCache = 1u << 2,           // what the length caches learned is void
   kEffectKeyParameters = 1u << 3,   // the uploaded key parameters (grid, thresholds)
   kEffectSortCosts = 1u << 4,       // what the auto sort policy measured
+  kEffectScene = 1u << 5,           // what the scene is built from: the window builds it again (and the
+                                    // image and caches start again: rows say so with kEffectAccumulation
+                                    // and kEffectCache)
 };
 
 // One sweep axis of `raylab bench` over a setting: `--<flag> a,b,...` gives one cell per value.
