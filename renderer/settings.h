@@ -10,6 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scenes/clutter.h"
+
 namespace raylab {
 
 enum class KeyStrategy {
@@ -181,6 +183,7 @@ struct Settings {
   // Scene and camera
   std::string scene = "temple";  // built-in name or a .gltf/.glb path
   std::string view;              // viewpoint name; empty: the scene's first
+  uint32_t clutterSeed = kClutterDefaultSeed;  // the cluttered room's layout; other scenes ignore it
   uint32_t width = 512;
   uint32_t height = 256;
   uint32_t bounces = 4;

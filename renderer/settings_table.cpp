@@ -38,6 +38,10 @@ std::vector<SettingRow> sceneAndImageRows() {
       // The CSV's view column is the viewpoint the bench resolved (bench_results.cpp): empty is the first.
       RAYLAB_FIELD(view, "view").json("view").effects(kAccumulation)
           .help("NAME", "viewpoint (default: the scene's first)").sample("front"),
+      RAYLAB_FIELD(clutterSeed, "clutter-seed").range(0, 4294967295.0).json("clutter_seed", keepDefault)
+          .csv("clutter_seed").effects(kEffectScene | kAccumulation | kCache)
+          .help("N", "layout of the cluttered room (scene clutter:N): where its objects lie\n"
+                "(default {default}; other scenes ignore it)").sample("7"),
       setting_rows::sizeRow(),
       RAYLAB_FIELD(bounces, "bounces").range(1, L::kMaxBounces).json("bounces").csv("bounces").effects(kAccumulation)
           .help("N", "path length in bounces, {range} (default {default})").sample("7"),
