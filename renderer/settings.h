@@ -1,6 +1,8 @@
 // The one source of truth for what is rendered and how: the CLI parses into it, the UI edits it, the
 // benchmark sweeps it and a screenshot's sidecar records it. Comparing with the previous Settings, once
-// (SettingsChange::between), decides what must be reallocated, restarted or uploaded.
+// (SettingsChange::between), decides what must be reallocated, restarted or uploaded. Every member has its row
+// in the settings table (renderer/settings_table.h: flag, JSON, CSV, range, help, effect), which all of those
+// read; tests/cpu/test_settings_table.cpp fails for a member without one.
 #pragma once
 
 #include <cstdint>
@@ -158,8 +160,9 @@ struct GridSetting {
   bool operator==(const GridSetting&) const = default;
 };
 
-// Limits where the methods are defined; settings_validation.h rejects values outside (whichever way they
-// came in), the UI sliders clamp to them.
+// Limits where the methods are defined: the settings table's rows (renderer/settings_table.cpp) take their
+// ranges from here; validation rejects values outside (whichever way they came in), the UI sliders clamp to
+// them.
 struct SettingLimits {
   static constexpr uint32_t kMaxSize = 8192;
   static constexpr uint32_t kMaxBounces = 32;

@@ -43,6 +43,7 @@ std::vector<SettingRow> sceneAndImageRows() {
           .help("N", "layout of the cluttered room (scene clutter:N): where its objects lie\n"
                 "(default {default}; other scenes ignore it)").sample("7"),
       setting_rows::sizeRow(),
+      // No reallocation: path state does not depend on the bounce count (the counters have room for the most).
       RAYLAB_FIELD(bounces, "bounces").range(1, L::kMaxBounces).json("bounces").csv("bounces").effects(kAccumulation)
           .help("N", "path length in bounces, {range} (default {default})").sample("7"),
       RAYLAB_FIELD(sppPerFrame, "spp").range(1, L::kMaxSpp).json("spp_per_frame").csv("spp_per_frame")
