@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "renderer/git_revision.h"
+#include "renderer/settings_table.h"
 #include "renderer/stages.h"
 #include "renderer/stats_json.h"
 
@@ -37,12 +38,12 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   const auto& b = r.detailed.bounces;
   CsvRow row;
   row.add("device", csvQuote(ctx.info().name)).add("driver", csvQuote(ctx.info().driver)).add("git_revision", gitRevision());
-  row.add("scene", csvQuote(s.scene)).add("view", view).add("width", s.width).add("height", s.height);
-  row.add("bounces", s.bounces).add("spp_per_frame", s.sppPerFrame).add("kernel", toString(s.kernel));
+  // The settings' columns are their rows' (settings_table.h); the view is the one resolved (empty: the first).
+  for (const auto& [column, text] : settingsCsvColumns(s)) row.add(column, text);
+  row.add("view", view);
   row.add("paths_per_frame", uint64_t(s.width) * s.height * s.sppPerFrame);
-  row.add("tracer", toString(s.tracer)).add("ser", toString(s.ser));
   row.add("ser_reordering_hint", s.reordersInHardware() ? ctx.info().serReorderingHint : "");
-  row.add("strategy", toString(s.strategy)).add("sort", toString(s.sort)).add("label", csvQuote(cell.label));
+  row.add("label", csvQuote(cell.label));
   row.add("frame_ms_median", r.frameMs.median).add("frame_ms_min", r.frameMs.min).add("frame_ms_max", r.frameMs.max);
   row.add("trace_after_first_ms", r.traceAfterFirstMs.median);
   for (const StageInfo& st : kStages)
@@ -57,35 +58,19 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   row.add("prediction_error_median", meanOverBounces(b, &BounceStats::predictionErrorMedian, true));
   row.add("cell_hit_rate", meanOverBounces(b, &BounceStats::cellHitRate, true));
   row.add("key_bits", r.detailed.keyBits).add("length_cache_bytes", r.detailed.lengthCacheBytes);
-  row.add("final_rel_mse", r.finalRelMse).add("sort_policy", toString(s.sortPolicy));
+  row.add("final_rel_mse", r.finalRelMse);
   // Which bounces the policy sorted after in the last timed frame, e.g. "YNY-" (- : the last bounce).
   std::string sortedAfter;
   for (size_t k = 0; k < r.sortedAfter.size(); ++k) sortedAfter += k + 1 == r.sortedAfter.size() ? '-' : r.sortedAfter[k] ? 'Y' : 'N';
   row.add("sorted_after", sortedAfter);
   row.add("triangles", scene.triangles).add("bvh_nodes", scene.bvhNodes).add("bvh_bytes", scene.bvhBytes);
   row.add("scene_bytes", scene.sceneBytes).add("bvh_build_ms", scene.bvhBuildMs).add("scene_load_ms", scene.sceneLoadMs);
-  row.add("tracer_setup_ms", scene.tracerSetupMs).add("sort_bits", s.sortBits).add("learn_every", s.learnEvery);
-  row.add("fusion", toString(s.fusion)).add("compaction", toString(s.compaction)).add("trace_shade", toString(s.traceShade));
-  row.add("bvh", toString(s.bvh)).add("wide_bvh_nodes", scene.wideBvhNodes).add("wide_bvh_bytes", scene.wideBvhBytes);
+  row.add("tracer_setup_ms", scene.tracerSetupMs);
+  row.add("wide_bvh_nodes", scene.wideBvhNodes).add("wide_bvh_bytes", scene.wideBvhBytes);
   return row.values();
 }
 
 }  // namespace
-
-std::vector<std::string> benchCsvColumns() {
-  std::vector<std::string> columns{"device", "driver", "git_revision", "scene", "view", "width", "height", "bounces",
-                                   "spp_per_frame", "kernel", "tracer", "ser", "ser_reordering_hint", "strategy", "sort",
-                                   "label", "frame_ms_median", "frame_ms_min", "frame_ms_max", "trace_after_first_ms"};
-  for (const StageInfo& s : kStages) columns.push_back(std::string(s.name) + "_ms");
-  for (const char* c : {"rays_per_second", "simt_efficiency", "virtual_warp_efficiency",
-                        "virtual_warp_efficiency_after_first", "prediction_error_mean", "prediction_error_median",
-                        "cell_hit_rate", "key_bits", "length_cache_bytes", "final_rel_mse", "sort_policy", "sorted_after",
-                        "triangles", "bvh_nodes", "bvh_bytes", "scene_bytes", "bvh_build_ms", "scene_load_ms",
-                        "tracer_setup_ms", "sort_bits", "learn_every", "fusion", "compaction", "trace_shade", "bvh",
-                        "wide_bvh_nodes", "wide_bvh_bytes", "paths_per_frame"})
-    columns.push_back(c);
-  return columns;
-}
 
 nlohmann::json benchRecord(size_t cellIndex, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
                            const SceneFacts& scene, const CellResult& r) {

@@ -1,13 +1,13 @@
 #include "app/bench_sweep.h"
 
 #include "app/setting_flags.h"
-#include "renderer/reorder/key_functions.h"
-#include "renderer/reorder/key_strategies.h"
+#include "renderer/settings_table.h"
 #include "scenes/scene_library.h"
 #include "scenes/temple_detail.h"
 
-#include <cstdio>
+#include <algorithm>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -44,20 +44,27 @@ std::vector<std::string> readSweepFile(const std::string& path) {
   return args;
 }
 
+// The sweep's axes. The settings' own (grids, clamps, sort bits, ...) come from the settings table's rows
+// (SettingAxis); the ones below make the cases, groups and baselines.
 struct Axes {
-  std::vector<std::string> strategies{"all"}, sorts{"radix"}, grids{"auto"}, clamps{"off"}, resets{}, factors{};
+  std::vector<std::string> strategies{"all"}, sorts{"radix"};
   std::vector<std::string> tracers{}, sers{}, serHints{"two-point"};
   std::vector<std::string> bvhs{};        // --bvhs: empty keeps the render flag's (binary); compute tracer only
-  std::vector<std::string> policies{"always"};
-  std::vector<std::string> sortBits{};    // --sort-bits-list: empty keeps the render flag's (all bits)
-  std::vector<std::string> fusions{};     // --fusions: empty keeps the render flag's (gather)
-  std::vector<std::string> compactions{}; // --compactions: empty keeps the render flag's (shade)
-  std::vector<std::string> traceShades{}; // --trace-shades: empty keeps the render flag's (split)
-  std::vector<std::string> learnEvery{};  // --learn-every-list: strategies with a length cache only
   std::vector<std::string> bounces{};     // --bounces with a list: one group of cells per count
   std::vector<std::string> scaleTris{};   // --scale-tris: the sizes of every bare temple-detail case
   std::vector<std::string> sizes{};       // --sizes: image sizes (WxH); empty keeps --size's
   std::vector<std::string> spps{};        // --spps: samples per frame; empty keeps --spp's
+  std::map<std::string, std::vector<std::string>> method;  // by setting flag; absent: the base's value
+
+  Axes() {
+    for (const SettingRow& r : settingRows())
+      if (r.axis.flag && !r.axis.defaults.empty()) method[r.flag] = r.axis.defaults;
+  }
+  const std::vector<std::string>& of(const std::string& flag) const {
+    static const std::vector<std::string> none;
+    auto it = method.find(flag);
+    return it == method.end() ? none : it->second;
+  }
 };
 
 // `raylab bench --bounces 2,4,8,16` sweeps the path length; every other mode takes one count. The list is
@@ -145,14 +152,6 @@ Settings withFlag(const Settings& base, const std::string& flag, const std::stri
   return s;
 }
 
-std::string shortNumber(float v) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", v);
-  return text;
-}
-
-bool usesGrid(KeyStrategy s) { return strategyInfo(s).usesGrid; }
-
 // Axes multiply: a sweep file of under 1 KB listing four axes 40 times each is 2.6 million cells, which
 // took minutes and gigabytes to plan before anything rendered (found by tests/fuzz). Far more cells than
 // any bench could render in a day is a mistake in the sweep, said before the plan grows that far.
@@ -163,9 +162,24 @@ void checkCellCount(size_t cells) {
                      " cells (cases x bounces x tracers x methods); sweep fewer values, or in several runs");
 }
 
-}  // namespace
+// The order in which the settings' axes multiply (the plan's cell order) and in which their parts follow in
+// a label. A row with an axis not named here comes after these, in the table's order.
+const char* const kExpandOrder[] = {"grid",   "clamp",      "gauss-reset", "fixed-factor", "sort-bits",
+                                    "fusion", "compaction", "trace-shade", "learn-every",  "sort-policy"};
+const char* const kLabelOrder[] = {"grid",      "clamp",  "gauss-reset", "fixed-factor", "sort-policy",
+                                   "sort-bits", "fusion", "compaction",  "trace-shade",  "learn-every"};
 
-BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
+template <size_t N>
+std::vector<const SettingRow*> axisRows(const char* const (&order)[N]) {
+  std::vector<const SettingRow*> rows;
+  for (const char* flag : order) rows.push_back(findSettingRow(flag));
+  for (const SettingRow& r : settingRows())
+    if (r.axis.flag && std::find(rows.begin(), rows.end(), &r) == rows.end()) rows.push_back(&r);
+  return rows;
+}
+
+// `--sweep FILE` replaced by the flags of its lines.
+std::vector<std::string> withSweepFiles(const std::vector<std::string>& rawArgs) {
   std::vector<std::string> args;
   for (size_t i = 0; i < rawArgs.size(); ++i) {
     if (rawArgs[i] == "--sweep") {
@@ -176,228 +190,195 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
       args.push_back(rawArgs[i]);
     }
   }
-  BenchPlan plan;
-  Axes axes;
-  std::vector<std::string> rest;
-  std::vector<std::string> caseList{"temple@alley", "temple@hall", "temple@openings"};
-  axes.bounces = takeBounceList(args);
+  return args;
+}
+
+struct SweepFlags {
+  std::vector<std::string> cases{"temple@alley", "temple@hall", "temple@openings"};
   bool casesGiven = false;
-  plan.common = parseCommonOptions(args, &rest);
+};
+
+// One sweep flag with its value; false for a flag the sweep does not know.
+bool parseSweepFlag(const std::string& flag, const std::string& v, BenchPlan& plan, Axes& axes, SweepFlags& sweep) {
+  if (flag == "--cases") sweep.cases = splitList(v), sweep.casesGiven = true;
+  else if (flag == "--scale-tris") axes.scaleTris = splitList(v);
+  else if (flag == "--sizes") axes.sizes = nonEmptyList(flag, v);
+  else if (flag == "--spps") axes.spps = nonEmptyList(flag, v);
+  else if (flag == "--strategies") axes.strategies = splitList(v);
+  else if (flag == "--sorts") axes.sorts = splitList(v);
+  else if (flag == "--tracers") axes.tracers = splitList(v);
+  else if (flag == "--bvhs") axes.bvhs = splitList(v);
+  else if (flag == "--sers") axes.sers = splitList(v);
+  else if (flag == "--ser-hints") axes.serHints = splitList(v);
+  else if (flag == "--timed-frames") plan.timedFrames = parseUint(flag, v, 1, 10000);
+  else if (flag == "--warmup") plan.warmupFrames = parseUint(flag, v, 0, 10000);
+  else if (flag == "--reference-spp") plan.referenceSpp = parseUint(flag, v, 1, 1 << 16);
+  else if (flag == "--out-dir") plan.outDir = v;
+  else {
+    for (const SettingRow& r : settingRows())
+      if (r.axis.flag && flag == std::string("--") + r.axis.flag) return axes.method[r.flag] = splitList(v), true;
+    return false;
+  }
+  return true;
+}
+
+void parseSweepFlags(const std::vector<std::string>& rest, BenchPlan& plan, Axes& axes, SweepFlags& sweep) {
   for (size_t i = 0; i < rest.size(); ++i) {
     const std::string& flag = rest[i];
-    if (flag == "--no-detail") {
-      plan.detailFrame = false;
-      continue;
-    }
-    if (flag == "--no-charts") {
-      plan.charts = false;
+    if (flag == "--no-detail" || flag == "--no-charts") {
+      (flag == "--no-detail" ? plan.detailFrame : plan.charts) = false;
       continue;
     }
     if (i + 1 >= rest.size()) throw UsageError(flag + " needs a value");
-    const std::string& v = rest[++i];
-    if (flag == "--cases") caseList = splitList(v), casesGiven = true;
-    else if (flag == "--scale-tris") axes.scaleTris = splitList(v);
-    else if (flag == "--sizes") axes.sizes = nonEmptyList(flag, v);
-    else if (flag == "--spps") axes.spps = nonEmptyList(flag, v);
-    else if (flag == "--strategies") axes.strategies = splitList(v);
-    else if (flag == "--sorts") axes.sorts = splitList(v);
-    else if (flag == "--sort-policies") axes.policies = splitList(v);
-    else if (flag == "--sort-bits-list") axes.sortBits = splitList(v);
-    else if (flag == "--fusions") axes.fusions = splitList(v);
-    else if (flag == "--compactions") axes.compactions = splitList(v);
-    else if (flag == "--trace-shades") axes.traceShades = splitList(v);
-    else if (flag == "--learn-every-list") axes.learnEvery = splitList(v);
-    else if (flag == "--grids") axes.grids = splitList(v);
-    else if (flag == "--clamps") axes.clamps = splitList(v);
-    else if (flag == "--gauss-resets") axes.resets = splitList(v);
-    else if (flag == "--fixed-factors") axes.factors = splitList(v);
-    else if (flag == "--tracers") axes.tracers = splitList(v);
-    else if (flag == "--bvhs") axes.bvhs = splitList(v);
-    else if (flag == "--sers") axes.sers = splitList(v);
-    else if (flag == "--ser-hints") axes.serHints = splitList(v);
-    else if (flag == "--timed-frames") plan.timedFrames = parseUint(flag, v, 1, 10000);
-    else if (flag == "--warmup") plan.warmupFrames = parseUint(flag, v, 0, 10000);
-    else if (flag == "--reference-spp") plan.referenceSpp = parseUint(flag, v, 1, 1 << 16);
-    else if (flag == "--out-dir") plan.outDir = v;
-    else throw UsageError("unknown option '" + flag + "'");
+    if (!parseSweepFlag(flag, rest[++i], plan, axes, sweep)) throw UsageError("unknown option '" + flag + "'");
   }
-  if (!axes.scaleTris.empty() && !casesGiven) caseList = {std::string(kTempleDetailName) + "@hall"};
+}
+
+std::vector<BenchCase> planCases(const SweepFlags& sweep, const Axes& axes) {
+  std::vector<std::string> caseList = sweep.cases;
+  if (!axes.scaleTris.empty() && !sweep.casesGiven) caseList = {std::string(kTempleDetailName) + "@hall"};
   std::vector<BenchCase> named;
   for (const std::string& c : caseList) {
     size_t at = c.rfind('@');
     named.push_back(at == std::string::npos ? BenchCase{c, ""} : BenchCase{c.substr(0, at), c.substr(at + 1)});
   }
-  plan.cases = scaleCases(named, axes.scaleTris);
-  for (const BenchCase& c : plan.cases) checkCaseScene(c.scene);
-  if (axes.strategies.size() == 1 && axes.strategies[0] == "all") {
-    axes.strategies.clear();
-    for (KeyStrategy s : allKeyStrategies())
-      if (s != KeyStrategy::None) axes.strategies.push_back(toString(s));
-  }
+  std::vector<BenchCase> cases = scaleCases(named, axes.scaleTris);
+  for (const BenchCase& c : cases) checkCaseScene(c.scene);
+  return cases;
+}
 
-  const Settings& base = plan.common.settings;
-  if (axes.tracers.empty()) axes.tracers = {toString(base.tracer)};
-  if (axes.bvhs.empty()) axes.bvhs = {toString(base.bvh)};
-  if (axes.bounces.empty()) axes.bounces = {std::to_string(base.bounces)};
-  // Every group has its megakernel and unsorted cells at least.
-  const std::vector<Settings> pathCounts = pathCountGroups(base, axes);
-  checkCellCount(plan.cases.size() * pathCounts.size() * axes.bounces.size() * axes.tracers.size() * axes.bvhs.size() * 2);
-  auto addCell = [&](BenchCell cell) {
-    plan.cells.push_back(std::move(cell));
+// The cells of one case, added in plan order (each group's baselines first); prefix: "rt ", "wide " or "".
+struct CaseCells {
+  BenchPlan& plan;
+  const Axes& axes;
+  size_t caseIndex;
+  std::string prefix;
+
+  void add(const Settings& s, const std::string& label) {
+    plan.cells.push_back({caseIndex, s, prefix + label});
     checkCellCount(plan.cells.size());
-  };
-  for (size_t ci = 0; ci < plan.cases.size(); ++ci) {
-    // One group of cells per image size and spp, bounce count, tracer and BVH layout (in that order, so the
-    // tracer reallocates its path buffers once per size; the rt tracer has one layout); the runner renders a
-    // reference per size, spp and bounce count.
-    std::vector<Settings> groups;
-    for (const Settings& paths : pathCounts)
-      for (const std::string& bounces : axes.bounces)
-        for (const std::string& tracer : axes.tracers)
-          for (const std::string& bvh : axes.bvhs) {
-            Settings g = withFlag(withFlag(withFlag(paths, "--bounces", bounces), "--tracer", tracer), "--bvh", bvh);
-            if (g.tracer == Tracer::Rt && bvh != axes.bvhs.front()) continue;
-            groups.push_back(g);
-          }
-    for (const Settings& group : groups) {
+  }
+  void addBaselines(const Settings& caseBase, const Settings& plain);
+  void addSorted(const Settings& plain);
+  std::string label(const Settings& v, const std::string& strategy, const std::string& sort) const;
+};
+
+void CaseCells::addBaselines(const Settings& caseBase, const Settings& plain) {
+  // The megakernel and the unsorted wavefront are in every sweep.
+  Settings mega = caseBase;
+  mega.kernel = Kernel::Megakernel;
+  mega.strategy = KeyStrategy::None;
+  add(mega, "megakernel");
+  // SER (rt megakernel only): by hit, and by hit with the hint of each --ser-hints strategy.
+  for (const std::string& ser : caseBase.tracer == Tracer::Rt ? axes.sers : std::vector<std::string>{}) {
+    Settings withSer = withFlag(mega, "--ser", ser);
+    if (withSer.ser == Ser::On) add(withSer, "megakernel ser");
+    if (withSer.ser != Ser::Hint) continue;
+    for (const std::string& hint : axes.serHints) {
+      Settings hinted = withFlag(withSer, "--strategy", hint);
+      if (hinted.strategy == KeyStrategy::None) throw UsageError("--ser-hints: a hint needs a key strategy");
+      add(hinted, "megakernel ser+hint " + hint);
+    }
+  }
+  add(plain, "none");
+  // The unsorted wavefront with each other value of an axis that changes it (compaction, trace and shade):
+  // a baseline of its own, labelled "none <flag>=<value>".
+  for (const SettingRow& r : settingRows())
+    if (r.axis.baselineToo)
+      for (const std::string& value : axes.of(r.flag)) {
+        Settings other = withFlag(plain, "--" + r.flag, value);
+        if (!r.same(other, plain)) add(other, "none " + r.flag + "=" + r.text(other));
+      }
+}
+
+std::string CaseCells::label(const Settings& v, const std::string& strategy, const std::string& sort) const {
+  std::string label = strategy + "/" + sort;
+  for (const SettingRow* r : axisRows(kLabelOrder))
+    if (r->axis.label && (!r->axis.labelWhenSwept || !axes.of(r->flag).empty())) label += r->axis.label(v);
+  return label;
+}
+
+// Every strategy and sort, times each axis of the settings that applies to the strategy.
+void CaseCells::addSorted(const Settings& plain) {
+  for (const std::string& strategy : axes.strategies) {
+    Settings st = withFlag(plain, "--strategy", strategy);
+    if (st.strategy == KeyStrategy::None) continue;
+    for (const std::string& sort : axes.sorts) {
+      std::vector<Settings> variants{withFlag(st, "--sort", sort)};
+      for (const SettingRow* r : axisRows(kExpandOrder)) {
+        const std::vector<std::string>& values = axes.of(r->flag);
+        if (values.empty() || (r->axis.applies && !r->axis.applies(variants.front().strategy))) continue;
+        checkCellCount(plan.cells.size() + variants.size() * values.size());
+        std::vector<Settings> next;
+        for (const Settings& v : variants)
+          for (const std::string& value : values) next.push_back(withFlag(v, "--" + r->flag, value));
+        variants = next;
+      }
+      for (const Settings& v : variants) add(v, label(v, strategy, sort));
+    }
+  }
+}
+
+// One group of cells per image size and spp, bounce count, tracer and BVH layout (in that order, so the
+// tracer reallocates its path buffers once per size; the rt tracer has one layout); the runner renders a
+// reference per size, spp and bounce count.
+std::vector<Settings> cellGroups(const std::vector<Settings>& pathCounts, const Axes& axes) {
+  std::vector<Settings> groups;
+  for (const Settings& paths : pathCounts)
+    for (const std::string& bounces : axes.bounces)
+      for (const std::string& tracer : axes.tracers)
+        for (const std::string& bvh : axes.bvhs) {
+          Settings g = withFlag(withFlag(withFlag(paths, "--bounces", bounces), "--tracer", tracer), "--bvh", bvh);
+          if (g.tracer == Tracer::Rt && bvh != axes.bvhs.front()) continue;
+          groups.push_back(g);
+        }
+  return groups;
+}
+
+void addCells(BenchPlan& plan, const Axes& axes) {
+  const std::vector<Settings> pathCounts = pathCountGroups(plan.common.settings, axes);
+  // Every group has its megakernel and unsorted cells at least.
+  checkCellCount(plan.cases.size() * pathCounts.size() * axes.bounces.size() * axes.tracers.size() * axes.bvhs.size() * 2);
+  for (size_t ci = 0; ci < plan.cases.size(); ++ci)
+    for (const Settings& group : cellGroups(pathCounts, axes)) {
       Settings caseBase = group;
       caseBase.scene = plan.cases[ci].scene;
       caseBase.view = plan.cases[ci].view;
       caseBase.ser = Ser::Off;
       // Labels of rt cells start with "rt ", those of the wide BVH with "wide "; the binary compute tracer's
       // keep their names.
-      const std::string prefix = caseBase.tracer == Tracer::Rt ? "rt " : caseBase.bvh == BvhLayout::Wide ? "wide " : "";
-      // Baselines first: the megakernel and the unsorted wavefront are in every sweep.
-      Settings mega = caseBase;
-      mega.kernel = Kernel::Megakernel;
-      mega.strategy = KeyStrategy::None;
-      addCell({ci, mega, prefix + "megakernel"});
-      // SER (rt megakernel only): by hit, and by hit with the hint of each --ser-hints strategy.
-      for (const std::string& ser : caseBase.tracer == Tracer::Rt ? axes.sers : std::vector<std::string>{}) {
-        Settings withSer = withFlag(mega, "--ser", ser);
-        if (withSer.ser == Ser::On) addCell({ci, withSer, prefix + "megakernel ser"});
-        if (withSer.ser != Ser::Hint) continue;
-        for (const std::string& hint : axes.serHints) {
-          Settings hinted = withFlag(withSer, "--strategy", hint);
-          if (hinted.strategy == KeyStrategy::None) throw UsageError("--ser-hints: a hint needs a key strategy");
-          addCell({ci, hinted, prefix + "megakernel ser+hint " + hint});
-        }
-      }
+      CaseCells cells{plan, axes, ci, caseBase.tracer == Tracer::Rt ? "rt " : caseBase.bvh == BvhLayout::Wide ? "wide " : ""};
       Settings plain = caseBase;
       plain.kernel = Kernel::Wavefront;
       plain.strategy = KeyStrategy::None;
-      addCell({ci, plain, prefix + "none"});
-      // The unsorted wavefront with each other value of an axis that changes it (compaction, trace and shade):
-      // a baseline of its own, labelled "none <flag>=<value>".
-      auto unsortedVariants = [&](const std::vector<std::string>& values, const std::string& flag, auto field) {
-        for (const std::string& value : values) {
-          Settings other = withFlag(plain, flag, value);
-          if (other.*field != plain.*field)
-            addCell({ci, other, prefix + "none " + flag.substr(2) + "=" + toString(other.*field)});
-        }
-      };
-      unsortedVariants(axes.compactions, "--compaction", &Settings::compaction);
-      unsortedVariants(axes.traceShades, "--trace-shade", &Settings::traceShade);
-      for (const std::string& strategy : axes.strategies) {
-        Settings st = withFlag(plain, "--strategy", strategy);
-        if (st.strategy == KeyStrategy::None) continue;
-        for (const std::string& sort : axes.sorts) {
-          Settings so = withFlag(st, "--sort", sort);
-          std::vector<Settings> variants{so};
-          auto expand = [&](const std::vector<std::string>& values, const char* flag, bool gridOnly = true) {
-            if (values.empty() || (gridOnly && !usesGrid(so.strategy))) return;
-            checkCellCount(plan.cells.size() + variants.size() * values.size());
-            std::vector<Settings> next;
-            for (const Settings& v : variants)
-              for (const std::string& value : values) next.push_back(withFlag(v, flag, value));
-            variants = next;
-          };
-          expand(axes.grids, "--grid");
-          expand(axes.clamps, "--clamp");
-          if (strategyInfo(so.strategy).samplesGaussian) expand(axes.resets, "--gauss-reset");
-          if (strategyInfo(so.strategy).readsFixedLength) expand(axes.factors, "--fixed-factor");
-          expand(axes.sortBits, "--sort-bits", /*gridOnly=*/false);
-          expand(axes.fusions, "--fusion", /*gridOnly=*/false);
-          expand(axes.compactions, "--compaction", /*gridOnly=*/false);
-          expand(axes.traceShades, "--trace-shade", /*gridOnly=*/false);
-          if (usesLengthCache(so.strategy)) expand(axes.learnEvery, "--learn-every");
-          checkCellCount(plan.cells.size() + variants.size() * axes.policies.size());
-          std::vector<Settings> withPolicies;
-          for (const Settings& v : variants)
-            for (const std::string& policy : axes.policies) withPolicies.push_back(withFlag(v, "--sort-policy", policy));
-          for (const Settings& v : withPolicies) {
-            std::string label = prefix + strategy + "/" + sort;
-            if (usesGrid(v.strategy)) {
-              label += v.grid.automatic ? " grid=auto" : " grid=" + std::to_string(v.grid.cells.x) + "x" +
-                                                           std::to_string(v.grid.cells.y) + "x" + std::to_string(v.grid.cells.z);
-              label += v.clampToCamera ? " clamp=" + std::to_string(int(v.clampDistance)) : " clamp=off";
-            }
-            if (!axes.resets.empty() && strategyInfo(v.strategy).samplesGaussian) label += " reset=" + shortNumber(v.gaussReset);
-            if (!axes.factors.empty() && strategyInfo(v.strategy).readsFixedLength)
-              label += " factor=" + shortNumber(v.fixedFactor);
-            if (v.sortPolicy != SortPolicy::Always) label += " policy=" + toString(v.sortPolicy);
-            if (v.sortBits != 0) label += " bits=" + std::to_string(v.sortBits);
-            if (v.fusion != Settings{}.fusion) label += " fusion=" + toString(v.fusion);
-            if (v.compaction != Settings{}.compaction) label += " compaction=" + toString(v.compaction);
-            if (v.traceShade != Settings{}.traceShade) label += " trace-shade=" + toString(v.traceShade);
-            if (v.learnEvery != 1) label += " learn=1/" + std::to_string(v.learnEvery);
-            addCell({ci, v, label});
-          }
-        }
-      }
+      cells.addBaselines(caseBase, plain);
+      cells.addSorted(plain);
     }
-  }
-  return plan;
 }
 
-std::string benchHelp() {
-  return "usage: raylab bench [render flags] [sweep flags]\n"
-         "  --cases SCENE@VIEW,...    default temple@alley,temple@hall,temple@openings\n"
-         "  --scale-tris 1e4,1e5,...  one case per size for every bare temple-detail case (default case\n"
-         "                            temple-detail@hall): the scene-scale sweep\n"
-         "  --bounces 2,4,8,16        path lengths to sweep (each case renders its reference per count)\n"
-         "  --sizes 512x256,1024x512  image sizes to sweep (default: --size's); with --spps, the paths per\n"
-         "                            frame (width x height x spp) as an axis; a reference per size and spp\n"
-         "  --spps 1,4                samples per frame to sweep (default: --spp's)\n"
-         "  --strategies all|a,b,...  key strategies besides the baselines (default all)\n"
-         "  --sorts radix,bitonic     sorts to sweep (default radix)\n"
-         "  --sort-policies always,auto  sort policies to sweep (default always)\n"
-         "  --sort-bits-list 0,8,16   sorted key bits to sweep (0: all; see --sort-bits)\n"
-         "  --fusions none,both       reorder stage fusions to sweep (see --fusion)\n"
-         "  --compactions none,shade  compactions to sweep, the unsorted baseline's too (see --compaction)\n"
-         "  --trace-shades split,fused  trace and shade as one dispatch or two, the baseline's too (--trace-shade)\n"
-         "  --learn-every-list 1,4,16 learning strides of the length-cache strategies to sweep\n"
-         "  --grids auto,32x8x32      grid settings to sweep\n"
-         "  --clamps off,50           camera clamp distances to sweep\n"
-         "  --gauss-resets 20,inf     Gaussian reset thresholds to sweep\n"
-         "  --fixed-factors 0.5,0.25  fixed-length factors to sweep (every strategy that reads the fixed length)\n"
-         "  --tracers compute,rt      tracers to sweep (default: --tracer's); rt labels start with \"rt \"\n"
-         "  --bvhs binary,wide        the compute tracer's BVH layouts to sweep (default: --bvh's); wide\n"
-         "                            labels start with \"wide \"\n"
-         "  --sers on,hint            SER cells of the rt megakernel (by hit; by hit with a key hint)\n"
-         "  --ser-hints two-point,... key strategies whose keys make the SER hint (default two-point)\n"
-         "  --timed-frames N          measured frames per cell (default 8)\n"
-         "  --warmup N                unmeasured frames first (default 2)\n"
-         "  --reference-spp N         samples of the megakernel reference image (default 64)\n"
-         "  --no-detail               skip the untimed counting frame (no SIMT/accuracy figures)\n"
-         "  --no-charts               write no charts (by default the sweep ends by running\n"
-         "                            python3 app/bench_charts.py DIR; RAYLAB_PYTHON picks the interpreter)\n"
-         "  --out-dir DIR             results.jsonl (each cell as it ends), results.csv (at the end) and\n"
-         "                            sweep.json (the sweep and the git revision) (default bench-out)\n"
-         "  --resume DIR              continue a sweep that was killed: run only the cells not yet in\n"
-         "                            DIR/results.jsonl; the same flags as that sweep (or none: those in\n"
-         "                            DIR/sweep.json), at the same revision, else exit 2\n"
-         "  --sweep FILE              the same flags as `name = value` lines\n"
-         "  --shard i/K               run only the cells n (0-based, in plan order) with n mod K = i, 0 <= i < K:\n"
-         "                            one of K disjoint parts of the sweep, for K GPUs or hosts\n"
-         "  --merge DIR... [--out-dir OUT]  put the K shard folders of one sweep back together (CSV, JSONL,\n"
-         "                            charts); refuses folders of other sweeps or revisions, or a shard missing\n"
-         "The megakernel and the unsorted wavefront are always measured, per tracer. The charts (needs\n"
-         "matplotlib; without python3 or matplotlib the sweep says so and keeps its CSV) can be drawn again with\n"
-         "  python3 app/bench_charts.py DIR\n"
-         "Exit status: 0 every cell measured and charted (or charts unavailable), 1 a cell failed, a result could\n"
-         "not be written or a chart failed (results.csv and results.jsonl are kept), 2 a bad sweep (before any\n"
-         "rendering), 4 validation errors.\n";
+}  // namespace
+
+BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
+  std::vector<std::string> args = withSweepFiles(rawArgs);
+  BenchPlan plan;
+  Axes axes;
+  SweepFlags sweep;
+  std::vector<std::string> rest;
+  axes.bounces = takeBounceList(args);
+  plan.common = parseCommonOptions(args, &rest);
+  parseSweepFlags(rest, plan, axes, sweep);
+  plan.cases = planCases(sweep, axes);
+  if (axes.strategies.size() == 1 && axes.strategies[0] == "all") {
+    axes.strategies.clear();
+    for (KeyStrategy s : allKeyStrategies())
+      if (s != KeyStrategy::None) axes.strategies.push_back(toString(s));
+  }
+  const Settings& base = plan.common.settings;
+  if (axes.tracers.empty()) axes.tracers = {toString(base.tracer)};
+  if (axes.bvhs.empty()) axes.bvhs = {toString(base.bvh)};
+  if (axes.bounces.empty()) axes.bounces = {std::to_string(base.bounces)};
+  addCells(plan, axes);
+  return plan;
 }
 
 }  // namespace raylab

@@ -17,7 +17,7 @@ const Viewpoint& resolveViewpoint(const Scene& scene, const std::string& name) {
 LoadedScene loadSceneForSettings(const Settings& settings) {
   LoadedScene loaded;
   try {
-    loaded.scene = loadSceneByName(settings.scene);
+    loaded.scene = loadSceneByName(settings.scene, settings.clutterSeed);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "renderer/reorder/key_strategies.h"
+#include "renderer/settings_table.h"
 
 namespace raylab {
 namespace {
@@ -44,7 +45,38 @@ std::optional<E> parse(const std::pair<E, const char*> (&table)[N], const std::s
   return std::nullopt;
 }
 
+template <class E, size_t N>
+std::vector<E> valuesOf(const std::pair<E, const char*> (&table)[N]) {
+  std::vector<E> v;
+  for (const auto& [e, n] : table) v.push_back(e);
+  return v;
+}
+
 }  // namespace
+
+#define RAYLAB_ALL_VALUES(E, table)                 \
+  template <>                                       \
+  const std::vector<E>& allValues<E>() {            \
+    static const std::vector<E> all = valuesOf(table); \
+    return all;                                     \
+  }
+RAYLAB_ALL_VALUES(SortAlgorithm, kSortNames)
+RAYLAB_ALL_VALUES(HeatmapView, kHeatmapNames)
+RAYLAB_ALL_VALUES(HeatmapKeyColour, kKeyColourNames)
+RAYLAB_ALL_VALUES(HeatmapScale, kScaleNames)
+RAYLAB_ALL_VALUES(Fusion, kFusionNames)
+RAYLAB_ALL_VALUES(Compaction, kCompactionNames)
+RAYLAB_ALL_VALUES(TraceShade, kTraceShadeNames)
+RAYLAB_ALL_VALUES(SortPolicy, kPolicyNames)
+RAYLAB_ALL_VALUES(Kernel, kKernelNames)
+RAYLAB_ALL_VALUES(BvhLayout, kBvhLayoutNames)
+RAYLAB_ALL_VALUES(Tracer, kTracerNames)
+RAYLAB_ALL_VALUES(Ser, kSerNames)
+#undef RAYLAB_ALL_VALUES
+template <>
+const std::vector<KeyStrategy>& allValues<KeyStrategy>() {
+  return allKeyStrategies();
+}
 
 const std::vector<KeyStrategy>& allKeyStrategies() {
   static const std::vector<KeyStrategy> all = [] {
@@ -58,14 +90,7 @@ const std::vector<KeyStrategy>& allKeyStrategies() {
 std::string toString(KeyStrategy s) { return strategyInfo(s).name; }
 std::string toString(HeatmapView v) { return nameOf(kHeatmapNames, v); }
 std::optional<HeatmapView> parseHeatmapView(const std::string& n) { return parse(kHeatmapNames, n); }
-const std::vector<HeatmapView>& allHeatmapViews() {
-  static const std::vector<HeatmapView> all = [] {
-    std::vector<HeatmapView> v;
-    for (const auto& [h, n] : kHeatmapNames) v.push_back(h);
-    return v;
-  }();
-  return all;
-}
+const std::vector<HeatmapView>& allHeatmapViews() { return allValues<HeatmapView>(); }
 std::string toString(HeatmapKeyColour c) { return nameOf(kKeyColourNames, c); }
 std::string toString(HeatmapScale s) { return nameOf(kScaleNames, s); }
 std::optional<HeatmapKeyColour> parseHeatmapKeyColour(const std::string& n) { return parse(kKeyColourNames, n); }
@@ -103,33 +128,38 @@ std::string keyStrategyNames() {
   return s;
 }
 
-bool Settings::requiresAccumulationReset(const Settings& p) const {
-  // Key strategy, sort and grid parameters never change the image (the central invariant), so they keep
-  // the accumulation; everything that changes a sample does not. The BVH layout can change which of two
-  // triangles hit at the same distance wins, so an image is accumulated under one layout only.
-  return scene != p.scene || view != p.view || width != p.width || height != p.height || bounces != p.bounces ||
-         sppPerFrame != p.sppPerFrame || seed != p.seed || bvh != p.bvh;
+namespace {
+
+// The effects (settings_table.h) of every row in which `a` and `b` differ.
+unsigned changedEffects(const Settings& a, const Settings& b) {
+  unsigned effects = kEffectNone;
+  for (const SettingRow& row : settingRows())
+    if (!row.same(a, b)) effects |= row.effects;
+  return effects;
 }
 
-bool Settings::requiresCacheReset(const Settings& p) const {
-  return scene != p.scene || strategy != p.strategy || grid != p.grid || clampToCamera != p.clampToCamera ||
-         clampDistance != p.clampDistance || fixedFactor != p.fixedFactor;
+}  // namespace
+
+// Key strategy, sort and grid parameters never change the image (the central invariant), so they keep the
+// accumulation; everything that changes a sample does not (the table's rows of kEffectAccumulation).
+bool Settings::requiresAccumulationReset(const Settings& p) const {
+  return changedEffects(*this, p) & kEffectAccumulation;
 }
+
+bool Settings::requiresCacheReset(const Settings& p) const { return changedEffects(*this, p) & kEffectCache; }
 
 SettingsChange SettingsChange::between(const Settings& p, const Settings& n) {
+  unsigned effects = changedEffects(p, n);
+  // The key parameters hold the grid and thresholds, and the length unit, which follows the path count.
+  if (effects & (kEffectCache | kEffectReallocate)) effects |= kEffectKeyParameters;
+  // What the auto sort policy measured holds for one view, image, key, sort, policy, kernel and tracer.
+  if (effects != kEffectNone) effects |= kEffectSortCosts;
   SettingsChange c;
-  // The bounce count is not here: path state does not depend on it (the counters have room for the most).
-  c.reallocate = n.width != p.width || n.height != p.height || n.sppPerFrame != p.sppPerFrame;
-  c.resetAccumulation = n.requiresAccumulationReset(p);
-  c.resetCache = n.requiresCacheReset(p);
-  // The thresholds below keep what was learned but live in the uploaded parameters, as does the length
-  // unit, which follows the path count.
-  c.keyParameters = c.resetCache || c.reallocate || n.emaAlpha != p.emaAlpha || n.gaussOutlier != p.gaussOutlier ||
-                    n.gaussReset != p.gaussReset;
-  c.resetSortCosts = c.reallocate || c.resetAccumulation || c.resetCache || c.keyParameters || n.sort != p.sort ||
-                     n.sortPolicy != p.sortPolicy || n.sortBits != p.sortBits || n.learnEvery != p.learnEvery ||
-                     n.fusion != p.fusion || n.compaction != p.compaction || n.traceShade != p.traceShade ||
-                     n.kernel != p.kernel || n.tracer != p.tracer || n.ser != p.ser;
+  c.reallocate = effects & kEffectReallocate;
+  c.resetAccumulation = effects & kEffectAccumulation;
+  c.resetCache = effects & kEffectCache;
+  c.keyParameters = effects & kEffectKeyParameters;
+  c.resetSortCosts = effects & kEffectSortCosts;
   return c;
 }
 

@@ -1,6 +1,8 @@
 // The one source of truth for what is rendered and how: the CLI parses into it, the UI edits it, the
 // benchmark sweeps it and a screenshot's sidecar records it. Comparing with the previous Settings, once
-// (SettingsChange::between), decides what must be reallocated, restarted or uploaded.
+// (SettingsChange::between), decides what must be reallocated, restarted or uploaded. Every member has its row
+// in the settings table (renderer/settings_table.h: flag, JSON, CSV, range, help, effect), which all of those
+// read; tests/cpu/test_settings_table.cpp fails for a member without one.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +11,8 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "scenes/clutter.h"
 
 namespace raylab {
 
@@ -142,6 +146,11 @@ std::optional<HeatmapKeyColour> parseHeatmapKeyColour(const std::string& name);
 std::optional<HeatmapScale> parseHeatmapScale(const std::string& name);
 std::optional<HeatmapView> parseHeatmapView(const std::string& name);
 const std::vector<HeatmapView>& allHeatmapViews();
+// Every value of a settings enum, in the order the help and the window list them (KeyStrategy, SortAlgorithm,
+// HeatmapView, HeatmapKeyColour, HeatmapScale, Kernel, Tracer, Ser, SortPolicy, Fusion, Compaction,
+// TraceShade, BvhLayout).
+template <class E>
+const std::vector<E>& allValues();
 
 // Grid resolution: automatic (near-cubic cells from the extents) or explicit cells per axis.
 struct GridSetting {
@@ -151,8 +160,9 @@ struct GridSetting {
   bool operator==(const GridSetting&) const = default;
 };
 
-// Limits where the methods are defined; settings_validation.h rejects values outside (whichever way they
-// came in), the UI sliders clamp to them.
+// Limits where the methods are defined: the settings table's rows (renderer/settings_table.cpp) take their
+// ranges from here; validation rejects values outside (whichever way they came in), the UI sliders clamp to
+// them.
 struct SettingLimits {
   static constexpr uint32_t kMaxSize = 8192;
   static constexpr uint32_t kMaxBounces = 32;
@@ -176,6 +186,7 @@ struct Settings {
   // Scene and camera
   std::string scene = "temple";  // built-in name or a .gltf/.glb path
   std::string view;              // viewpoint name; empty: the scene's first
+  uint32_t clutterSeed = kClutterDefaultSeed;  // the cluttered room's layout; other scenes ignore it
   uint32_t width = 512;
   uint32_t height = 256;
   uint32_t bounces = 4;

@@ -1,10 +1,13 @@
 #include "renderer/settings_validation.h"
 
+#include "renderer/settings_table.h"
 #include "shaders/sort_types.h"
 
+#include <cerrno>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace raylab {
 std::string formatNumber(double v) {
@@ -44,36 +47,37 @@ void checkUint(const NumberRange& r, double v, const std::string& text) {
   }
 }
 
+uint32_t uintFromText(const NumberRange& r, const std::string& text) {
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+    throw SettingsError(std::string(r.flag) + " expects a whole number, got '" + text + "'");
+  errno = 0;
+  unsigned long long v = std::strtoull(text.c_str(), nullptr, 10);
+  if (errno == ERANGE || v < r.lo || v > r.hi) throw SettingsError(outOfRangeMessage(r, text));
+  return static_cast<uint32_t>(v);
+}
+
+float floatFromText(const NumberRange& r, const std::string& text) {
+  char* end = nullptr;
+  errno = 0;
+  double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v))
+    throw SettingsError(std::string(r.flag) + " expects a finite number, got '" + text + "'");
+  checkFloat(r, v, text);  // compared as floats: the limits themselves are accepted
+  return static_cast<float>(v);
+}
+
 void checkHeatmapRange(const HeatmapRange& r) {
-  checkFloat(ranges::heatmapRangeMin, r.min, number(r.min));
-  checkFloat(ranges::heatmapRangeMax, r.max, number(r.max));
+  const NumberRange lo{"--heatmap-range min", 0, SettingLimits::kMaxHeatmapValue};
+  const NumberRange hi{"--heatmap-range max", 0, SettingLimits::kMaxHeatmapValue};
+  checkFloat(lo, r.min, number(r.min));
+  checkFloat(hi, r.max, number(r.max));
   if (!(r.min < r.max))
     throw SettingsError("--heatmap-range min (" + number(r.min) + ") must be below max (" + number(r.max) + ")");
 }
 
 std::optional<std::string> settingsError(const Settings& s) {
-  namespace R = ranges;
   try {
-    auto u = [](const NumberRange& r, uint32_t v) { checkUint(r, v, std::to_string(v)); };
-    auto f = [](const NumberRange& r, float v) { checkFloat(r, v, number(v)); };
-    u(R::width, s.width);
-    u(R::height, s.height);
-    u(R::bounces, s.bounces);
-    u(R::spp, s.sppPerFrame);
-    u(R::frames, s.frames);
-    f(R::exposure, s.exposure);
-    for (int a = 0; a < 3; ++a) u(R::gridCells, s.grid.cells[a]);
-    u(R::gridAutoCells, s.grid.autoCells);
-    f(R::clamp, s.clampDistance);
-    f(R::fixedFactor, s.fixedFactor);
-    f(R::emaAlpha, s.emaAlpha);
-    f(R::gaussOutlier, s.gaussOutlier);
-    if (!std::isinf(s.gaussReset) || s.gaussReset < 0) f(R::gaussReset, s.gaussReset);
-    u(R::sortBits, s.sortBits);
-    u(R::learnEvery, s.learnEvery);
-    u(R::heatmapBounce, s.heatmapBounce);
-    // An unlocked range is not used (the frame's own is), but it is still a range a lock would use.
-    checkHeatmapRange(s.heatmapRange);
+    for (const SettingRow& row : settingRows()) row.check(s);
   } catch (const SettingsError& e) {
     return e.what();
   }

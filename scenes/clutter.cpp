@@ -22,7 +22,6 @@
 namespace raylab {
 namespace {
 
-constexpr uint64_t kClutterSeed = 21;
 // The room's inside: x across, z deep, y up (metres).
 constexpr float kRoomX = 7.0f, kRoomZ = 5.0f, kRoomY = 3.2f, kClutterWall = 0.2f;
 
@@ -344,14 +343,14 @@ Bounds clutterRoomInterior() {
   return b;
 }
 
-Scene makeClutter(uint32_t triangles) {
+Scene makeClutter(uint32_t triangles, uint32_t seed) {
   Scene scene;
   scene.name = std::string(kClutterName) + ":" + std::to_string(triangles);
   scene.skyColor = glm::vec3(0.9f, 1.0f, 1.2f);  // the window's sky
   scene.viewpoints = clutterViews();
   MeshBuilder b(scene);
   const ClutterMaterials m = addClutterMaterials(b);
-  SplitMixRng rng(kClutterSeed);
+  SplitMixRng rng(seed);
   clutterRoom(b, m);
   clutterShelves(b, rng, m);
   ClutterPlacement placement;

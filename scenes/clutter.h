@@ -7,7 +7,8 @@
 //
 // N is the triangle count (5e4 to 3e6, "clutter" alone is kClutterDefaultTriangles): the room and its
 // shelves are fixed and the loose objects are added, in one fixed random order, until the count is reached,
-// so a larger N is a more crowded room. Deterministic: the same N gives the same triangles.
+// so a larger N is a more crowded room. Deterministic: the same N and seed (Settings::clutterSeed, the
+// order and places of the objects) give the same triangles.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +22,7 @@ inline constexpr const char* kClutterName = "clutter";
 inline constexpr uint32_t kClutterMinTriangles = 50000;  // the room and its shelves alone have about 22,500
 inline constexpr uint32_t kClutterMaxTriangles = 3000000;
 inline constexpr uint32_t kClutterDefaultTriangles = 200000;
+inline constexpr uint32_t kClutterDefaultSeed = 21;
 
 // True for "clutter" and "clutter:<anything>": names the family claims, good size or not.
 bool isClutterName(const std::string& name);
@@ -29,7 +31,7 @@ uint32_t parseClutterTriangles(const std::string& name);
 
 // The room with about `triangles` triangles (within a few hundred above it). Viewpoints "overview" (the
 // default), "shelves", "floor".
-Scene makeClutter(uint32_t triangles);
+Scene makeClutter(uint32_t triangles, uint32_t seed = kClutterDefaultSeed);
 
 // The room's inside, for tests: every object and camera lies in it.
 Bounds clutterRoomInterior();

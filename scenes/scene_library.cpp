@@ -53,13 +53,13 @@ void checkSceneName(const std::string& nameOrPath) {
                               ":N (5e4 to 3e6), or a path to a .gltf or .glb file");
 }
 
-Scene loadSceneByName(const std::string& nameOrPath) {
+Scene loadSceneByName(const std::string& nameOrPath, uint32_t clutterSeed) {
   checkSceneName(nameOrPath);
   if (nameOrPath == "temple") return makeTemple();
   if (nameOrPath == "cornell") return makeCornell();
   if (nameOrPath == "furnace") return makeFurnace();
   if (isTempleDetailName(nameOrPath)) return makeTempleDetail(parseTempleDetailTriangles(nameOrPath));
-  if (isClutterName(nameOrPath)) return makeClutter(parseClutterTriangles(nameOrPath));
+  if (isClutterName(nameOrPath)) return makeClutter(parseClutterTriangles(nameOrPath), clutterSeed);
   // A glTF file. Checked here so the message is the same for both formats and does not depend on tinygltf's.
   std::error_code ec;
   if (!std::filesystem::is_regular_file(nameOrPath, ec)) throw SceneLoadError(nameOrPath + ": file not found");

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "scenes/clutter.h"
 #include "scenes/scene.h"
 
 namespace raylab {
@@ -13,7 +14,8 @@ namespace raylab {
 // path ending in .gltf / .glb (any case). Throws SceneLoadError for a file that is missing or unusable,
 // std::invalid_argument for any other name or a bad size (the message lists the accepted names and
 // ranges; the CLI turns it into a usage error).
-Scene loadSceneByName(const std::string& nameOrPath);
+// `clutterSeed` lays out the cluttered room (scenes/clutter.h).
+Scene loadSceneByName(const std::string& nameOrPath, uint32_t clutterSeed = kClutterDefaultSeed);
 
 // What loadSceneByName checks before building or reading anything (the name and a family's size, not
 // whether a file exists), for plans that name many scenes: throws its std::invalid_argument.

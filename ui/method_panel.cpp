@@ -8,13 +8,12 @@
 
 #include "renderer/heatmap_rules.h"
 #include "renderer/reorder/key_strategies.h"
-#include "renderer/settings_validation.h"
+#include "renderer/settings_table.h"
 #include "ui/panel_layout.h"
 
 namespace raylab {
 namespace {
 
-using L = SettingLimits;
 constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
 constexpr ImGuiSliderFlags kLog = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic;
 
@@ -56,6 +55,16 @@ bool sliderU32(const char* label, uint32_t& v, uint32_t lo, uint32_t hi, ImGuiSl
   return changed;
 }
 
+// Sliders over a setting's range, as its row of the settings table declares it.
+bool sliderSetting(const char* label, uint32_t& v, const char* flag, ImGuiSliderFlags flags = kClamp) {
+  const NumberRange r = settingRange(flag);
+  return sliderU32(label, v, static_cast<uint32_t>(r.lo), static_cast<uint32_t>(r.hi), flags);
+}
+bool sliderSetting(const char* label, float& v, const char* flag, const char* format, ImGuiSliderFlags flags = kClamp) {
+  const NumberRange r = settingRange(flag);
+  return ImGui::SliderFloat(label, &v, static_cast<float>(r.lo), static_cast<float>(r.hi), format, flags);
+}
+
 // A control the device cannot offer: one disabled line, why in the tooltip.
 void unavailableLine(const char* text, const std::string& why) {
   ImGui::TextDisabled("%s", text);
@@ -70,39 +79,39 @@ void sectionTitle(const char* title) {
 
 void drawSortSection(Settings& s) {
   comboSetting("strategy", s, &Settings::strategy, allKeyStrategies());
-  comboSetting("sort", s, &Settings::sort, {SortAlgorithm::None, SortAlgorithm::Bitonic, SortAlgorithm::Radix, SortAlgorithm::Tile});
-  comboEnum("sort policy", s.sortPolicy, {SortPolicy::Always, SortPolicy::Never, SortPolicy::Auto});
-  sliderU32("sorted key bits", s.sortBits, 0, 32);
+  comboSetting("sort", s, &Settings::sort, allValues<SortAlgorithm>());
+  comboEnum("sort policy", s.sortPolicy, allValues<SortPolicy>());
+  sliderSetting("sorted key bits", s.sortBits, "sort-bits");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("order only the key's top bits (0: all); 8 fewer is one radix pass less");
 }
 
 // How the frame is traced and shaded, and what it renders.
 void drawPipelineSection(Settings& s, ViewOptions& view) {
-  comboSetting("fusion", s, &Settings::fusion, {Fusion::None, Fusion::Keys, Fusion::Gather, Fusion::Both});
+  comboSetting("fusion", s, &Settings::fusion, allValues<Fusion>());
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("keys: made in shade; gather: the reorder done by the next trace (compute wavefront only)");
   if (s.fusion != Fusion::None && s.sorts() && !s.fusesKeys() && !s.fusesGather())
     ImGui::TextDisabled("fusion: the rt tracer keeps separate passes");
-  comboSetting("compaction", s, &Settings::compaction, {Compaction::None, Compaction::Shade});
+  comboSetting("compaction", s, &Settings::compaction, allValues<Compaction>());
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("shade packs the live paths at the front, so later stages visit only live paths (compute wavefront only)");
   if (s.compaction != Compaction::None && !s.compacts())
     ImGui::TextDisabled("compaction: only the compute wavefront compacts");
-  comboSetting("trace + shade", s, &Settings::traceShade, {TraceShade::Split, TraceShade::Fused});
+  comboSetting("trace + shade", s, &Settings::traceShade, allValues<TraceShade>());
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("fused: one dispatch per bounce where nothing reads the hit in between (compute wavefront)");
-  comboSetting("kernel", s, &Settings::kernel, {Kernel::Wavefront, Kernel::Megakernel});
+  comboSetting("kernel", s, &Settings::kernel, allValues<Kernel>());
   if (s.kernel == Kernel::Megakernel) ImGui::TextDisabled("the megakernel never sorts");
   // The rt tracer and SER need extensions the device may lack: then each is one greyed line, the reason (a
   // paragraph of missing extensions) on hover, so the controls below stay in view.
   if (!view.rtUnavailable.empty()) {
     unavailableLine(("tracer: " + toString(s.tracer) + " (rt unavailable)").c_str(), view.rtUnavailable);
   } else {
-    comboSetting("tracer", s, &Settings::tracer, {Tracer::Compute, Tracer::Rt});
+    comboSetting("tracer", s, &Settings::tracer, allValues<Tracer>());
   }
   // The layout the compute tracer walks; the rt tracer keeps the setting but has its own structure.
   ImGui::BeginDisabled(s.tracer != Tracer::Compute);
-  comboSetting("BVH", s, &Settings::bvh, {BvhLayout::Binary, BvhLayout::Wide});
+  comboSetting("BVH", s, &Settings::bvh, allValues<BvhLayout>());
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("binary, or compressed 8-wide (quantized child boxes, as CWBVH); a new image (compute tracer only)");
@@ -110,13 +119,13 @@ void drawPipelineSection(Settings& s, ViewOptions& view) {
     unavailableLine(("SER: " + toString(s.ser) + " (unavailable)").c_str(), view.serUnavailable);
   } else {
     ImGui::BeginDisabled(s.tracer != Tracer::Rt || s.kernel != Kernel::Megakernel);
-    comboEnum("SER", s.ser, {Ser::Off, Ser::On, Ser::Hint});
+    comboEnum("SER", s.ser, allValues<Ser>());
     ImGui::EndDisabled();
     if (s.ser == Ser::Hint) ImGui::TextDisabled("hint: top bits of the strategy's key");
   }
   ImGui::Separator();
-  sliderU32("bounces", s.bounces, 1, L::kMaxBounces);
-  sliderU32("samples per frame", s.sppPerFrame, 1, L::kMaxSpp, kLog);
+  sliderSetting("bounces", s.bounces, "bounces");
+  sliderSetting("samples per frame", s.sppPerFrame, "spp", kLog);
   ImGui::SliderFloat("resolution scale", &view.resolutionScale, ViewOptions::kMinScale, ViewOptions::kMaxScale, "%.2f", kClamp);
   ImGui::SliderFloat("exposure", &s.exposure, 0.01f, 100.0f, "%.2f", kLog);
 }
@@ -124,15 +133,16 @@ void drawPipelineSection(Settings& s, ViewOptions& view) {
 void drawGridSection(Settings& s) {
   ImGui::Checkbox("automatic grid", &s.grid.automatic);
   if (s.grid.automatic) {
-    sliderU32("cells on largest axis", s.grid.autoCells, 1, L::kMaxGridCellsPerAxis, kLog);
+    sliderSetting("cells on largest axis", s.grid.autoCells, "grid", kLog);
   } else {
     int cells[3] = {int(s.grid.cells.x), int(s.grid.cells.y), int(s.grid.cells.z)};
-    if (ImGui::SliderInt3("cells x y z", cells, 1, int(L::kMaxGridCellsPerAxis), "%d", kLog))
+    const NumberRange r = settingRange("grid");
+    if (ImGui::SliderInt3("cells x y z", cells, int(r.lo), int(r.hi), "%d", kLog))
       s.grid.cells = {uint32_t(cells[0]), uint32_t(cells[1]), uint32_t(cells[2])};
   }
   ImGui::Checkbox("clamp grid to camera", &s.clampToCamera);
   ImGui::BeginDisabled(!s.clampToCamera);
-  ImGui::SliderFloat("clamp distance", &s.clampDistance, 0.01f, L::kMaxClampDistance, "%.3g", kLog);
+  ImGui::SliderFloat("clamp distance", &s.clampDistance, 0.01f, float(settingRange("clamp").hi), "%.3g", kLog);
   ImGui::EndDisabled();
 }
 
@@ -140,10 +150,10 @@ void drawGridSection(Settings& s) {
 void drawLengthSection(Settings& s) {
   const KeyStrategyInfo& k = strategyInfo(s.strategy);
   ImGui::BeginDisabled(!k.readsFixedLength);
-  ImGui::SliderFloat("fixed-length factor", &s.fixedFactor, L::kMinFixedFactor, L::kMaxFixedFactor, "%.3f", kClamp);
+  sliderSetting("fixed-length factor", s.fixedFactor, "fixed-factor", "%.3f");
   ImGui::EndDisabled();
   ImGui::BeginDisabled(!k.readsEmaAlpha);
-  ImGui::SliderFloat("EMA alpha", &s.emaAlpha, L::kMinEmaAlpha, L::kMaxEmaAlpha, "%.3f", kLog);
+  sliderSetting("EMA alpha", s.emaAlpha, "ema-alpha", "%.3f", kLog);
   ImGui::EndDisabled();
   ImGui::BeginDisabled(!k.samplesGaussian);
   bool never = std::isinf(s.gaussReset);
@@ -152,10 +162,10 @@ void drawLengthSection(Settings& s) {
   float reset = never ? 1e6f : s.gaussReset;
   if (ImGui::SliderFloat("reset variance", &reset, 0.001f, 1e6f, "%.4g", kLog) && !never) s.gaussReset = reset;
   ImGui::EndDisabled();
-  ImGui::SliderFloat("outlier sigmas", &s.gaussOutlier, 0.0f, L::kMaxGaussOutlier, "%.2f", kClamp);
+  sliderSetting("outlier sigmas", s.gaussOutlier, "gauss-outlier", "%.2f");
   ImGui::EndDisabled();
   ImGui::BeginDisabled(!k.learnsLengths);
-  sliderU32("learn from 1 ray in", s.learnEvery, 1, 64);
+  sliderSetting("learn from 1 ray in", s.learnEvery, "learn-every");
   ImGui::EndDisabled();
 }
 
@@ -183,12 +193,12 @@ void drawHeatmapSection(Settings& s) {
   ImGui::EndDisabled();
   // Colouring: keys by cell, rank or hash; scalar views linear or log (range lock: the legend).
   ImGui::BeginDisabled(s.heatmap != HeatmapView::SortKey);
-  comboEnum("key colour", s.heatmapKeyColour, {HeatmapKeyColour::Cell, HeatmapKeyColour::Rank, HeatmapKeyColour::Hash});
+  comboEnum("key colour", s.heatmapKeyColour, allValues<HeatmapKeyColour>());
   ImGui::EndDisabled();
   const bool scalar = s.heatmap == HeatmapView::TraversalSteps || s.heatmap == HeatmapView::WarpEfficiency ||
                       s.heatmap == HeatmapView::CacheMean || s.heatmap == HeatmapView::CacheVariance;
   ImGui::BeginDisabled(!scalar);
-  comboEnum("scale", s.heatmapScale, {HeatmapScale::Linear, HeatmapScale::Log});
+  comboEnum("scale", s.heatmapScale, allValues<HeatmapScale>());
   ImGui::EndDisabled();
   // A strategy, sort or kernel change (or a script) can leave the chosen view without data.
   if (std::optional<std::string> why = heatmapUnavailable(s)) ImGui::TextWrapped("showing the render: %s", why->c_str());

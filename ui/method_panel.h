@@ -1,5 +1,6 @@
 // The method panel: everything about how rays are reordered, as edits of Settings (and the resolution
-// scale of the view). Every slider is clamped to the range where the method is defined (SettingLimits).
+// scale of the view). Every slider is clamped to the range where the method is defined (its row of the
+// settings table, renderer/settings_table.h).
 #pragma once
 
 #include "renderer/settings.h"

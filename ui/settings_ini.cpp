@@ -7,7 +7,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
-#include "renderer/stats_json.h"
+#include "renderer/settings_json.h"
 
 namespace raylab {
 namespace {
@@ -25,7 +25,7 @@ void readLine(ImGuiContext*, ImGuiSettingsHandler*, void* entry, const char* lin
   int a = 0, b = 0;
   if (std::strncmp(line, "settings=", 9) == 0) {
     try {
-      s->loadedSettings = settingsFromJson(nlohmann::json::parse(line + 9));
+      s->loadedSettings = settingsFromIniLine(line);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "raylab: imgui.ini: ignoring the saved settings (%s)\n", e.what());
     }
@@ -41,7 +41,7 @@ void readLine(ImGuiContext*, ImGuiSettingsHandler*, void* entry, const char* lin
 void writeAll(ImGuiContext*, ImGuiSettingsHandler* h, ImGuiTextBuffer* out) {
   const IniState* s = stateOf(h);
   out->appendf("[%s][State]\n", h->TypeName);
-  if (s->settings) out->appendf("settings=%s\n", toJson(*s->settings).dump().c_str());
+  if (s->settings) out->appendf("%s\n", settingsIniLine(*s->settings).c_str());
   if (s->view) out->appendf("scale=%.3f\ndetailed=%d\n", s->view->resolutionScale, s->view->detailedStats ? 1 : 0);
   if (s->width > 0 && s->height > 0) out->appendf("window=%dx%d\n", s->width, s->height);
   out->append("\n");

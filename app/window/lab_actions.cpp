@@ -12,6 +12,7 @@
 #include "app/window/screenshot.h"
 #include "app/window/swapchain.h"
 #include "renderer/path_tracer.h"
+#include "renderer/settings_table.h"
 #include "renderer/vk/vk_context.h"
 
 namespace raylab {
@@ -132,6 +133,9 @@ void LabWindow::runAction(const ScriptAction& a) {
         glfwSetWindowSize(window_->handle(), int(s.width), int(s.height));
       } else {
         applySettingFlag(settings_, a.key, a.value);
+        // A setting the scene is made of (settings_table.h): the scene is built again.
+        if (const SettingRow* row = findSettingRow(a.key); row && (row->effects & kEffectScene))
+          loadSceneOrThrow(settings_.scene);
       }
       break;
     case K::Camera:

@@ -37,6 +37,22 @@ TEST(Clutter, SameSizeSameTrianglesAndOtherSizeMoreOfThem) {
   EXPECT_EQ(std::memcmp(a.triangles.data(), c.triangles.data(), (a.triangles.size() - 200) * sizeof(Triangle)), 0);
 }
 
+// Settings::clutterSeed (--clutter-seed) lays the room out: the default seed is the room of before, another
+// seed other places, through the scene's name as every mode loads it.
+TEST(Clutter, TheSeedLaysOutTheRoom) {
+  const Scene a = makeClutter(60000), b = loadSceneByName("clutter:60000", kClutterDefaultSeed);
+  const Scene c = loadSceneByName("clutter:60000", 7), d = makeClutter(60000, 7);
+  EXPECT_EQ(triangleBytes(a), triangleBytes(b));
+  EXPECT_EQ(triangleBytes(c), triangleBytes(d));
+  EXPECT_NE(triangleBytes(a), triangleBytes(c));
+  EXPECT_GE(c.triangles.size(), 60000u);
+  const Bounds inside = clutterRoomInterior(), all = c.bounds();
+  for (int a = 0; a < 3; ++a) {  // still within the walls, 0.2 thick
+    EXPECT_GE(all.min[a], inside.min[a] - 0.2f - 1e-4f) << "axis " << a;
+    EXPECT_LE(all.max[a], inside.max[a] + 0.2f + 1e-4f) << "axis " << a;
+  }
+}
+
 TEST(Clutter, EverythingLiesInTheRoomAndItsWalls) {
   const Scene s = makeClutter(100000);
   const Bounds inside = clutterRoomInterior();

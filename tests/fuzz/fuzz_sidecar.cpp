@@ -1,5 +1,5 @@
 // Screenshot sidecars and settings files (`--settings FILE.json`, app/sidecar.h), which read Settings
-// through settingsFromJson (renderer/stats_json.h) and the camera. The only acceptable failure is
+// through settingsFromJson (renderer/settings_json.h) and the camera. The only acceptable failure is
 // UsageError; a file that is accepted must hold settings that pass validateSettings and a usable camera.
 #include <cmath>
 

@@ -1,0 +1,32 @@
+// The bench CSV's columns (app/bench_results.h), in the library the tests link: the settings' columns are
+// their rows' (renderer/settings_table.h).
+#include "app/bench_results.h"
+
+#include <algorithm>
+
+#include "renderer/settings_table.h"
+#include "renderer/stages.h"
+
+namespace raylab {
+
+// The CSV's layout: settings columns (settings_table.h) among the results', in the order the CSV has always
+// had; a setting's column not named here comes last.
+std::vector<std::string> benchCsvColumns() {
+  std::vector<std::string> columns{"device", "driver", "git_revision", "scene", "view", "width", "height", "bounces",
+                                   "spp_per_frame", "kernel", "tracer", "ser", "ser_reordering_hint", "strategy", "sort",
+                                   "label", "frame_ms_median", "frame_ms_min", "frame_ms_max", "trace_after_first_ms"};
+  for (const StageInfo& s : kStages) columns.push_back(std::string(s.name) + "_ms");
+  for (const char* c : {"rays_per_second", "simt_efficiency", "virtual_warp_efficiency",
+                        "virtual_warp_efficiency_after_first", "prediction_error_mean", "prediction_error_median",
+                        "cell_hit_rate", "key_bits", "length_cache_bytes", "final_rel_mse", "sort_policy", "sorted_after",
+                        "triangles", "bvh_nodes", "bvh_bytes", "scene_bytes", "bvh_build_ms", "scene_load_ms",
+                        "tracer_setup_ms", "sort_bits", "learn_every", "fusion", "compaction", "trace_shade", "bvh",
+                        "wide_bvh_nodes", "wide_bvh_bytes", "paths_per_frame"})
+    columns.push_back(c);
+  for (const SettingRow& r : settingRows())
+    for (const std::string& c : r.csvColumns)
+      if (std::find(columns.begin(), columns.end(), c) == columns.end()) columns.push_back(c);
+  return columns;
+}
+
+}  // namespace raylab

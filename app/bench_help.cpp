@@ -1,0 +1,60 @@
+// `raylab bench --help`: the sweep's own flags, and the settings' axes from their rows (settings_table.h).
+#include "app/bench_sweep.h"
+#include "renderer/settings_table.h"
+
+namespace raylab {
+
+namespace {
+
+// The help lines of the settings' own axes, in the table's order.
+std::string settingAxesHelp() {
+  std::string help;
+  for (const SettingRow& r : settingRows())
+    if (r.axis.flag) help += std::string("  --") + r.axis.flag + " " + r.axis.help + "\n";
+  return help;
+}
+
+}  // namespace
+
+std::string benchHelp() {
+  return "usage: raylab bench [render flags] [sweep flags]\n"
+         "  --cases SCENE@VIEW,...    default temple@alley,temple@hall,temple@openings\n"
+         "  --scale-tris 1e4,1e5,...  one case per size for every bare temple-detail case (default case\n"
+         "                            temple-detail@hall): the scene-scale sweep\n"
+         "  --bounces 2,4,8,16        path lengths to sweep (each case renders its reference per count)\n"
+         "  --sizes 512x256,1024x512  image sizes to sweep (default: --size's); with --spps, the paths per\n"
+         "                            frame (width x height x spp) as an axis; a reference per size and spp\n"
+         "  --spps 1,4                samples per frame to sweep (default: --spp's)\n"
+         "  --strategies all|a,b,...  key strategies besides the baselines (default all)\n"
+         "  --sorts radix,bitonic     sorts to sweep (default radix)\n"
+         + settingAxesHelp() +
+         "  --tracers compute,rt      tracers to sweep (default: --tracer's); rt labels start with \"rt \"\n"
+         "  --bvhs binary,wide        the compute tracer's BVH layouts to sweep (default: --bvh's); wide\n"
+         "                            labels start with \"wide \"\n"
+         "  --sers on,hint            SER cells of the rt megakernel (by hit; by hit with a key hint)\n"
+         "  --ser-hints two-point,... key strategies whose keys make the SER hint (default two-point)\n"
+         "  --timed-frames N          measured frames per cell (default 8)\n"
+         "  --warmup N                unmeasured frames first (default 2)\n"
+         "  --reference-spp N         samples of the megakernel reference image (default 64)\n"
+         "  --no-detail               skip the untimed counting frame (no SIMT/accuracy figures)\n"
+         "  --no-charts               write no charts (by default the sweep ends by running\n"
+         "                            python3 app/bench_charts.py DIR; RAYLAB_PYTHON picks the interpreter)\n"
+         "  --out-dir DIR             results.jsonl (each cell as it ends), results.csv (at the end) and\n"
+         "                            sweep.json (the sweep and the git revision) (default bench-out)\n"
+         "  --resume DIR              continue a sweep that was killed: run only the cells not yet in\n"
+         "                            DIR/results.jsonl; the same flags as that sweep (or none: those in\n"
+         "                            DIR/sweep.json), at the same revision, else exit 2\n"
+         "  --sweep FILE              the same flags as `name = value` lines\n"
+         "  --shard i/K               run only the cells n (0-based, in plan order) with n mod K = i, 0 <= i < K:\n"
+         "                            one of K disjoint parts of the sweep, for K GPUs or hosts\n"
+         "  --merge DIR... [--out-dir OUT]  put the K shard folders of one sweep back together (CSV, JSONL,\n"
+         "                            charts); refuses folders of other sweeps or revisions, or a shard missing\n"
+         "The megakernel and the unsorted wavefront are always measured, per tracer. The charts (needs\n"
+         "matplotlib; without python3 or matplotlib the sweep says so and keeps its CSV) can be drawn again with\n"
+         "  python3 app/bench_charts.py DIR\n"
+         "Exit status: 0 every cell measured and charted (or charts unavailable), 1 a cell failed, a result could\n"
+         "not be written or a chart failed (results.csv and results.jsonl are kept), 2 a bad sweep (before any\n"
+         "rendering), 4 validation errors.\n";
+}
+
+}  // namespace raylab
