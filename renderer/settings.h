@@ -111,9 +111,9 @@ enum class TraceShade { Split, Fused };
 // collapsed from it (renderer/bvh_wide.h). Both index the same BVH-order triangles; the wide traversal may pick
 // another of two triangles hit at the same t, so switching restarts the image (and the invariant holds within
 // one layout). The rt tracer ignores it. A traversal step counts a node of the chosen layout (docs).
-// Measured on an H200 (docs/results/h200-wide-bvh, 4 bounces, 8.4M paths): wide is 1.4-1.6x slower than binary
-// in every cell (Sponza unsorted 39.0 against 27.3 ms, hall 24.5 against 15.8) though it takes 2.4x fewer
-// steps; the default stays binary until the wide traversal is as fast as CWBVH's (see bvh_traverse_wide.glsl).
+// Measured on an H200 (docs/results/h200-wide-bvh/cwbvh, 4 bounces, 8.4M paths): wide is level with binary
+// unsorted (Sponza 27.32 against 27.39 ms; the hall 17.20 against 15.82) and faster sorted (Sponza 24.85
+// against 26.16); binary stays the default, the faster unsorted frame on the built-in hall.
 enum class BvhLayout { Binary, Wide };
 
 const std::vector<KeyStrategy>& allKeyStrategies();
