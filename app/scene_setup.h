@@ -3,6 +3,7 @@
 #pragma once
 
 #include "app/cli_options.h"
+#include "app/command_errors.h"  // the exit codes its callers return
 #include "renderer/vk/vk_context.h"
 #include "scenes/scene.h"
 
@@ -17,8 +18,5 @@ struct LoadedScene {
 LoadedScene loadSceneForSettings(const Settings& settings);
 const Viewpoint& resolveViewpoint(const Scene& scene, const std::string& name);
 ContextOptions contextOptionsFor(const CommonOptions& options);
-
-// Exit codes shared by every mode.
-enum ExitCode : int { kExitOk = 0, kExitFailure = 1, kExitUsage = 2, kExitBadScene = 3, kExitValidation = 4 };
 
 }  // namespace raylab

@@ -148,8 +148,9 @@ bool Settings::requiresAccumulationReset(const Settings& p) const {
 
 bool Settings::requiresCacheReset(const Settings& p) const { return changedEffects(*this, p) & kEffectCache; }
 
-SettingsChange SettingsChange::between(const Settings& p, const Settings& n) {
-  unsigned effects = changedEffects(p, n);
+SettingsChange SettingsChange::between(const Settings& p, const Settings& n) { return fromEffects(changedEffects(p, n)); }
+
+SettingsChange SettingsChange::fromEffects(unsigned effects) {
   // The key parameters hold the grid and thresholds, and the length unit, which follows the path count.
   if (effects & (kEffectCache | kEffectReallocate)) effects |= kEffectKeyParameters;
   // What the auto sort policy measured holds for one view, image, key, sort, policy, kernel and tracer.

@@ -248,7 +248,8 @@ struct Settings {
 };
 
 // What going from one Settings to the next requires of the renderer. PathTracer computes it once per
-// change and passes it down, so no stage keeps a copy of the settings to diff against.
+// change and passes it down. KeyStage keeps the settings it was last given, for the one caller without a
+// change to pass (its configure(), which the GPU tests of keys call).
 struct SettingsChange {
   bool reallocate = false;         // the path count changed (size, samples per frame): new path buffers
   bool resetAccumulation = false;  // Settings::requiresAccumulationReset: the image starts again
@@ -258,6 +259,10 @@ struct SettingsChange {
                                    // image, key, sort, policy or kernel): measure again
 
   static SettingsChange between(const Settings& previous, const Settings& next);
+  // What the renderer must do for a change with these effects (the table's kEffect* bits, or-ed over the
+  // settings that differ), with what they imply: new caches or path buffers mean new key parameters, and
+  // any change at all voids the sort policy's measured costs.
+  static SettingsChange fromEffects(unsigned effects);
   // A camera move: the image starts again; the key grid moves only when it is clamped to the camera.
   static SettingsChange cameraMove(const Settings& settings);
   bool operator==(const SettingsChange&) const = default;
