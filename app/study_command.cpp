@@ -26,7 +26,7 @@ namespace {
 
 const char* kStudyHelp =
     "usage: raylab study SCENE[@VIEW] [--quick] [--out-dir DIR] [--sizes WxH,...] [--bounces N,...]\n"
-    "                    [--strategies a,b,...] [--device NAME] [--validate[=sync|gpu-av]] [--shard i/K]\n"
+    "                    [--strategies a,b,...] [--device NAME|N] [--validate[=sync|gpu-av]] [--shard i/K]\n"
     "       raylab study --merge DIR... [--out-dir OUT]\n"
     "Where sorting pays on one scene: one `raylab bench` sweep per image size (paths per frame from 131k to\n"
     "8.4M), 4 and 8 bounces, the strategies dead-last, fixed, two-point and average with the always and auto\n"
