@@ -11,8 +11,13 @@ trap 'rm -rf "$dir"' EXIT
 study=(temple@hall --sizes 32x16,64x32 --bounces 2 --strategies two-point)
 
 "$raylab" study "${study[@]}" --out-dir "$dir/whole" >"$dir/whole.log" 2>&1 || { cat "$dir/whole.log"; exit 1; }
+# Shard 1 picks its device by number, as the README's GNU parallel line does (where this machine has one
+# device: elsewhere device 0 need not be the default the other runs use).
+ndevices=$("$raylab" devices | grep -c '^[0-9]*: ' || true)
 for i in 0 1; do
-  "$raylab" study "${study[@]}" --shard $i/2 --out-dir "$dir/s$i" >"$dir/s$i.log" 2>&1 || { cat "$dir/s$i.log"; exit 1; }
+  device=""
+  [ $i -eq 1 ] && [ "$ndevices" -eq 1 ] && device="--device 0"
+  "$raylab" study "${study[@]}" --shard $i/2 $device --out-dir "$dir/s$i" >"$dir/s$i.log" 2>&1 || { cat "$dir/s$i.log"; exit 1; }
   grep -q "no report from one shard" "$dir/s$i.log" && grep -q "raylab study --merge DIR... --out-dir OUT" "$dir/s$i.log" ||
     { echo "FAIL: shard $i/2 did not say how to merge"; cat "$dir/s$i.log"; exit 1; }
   [ ! -e "$dir/s$i/report.html" ] || { echo "FAIL: shard $i/2 wrote a report"; exit 1; }
@@ -69,5 +74,6 @@ refuse "a missing shard" "shard 1/2 is missing" --merge "$dir/s0" --out-dir "$di
 refuse "a shard twice" "shard 0/2 is given twice" --merge "$dir/s0" "$dir/s0" --out-dir "$dir/m"
 refuse "a folder that is no study" "no study.json there" --merge "$dir/s0" "$dir/whole/size-32x16" --out-dir "$dir/m"
 refuse "a shard past K" "--shard expects i/K" "${study[@]}" --shard 2/2 --out-dir "$dir/m"
+refuse "a device number past the devices" "--device '$ndevices' is unknown" "${study[@]}" --device $ndevices --out-dir "$dir/m"
 [ ! -e "$dir/m" ] || { echo "FAIL: a refused merge wrote $dir/m"; exit 1; }
 echo "ok: study shards merged"
