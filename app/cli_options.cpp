@@ -68,7 +68,8 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
 
 std::string commonOptionsHelp() {
   return settingsHelp() +
-         "  --device NAME          Vulkan device whose name contains NAME\n"
+         "  --device NAME|N        Vulkan device whose name contains NAME, or number N (0-based) of\n"
+         "                         `raylab devices` (for GPUs of one name on one host)\n"
          "  --validate[=sync|gpu-av]  enable the Khronos validation layer: core and synchronization\n"
          "                         checks (sync, the default), or core and GPU-assisted checks of\n"
          "                         every buffer-device-address access (gpu-av; slow); exit 4 on an\n"

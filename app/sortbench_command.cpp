@@ -36,7 +36,7 @@ const char* kUsage =
     "  --sort S            bitonic|radix|both|onesweep|all (default both; onesweep: the decoupled look-back\n"
     "                      radix variant, only on GPUs with forward progress; all: the three)\n"
     "  --repeat R          timed runs per (sort, n), after 2 warm-up runs (default 10)\n"
-    "  --device NAME       substring of the Vulkan device name\n"
+    "  --device NAME|N     substring of the Vulkan device name, or its number in `raylab devices`\n"
     "  --validate[=sync|gpu-av]  enable the Khronos validation layer with synchronization (default)\n"
     "                      or GPU-assisted checks (exit 1 on any error)\n"
     "  --csv FILE          also write the results as CSV\n"

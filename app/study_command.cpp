@@ -1,50 +1,33 @@
 #include "app/study_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
 
 #include "app/bench_command.h"
+#include "app/bench_merge.h"
 #include "app/bench_sweep.h"
 #include "app/bench_charts_run.h"
 #include "app/cli_options.h"
 #include "app/command_errors.h"
 #include "app/scene_setup.h"
+#include "app/study_plan.h"
+#include "renderer/checked_write.h"
+#include "renderer/git_revision.h"
 #include "renderer/vk/vk_context.h"
 
 namespace raylab {
 namespace {
 
-// The standard study (issue 22): the path count from 1.3e5 to 8.4e6 (image sizes at 1 sample per frame), the
-// strategies that differ in kind (dead-last, fixed, two-point and a learned length), the policies, and the
-// baselines bench always measures (megakernel, the unsorted wavefront; split and fused). --quick keeps two
-// strategies, one bounce count and three sizes; a CPU device gets sizes it can do in minutes.
-struct StudyPreset {
-  std::vector<std::string> sizes;
-  std::string bounces, strategies, timedFrames, warmup;
-};
-
-StudyPreset presetFor(bool quick, bool cpu) {
-  if (cpu)
-    return quick ? StudyPreset{{"128x64", "256x128"}, "4", "two-point", "2", "1"}
-                 : StudyPreset{{"128x64", "256x128", "512x256"}, "4", "fixed,two-point", "3", "1"};
-  if (quick) return {{"512x256", "2048x1024", "4096x2048"}, "4", "fixed,two-point", "6", "3"};
-  return {{"512x256", "1024x512", "2048x1024", "4096x2048"}, "4,8", "dead-last,fixed,two-point,average", "8", "4"};
-}
-
-struct StudyOptions {
-  std::string target;  // SCENE[@VIEW]
-  std::string outDir = "study-out";
-  bool quick = false;
-  std::vector<std::string> sizes;   // --sizes: the preset's otherwise
-  std::string bounces, strategies;  // --bounces, --strategies: the preset's otherwise
-  std::string device;
-  std::vector<std::string> passOn;  // --validate flags, given to every bench run
-};
-
 const char* kStudyHelp =
     "usage: raylab study SCENE[@VIEW] [--quick] [--out-dir DIR] [--sizes WxH,...] [--bounces N,...]\n"
-    "                    [--strategies a,b,...] [--device NAME] [--validate[=sync|gpu-av]]\n"
+    "                    [--strategies a,b,...] [--device NAME|N] [--validate[=sync|gpu-av]] [--shard i/K]\n"
+    "       raylab study --merge DIR... [--out-dir OUT]\n"
     "Where sorting pays on one scene: one `raylab bench` sweep per image size (paths per frame from 131k to\n"
     "8.4M), 4 and 8 bounces, the strategies dead-last, fixed, two-point and average with the always and auto\n"
     "policies, the megakernel and the unsorted wavefront (split and fused) as baselines; then one HTML report\n"
@@ -52,7 +35,14 @@ const char* kStudyHelp =
     "4096x2048, 4 bounces, fixed and two-point. On a CPU device the sizes shrink to what it can do (the report\n"
     "says so). SCENE is any --scene value (temple, a .gltf path, ...). Each size's results stay in\n"
     "DIR/size-WxH/ (results.csv, results.jsonl): a size that is killed continues with\n"
-    "`raylab bench --resume DIR/size-WxH`.\n";
+    "`raylab bench --resume DIR/size-WxH`; DIR/study.json records the study.\n"
+    "  --shard i/K         run only the study's cells g (0-based: the sizes in order, each size's bench cells\n"
+    "                      in plan order) with g mod K = i, 0 <= i < K: one of K disjoint parts, for K GPUs\n"
+    "                      or hosts (every shard with the same flags but --out-dir and --device); writes the\n"
+    "                      results but no report\n"
+    "  --merge DIR...      put the K shard folders of one study back together in OUT (default study-out):\n"
+    "                      each size with `raylab bench --merge`, then the report; refuses folders of other\n"
+    "                      studies, a shard missing or given twice (exit 2)\n";
 
 StudyOptions parseStudyOptions(const std::vector<std::string>& args) {
   StudyOptions o;
@@ -68,6 +58,7 @@ StudyOptions parseStudyOptions(const std::vector<std::string>& args) {
     else if (a == "--bounces") o.bounces = value();
     else if (a == "--strategies") o.strategies = value();
     else if (a == "--device") o.device = value();
+    else if (a == "--shard") o.shard = parseShard(value());
     else if (a == "--validate" || a.rfind("--validate=", 0) == 0) o.passOn.push_back(a);
     else if (a.rfind("--", 0) == 0) throw UsageError("unknown option '" + a + "'");
     else if (o.target.empty()) o.target = a;
@@ -91,23 +82,38 @@ uint64_t pathsOf(const std::string& size) {
   return uint64_t(s.width) * s.height * s.sppPerFrame;
 }
 
-// One bench sweep of the study at one image size.
-std::vector<std::string> benchArgs(const StudyOptions& o, const StudyPreset& p, const std::string& size) {
-  std::vector<std::string> a{"--cases", o.target, "--size", size, "--bounces", o.bounces.empty() ? p.bounces : o.bounces,
-                             "--strategies", o.strategies.empty() ? p.strategies : o.strategies,
-                             "--sort-policies", "always,auto", "--trace-shades", "split,fused",
-                             "--timed-frames", p.timedFrames, "--warmup", p.warmup, "--reference-spp", "16",
-                             "--no-charts",  // the report draws its own
-                             "--out-dir", o.outDir + "/size-" + size};
-  if (!o.device.empty()) a.insert(a.end(), {"--device", o.device});
-  a.insert(a.end(), o.passOn.begin(), o.passOn.end());
-  return a;
+// DIR/study.json: what `raylab study --merge` needs of a study folder (its sizes, the report's note, which
+// shard it is); the cells themselves are in each size's sweep.json.
+struct StudyRecord {
+  std::string target, note, gitRevision;
+  std::vector<std::string> sizes;
+  BenchShard shard;
+};
+
+void writeStudyRecord(const std::string& dir, const StudyRecord& r) {
+  const nlohmann::json j = {{"target", r.target}, {"sizes", r.sizes}, {"note", r.note},
+                            {"git_revision", r.gitRevision}, {"shard", r.shard.text()}};
+  writeFileChecked(dir + "/study.json", j.dump(1) + "\n");
+}
+
+StudyRecord readStudyRecord(const std::string& dir) {
+  std::ifstream in(dir + "/study.json");
+  if (!in) throw UsageError(dir + ": no study.json there (not a raylab study folder)");
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    return {j.at("target").get<std::string>(), j.at("note").get<std::string>(), j.at("git_revision").get<std::string>(),
+            j.at("sizes").get<std::vector<std::string>>(), parseShard(j.at("shard").get<std::string>())};
+  } catch (const UsageError& e) {
+    throw UsageError(dir + ": study.json is damaged (" + e.what() + ")");
+  } catch (const nlohmann::json::exception& e) {
+    throw UsageError(dir + ": study.json is damaged (" + e.what() + ")");
+  }
 }
 
 // The report from every size's folder; a missing Python or matplotlib leaves the results and says how to
 // make the report elsewhere.
-int makeReport(const StudyOptions& o, const std::vector<std::string>& folders, const std::string& note) {
-  const std::string out = o.outDir + "/report.html";
+int makeReport(const std::string& outDir, const std::vector<std::string>& folders, const std::string& note) {
+  const std::string out = outDir + "/report.html";
   std::vector<std::string> args;
   if (!note.empty()) args = {"--note", note};
   args.push_back(out);
@@ -121,13 +127,84 @@ int makeReport(const StudyOptions& o, const std::vector<std::string>& folders, c
       return kExitOk;
     case ChartsOutcome::Kind::Unavailable:
       std::fprintf(stderr, "raylab study: no report: %s; the results are in %s; make it where matplotlib is with:\n  %s\n",
-                   report.why.c_str(), o.outDir.c_str(), command.c_str());
+                   report.why.c_str(), outDir.c_str(), command.c_str());
       return kExitOk;
     case ChartsOutcome::Kind::Failed:
       break;
   }
-  std::fprintf(stderr, "raylab study: the report failed: %s; the results are in %s\n", report.why.c_str(), o.outDir.c_str());
+  std::fprintf(stderr, "raylab study: the report failed: %s; the results are in %s\n", report.why.c_str(), outDir.c_str());
   return kExitFailure;
+}
+
+// `raylab study --merge DIR... [--out-dir OUT]`: the study-level checks first (one study, every shard once),
+// then each size's shards through `raylab bench --merge` (which refuses other sweeps, revisions and unfinished
+// shards), then the report.
+int runStudyMerge(const std::vector<std::string>& args) {
+  std::vector<std::string> dirs;
+  std::string outDir = "study-out";
+  std::vector<StudyRecord> records;
+  try {
+    for (size_t i = 0; i < args.size(); ++i) {
+      if (args[i] == "--merge") {
+        while (i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) dirs.push_back(args[++i]);
+      } else if (args[i] == "--out-dir") {
+        if (i + 1 >= args.size() || args[i + 1].empty()) throw UsageError("--out-dir needs a folder");
+        outDir = args[++i];
+      } else {
+        throw UsageError("--merge takes shard folders and --out-dir only, not '" + args[i] +
+                         "' (the study is the one the folders recorded)");
+      }
+    }
+    if (dirs.empty()) throw UsageError("--merge needs the shard folders of a study (e.g. --merge s0 s1 s2)");
+    std::error_code ec;
+    for (const std::string& d : dirs)
+      if (std::filesystem::equivalent(d, outDir, ec))
+        throw UsageError("--merge: --out-dir " + outDir + " is one of the shard folders; name a new folder");
+    std::map<uint32_t, std::string> byIndex;
+    for (const std::string& d : dirs) {
+      records.push_back(readStudyRecord(d));
+      const StudyRecord &r = records.back(), &first = records.front();
+      if (r.target != first.target || r.sizes != first.sizes || r.note != first.note)
+        throw UsageError(d + " holds a different study from " + dirs.front() + " (their study.json differ)");
+      if (r.shard.count != first.shard.count)
+        throw UsageError(d + " is shard " + r.shard.text() + " and " + dirs.front() + " shard " + first.shard.text() +
+                         ": shards of one split have one K");
+      if (!byIndex.emplace(r.shard.index, d).second)
+        throw UsageError("shard " + r.shard.text() + " is given twice (" + byIndex[r.shard.index] + " and " + d + ")");
+    }
+    for (uint32_t i = 0; i < records.front().shard.count; ++i)
+      if (!byIndex.count(i))
+        throw UsageError("shard " + std::to_string(i) + "/" + std::to_string(records.front().shard.count) +
+                         " is missing: merge all " + std::to_string(records.front().shard.count) + " shards of the study");
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "raylab study: --merge: %s\n", e.what());
+    return kExitUsage;
+  }
+  const StudyRecord& study = records.front();
+  std::vector<std::string> folders;
+  for (const std::string& size : study.sizes) {
+    std::vector<std::string> merge{"--merge"};
+    for (const std::string& d : dirs) merge.push_back(d + "/size-" + size);
+    const std::string folder = outDir + "/size-" + size;
+    merge.insert(merge.end(), {"--out-dir", folder, "--no-charts"});
+    if (const int rc = runBenchMerge(merge); rc != kExitOk) {
+      std::fprintf(stderr, "raylab study: --merge: size %s did not merge (exit %d)%s\n", size.c_str(), rc,
+                   folders.empty() ? "" : "; the sizes before it are merged in the out folder");
+      return rc;
+    }
+    folders.push_back(folder);
+  }
+  try {
+    StudyRecord whole = study;
+    whole.shard = BenchShard{};
+    writeStudyRecord(outDir, whole);
+  } catch (const WriteError& e) {
+    std::fprintf(stderr, "raylab study: --merge: %s\n", e.what());
+    return kExitFailure;
+  }
+  std::printf("study: merged %zu shards of %zu sizes into %s\n", dirs.size(), study.sizes.size(), outDir.c_str());
+  std::fflush(stdout);
+  return makeReport(outDir, folders, study.note);
 }
 
 }  // namespace
@@ -137,43 +214,69 @@ int runStudyCommand(const std::vector<std::string>& args) {
     std::printf("%s", kStudyHelp);
     return kExitOk;
   }
+  if (std::find(args.begin(), args.end(), "--merge") != args.end()) return runStudyMerge(args);
   StudyOptions o;
+  std::vector<StudySize> plan;
+  bool cpu = false;
+  std::string note;
   try {
     o = parseStudyOptions(args);
+    cpu = isCpuDevice(o);
+    const StudyPreset preset = studyPreset(o.quick, cpu);
+    plan = studyPlan(o, preset);
+    if (cpu && o.sizes.empty())
+      note = "Measured on a CPU device: the sizes are ones it renders in minutes (up to " + plan.back().size +
+             "), far below where sorting pays on a GPU.";
   } catch (const UsageError& e) {
     std::fprintf(stderr, "raylab study: %s\n\n%s", e.what(), kStudyHelp);
     return kExitUsage;
   }
-  const bool cpu = isCpuDevice(o);
-  const StudyPreset preset = presetFor(o.quick, cpu);
-  const std::vector<std::string> sizes = o.sizes.empty() ? preset.sizes : o.sizes;
-  const std::string note = cpu && o.sizes.empty()
-                               ? "Measured on a CPU device: the sizes are ones it renders in minutes (up to " +
-                                     sizes.back() + "), far below where sorting pays on a GPU."
-                               : "";
   if (!note.empty()) std::fprintf(stderr, "raylab study: %s\n", note.c_str());
-  std::filesystem::create_directories(o.outDir);
+  std::vector<std::string> sizes;
+  for (const StudySize& s : plan) sizes.push_back(s.size);
+  try {
+    std::filesystem::create_directories(o.outDir);
+    writeStudyRecord(o.outDir, StudyRecord{o.target, note, gitRevision(), sizes, o.shard});
+  } catch (const WriteError& e) {
+    std::fprintf(stderr, "raylab study: %s\n", e.what());
+    return kExitFailure;
+  }
 
-  uint64_t totalPaths = 0, donePaths = 0;
-  for (const std::string& size : sizes) totalPaths += pathsOf(size);
+  // A size's time grows with its paths and its cells: what is left, at the rate measured so far.
+  uint64_t totalWork = 0, doneWork = 0;
+  size_t studyCells = 0, shardCells = 0;
+  for (const StudySize& s : plan) {
+    totalWork += pathsOf(s.size) * s.shardCells();
+    studyCells += s.cells;
+    shardCells += s.shardCells();
+  }
+  if (!o.shard.whole())
+    std::fprintf(stderr, "raylab study: shard %s: %zu of the study's %zu cells\n", o.shard.text().c_str(), shardCells,
+                 studyCells);
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::string> folders;
-  for (size_t i = 0; i < sizes.size(); ++i) {
-    // A size's time grows with its paths: what is left, at the rate measured so far.
+  for (size_t i = 0; i < plan.size(); ++i) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::string left = donePaths ? " about " + std::to_string(int(elapsed / donePaths * (totalPaths - donePaths))) + " s left" : "";
-    std::fprintf(stderr, "raylab study: size %s (%zu of %zu, %zu done), %.0f s so far,%s\n", sizes[i].c_str(), i + 1,
-                 sizes.size(), i, elapsed, left.empty() ? " time left unknown yet" : left.c_str());
-    const int rc = runBenchCommand(benchArgs(o, preset, sizes[i]));
+    const std::string left = doneWork ? " about " + std::to_string(int(elapsed / doneWork * (totalWork - doneWork))) + " s left" : "";
+    std::fprintf(stderr, "raylab study: size %s (%zu of %zu, %zu done), %.0f s so far,%s\n", plan[i].size.c_str(), i + 1,
+                 plan.size(), i, elapsed, left.empty() ? " time left unknown yet" : left.c_str());
+    const int rc = runBenchCommand(plan[i].benchArgs);
     if (rc != kExitOk) {
-      std::fprintf(stderr, "raylab study: the bench of size %s exited %d; the sizes done so far are in %s\n", sizes[i].c_str(),
-                   rc, o.outDir.c_str());
+      std::fprintf(stderr, "raylab study: the bench of size %s exited %d; the sizes done so far are in %s\n",
+                   plan[i].size.c_str(), rc, o.outDir.c_str());
       return rc;
     }
-    folders.push_back(o.outDir + "/size-" + sizes[i]);
-    donePaths += pathsOf(sizes[i]);
+    folders.push_back(plan[i].folder);
+    doneWork += pathsOf(plan[i].size) * plan[i].shardCells();
   }
-  return makeReport(o, folders, note);
+  if (!o.shard.whole()) {
+    std::printf("study: shard %s done, results in %s; no report from one shard: once all %u shards are done,\n"
+                "  raylab study --merge DIR... --out-dir OUT\n"
+                "with DIR... the %u shards' --out-dir folders (this one is %s) makes OUT and its report\n",
+                o.shard.text().c_str(), o.outDir.c_str(), o.shard.count, o.shard.count, o.outDir.c_str());
+    return kExitOk;
+  }
+  return makeReport(o.outDir, folders, note);
 }
 
 }  // namespace raylab

@@ -70,13 +70,19 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
   if (devices.empty()) throw VulkanError("no Vulkan device found (apt-get install mesa-vulkan-drivers for lavapipe)");
   int bestRank = 1 << 30;
   std::string names;
-  for (VkPhysicalDevice d : devices) {
+  // Digits only: the device of that number in `raylab devices` (0-based), for GPUs of one name on one host.
+  const std::string& wanted = options.deviceName;
+  const bool byNumber = !wanted.empty() && wanted.size() <= 9 && wanted.find_first_not_of("0123456789") == std::string::npos;
+  for (size_t n = 0; n < devices.size(); ++n) {
+    VkPhysicalDevice d = devices[n];
     VkPhysicalDeviceProperties p;
     vkGetPhysicalDeviceProperties(d, &p);
-    names += std::string(names.empty() ? "" : ", ") + p.deviceName;
+    names += std::string(names.empty() ? "" : ", ") + std::to_string(n) + ": " + p.deviceName;
     if (p.apiVersion < VK_API_VERSION_1_2) continue;
-    if (!options.deviceName.empty()) {
-      if (lower(p.deviceName).find(lower(options.deviceName)) != std::string::npos && !physical_) physical_ = d;
+    if (byNumber) {
+      if (std::stoul(wanted) == n) physical_ = d;
+    } else if (!wanted.empty()) {
+      if (lower(p.deviceName).find(lower(wanted)) != std::string::npos && !physical_) physical_ = d;
     } else if (deviceRank(p.deviceType) < bestRank) {
       bestRank = deviceRank(p.deviceType);
       physical_ = d;
@@ -295,6 +301,7 @@ std::vector<std::string> VulkanContext::describeDevices() {
   VK_CHECK(vkCreateInstance(&info, nullptr, &instance));
   std::vector<std::string> lines;
   for (VkPhysicalDevice d : enumerateDevices(instance)) {
+    const size_t number = lines.size();  // what --device N picks
     VkPhysicalDeviceProperties p;
     vkGetPhysicalDeviceProperties(d, &p);
     uint32_t count = 0;
@@ -310,7 +317,7 @@ std::vector<std::string> VulkanContext::describeDevices() {
       }
       return missing.empty() ? std::string("yes") : "no (lacks " + missing + ")";
     };
-    lines.push_back(std::string(p.deviceName) + "\n  rt tracer: " +
+    lines.push_back(std::to_string(number) + ": " + p.deviceName + "\n  rt tracer: " +
                     lacking({VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
                              VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME}) +
                     "\n  SER: " + lacking({VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME}));

@@ -17,7 +17,8 @@ namespace raylab {
 struct ContextOptions {
   // VK_LAYER_KHRONOS_validation with synchronization or GPU-assisted validation, its messages counted.
   ValidationMode validation = ValidationMode::Off;
-  std::string deviceName;          // substring of the device name to pick; empty: discrete GPU, else any
+  std::string deviceName;          // substring of the device name to pick, or digits: the Nth device of
+                                   // `raylab devices` (0-based); empty: discrete GPU, else any
   std::vector<const char*> instanceExtensions;  // e.g. from glfwGetRequiredInstanceExtensions
   std::vector<const char*> deviceExtensions;    // e.g. VK_KHR_swapchain
   bool quiet = false;              // do not print the chosen device

@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# A study spread over shards (issue 22): `raylab study ... --shard i/K` runs the study cells g with
+# g mod K = i (each size's bench told its part) and writes no report; `raylab study --merge DIR...` merges
+# each size with bench's merge and makes the report. With K = 2 the merged cell set and every non-timing
+# column (but those that differ between two unsharded runs too) equal the unsharded study's. Refused with
+# exit 2: a shard missing, one given twice, a folder that is no study. Kept tiny as study_command.sh is.
+set -eu
+raylab="$1"
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+study=(temple@hall --sizes 32x16,64x32 --bounces 2 --strategies two-point)
+
+"$raylab" study "${study[@]}" --out-dir "$dir/whole" >"$dir/whole.log" 2>&1 || { cat "$dir/whole.log"; exit 1; }
+# Shard 1 picks its device by number, as the README's GNU parallel line does (where this machine has one
+# device: elsewhere device 0 need not be the default the other runs use).
+ndevices=$("$raylab" devices | grep -c '^[0-9]*: ' || true)
+for i in 0 1; do
+  device=""
+  [ $i -eq 1 ] && [ "$ndevices" -eq 1 ] && device="--device 0"
+  "$raylab" study "${study[@]}" --shard $i/2 $device --out-dir "$dir/s$i" >"$dir/s$i.log" 2>&1 || { cat "$dir/s$i.log"; exit 1; }
+  grep -q "no report from one shard" "$dir/s$i.log" && grep -q "raylab study --merge DIR... --out-dir OUT" "$dir/s$i.log" ||
+    { echo "FAIL: shard $i/2 did not say how to merge"; cat "$dir/s$i.log"; exit 1; }
+  [ ! -e "$dir/s$i/report.html" ] || { echo "FAIL: shard $i/2 wrote a report"; exit 1; }
+done
+"$raylab" study --merge "$dir/s1" "$dir/s0" --out-dir "$dir/merged" >"$dir/merge.log" 2>&1 || { cat "$dir/merge.log"; exit 1; }
+grep -q "study: merged 2 shards of 2 sizes" "$dir/merge.log" || { cat "$dir/merge.log"; exit 1; }
+python3 - "$dir" <<'PY'
+import csv, json, sys
+top = sys.argv[1]
+# Timing columns, and the ones that differ between two unsharded runs of this study too (checked on
+# lavapipe): the coherence figures (the study compacts paths, and the order compaction's atomics leave
+# differs run to run on a multi-threaded device) and the auto policy's decisions and what follows from them
+# (it decides from measured stage times). bench_shards.sh checks those equal too, with --compaction none
+# and no auto policy.
+RUN_DEPENDENT = {'simt_efficiency', 'virtual_warp_efficiency', 'virtual_warp_efficiency_after_first', 'sorted_after',
+                 'prediction_error_mean', 'prediction_error_median', 'cell_hit_rate'}
+def timing(c):
+    return c.endswith('_ms') or c.startswith('frame_ms') or c == 'rays_per_second' or c in RUN_DEPENDENT
+total = 0
+for size in ('32x16', '64x32'):
+    a = list(csv.DictReader(open('%s/whole/size-%s/results.csv' % (top, size))))
+    b = list(csv.DictReader(open('%s/merged/size-%s/results.csv' % (top, size))))
+    assert len(a) == len(b) > 0, (size, len(a), len(b))
+    for x, y in zip(a, b):
+        diff = {c: (x[c], y[c]) for c in x if not timing(c) and x[c] != y[c]}
+        assert not diff, (size, x['label'], diff)
+    cells = [json.loads(l)['cell'] for l in open('%s/merged/size-%s/results.jsonl' % (top, size))]
+    assert cells == list(range(len(a))), cells
+    own = [sorted(json.loads(l)['cell'] for l in open('%s/s%d/size-%s/results.jsonl' % (top, i, size))) for i in (0, 1)]
+    assert sorted(own[0] + own[1]) == cells, own
+    # The study's cell g (the sizes in order) is in shard g mod 2.
+    for i in (0, 1):
+        assert all((total + n) % 2 == i for n in own[i]), (size, i, total, own[i])
+    total += len(a)
+print('ok: K=2 merged, %d cells, non-timing columns equal the unsharded study' % total)
+PY
+if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
+  grep -q "temple@hall, 2 bounces</b>: sorting" "$dir/merged/report.html" || { echo "FAIL: no verdict in the merged report"; exit 1; }
+else
+  grep -q "no report: matplotlib is missing" "$dir/merge.log" || { echo "FAIL: a missing matplotlib went unsaid"; exit 1; }
+fi
+
+refuse() {  # refuse WHAT EXPECTED-TEXT ARGS...
+  local what=$1 text=$2
+  shift 2
+  set +e
+  "$raylab" study "$@" >"$dir/refused.log" 2>&1
+  local rc=$?
+  set -e
+  [ $rc -eq 2 ] && grep -q -- "$text" "$dir/refused.log" || { echo "FAIL: $what: exit $rc"; cat "$dir/refused.log"; exit 1; }
+  echo "ok: refused $what"
+}
+refuse "a missing shard" "shard 1/2 is missing" --merge "$dir/s0" --out-dir "$dir/m"
+refuse "a shard twice" "shard 0/2 is given twice" --merge "$dir/s0" "$dir/s0" --out-dir "$dir/m"
+refuse "a folder that is no study" "no study.json there" --merge "$dir/s0" "$dir/whole/size-32x16" --out-dir "$dir/m"
+refuse "a shard past K" "--shard expects i/K" "${study[@]}" --shard 2/2 --out-dir "$dir/m"
+refuse "a device number past the devices" "--device '$ndevices' is unknown" "${study[@]}" --device $ndevices --out-dir "$dir/m"
+[ ! -e "$dir/m" ] || { echo "FAIL: a refused merge wrote $dir/m"; exit 1; }
+echo "ok: study shards merged"
