@@ -124,42 +124,38 @@ void PathTracer::recordShade(VkCommandBuffer cmd, const gpu::PathStagePush& push
   }
 }
 
-void PathTracer::buildBounceSteps(uint32_t b, gpu::PathStagePush& push, bool& gatherInTrace) {
-  const int bounce = static_cast<int>(b);
+PathTracer::BouncePlan PathTracer::planBounce(uint32_t b, bool gatherInTrace) const {
+  BouncePlan p;
   const bool sorting = settings_.sorts();
-  const bool sortedBefore = sorting && b > 0 && framePlan_.sortAfter[b - 1];
-  const bool sortAfter = sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b];
-  const bool keysInShade = sortAfter && settings_.fusesKeys();
-  const bool compacts = settings_.compacts() && !keysInShade && b + 1 < settings_.bounces;
+  p.sortedBefore = sorting && b > 0 && framePlan_.sortAfter[b - 1];
+  p.sortAfter = sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b];
+  p.keysInShade = p.sortAfter && settings_.fusesKeys();
+  p.compacts = settings_.compacts() && !p.keysInShade && b + 1 < settings_.bounces;
+  p.learns = p.sortedBefore && usesLengthCache(settings_.strategy);
   // One dispatch for trace and shade where nothing between them reads the hits: no reorder in this trace,
   // no keys in shade, no learning from sorted rays, no detailed statistics, no heatmap of this bounce.
-  const bool learns = sortedBefore && usesLengthCache(settings_.strategy);
-  if (settings_.fusesTraceShade() && !gatherInTrace && !keysInShade && !learns && !detailedStats_ &&
-      !heatmap_->readsAfterTrace(b)) {
+  p.traceShadeFused = settings_.fusesTraceShade() && !gatherInTrace && !p.keysInShade && !p.learns && !detailedStats_ &&
+                      !heatmap_->readsAfterTrace(b);
+  return p;
+}
+
+void PathTracer::buildBounceSteps(uint32_t b, gpu::PathStagePush& push, bool& gatherInTrace) {
+  const int bounce = static_cast<int>(b);
+  const BouncePlan plan = planBounce(b, gatherInTrace);
+  if (plan.traceShadeFused) {
     addStep("trace+shade", bounce, [this, push, b](VkCommandBuffer cmd) {
       recordStage(cmd, &timer_, "trace+shade", [&] { recordShade(cmd, push, b, true); });
     });
   } else {
-    addStep("trace", bounce, [this, push, gathers = gatherInTrace](VkCommandBuffer cmd) {
-      const uint32_t n = buffers_->pathCount;
-      recordStage(cmd, &timer_, "trace", [&] {
-        if (usesRt())
-          rt_->traceRays(cmd, push, n);  // every path; the shader skips those past the live count
-        else if (gathers)
-          gatheringTrace(settings_.countSimt).dispatchThreads(cmd, push, n);  // every slot: it finds the live count
-        else
-          (settings_.countSimt ? traceCounting_ : trace_)
-              .dispatchIndirect(cmd, push, buffers_->live.handle(), PathBuffers::kLiveDispatchOffset);
-      });
-    });
+    buildTraceStep(b, push, gatherInTrace);
     if (gatherInTrace) push.stateSet = 1u - push.stateSet, gatherInTrace = false;
     if (detailedStats_ && !usesRt())
       addStep("counters", bounce, [this, b](VkCommandBuffer cmd) { recordStepsReadback(cmd, b); });
     // Learning and the accuracy readbacks are for rays that were keyed and sorted: other bounces have no
     // prediction to learn from or measure.
-    if (sortedBefore && (learns || detailedStats_))
-      addStep("learn", bounce, [this, push, b, sortedBefore](VkCommandBuffer cmd) {
-        pathSorter_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, sortedBefore, detailedStats_, &timer_);
+    if (plan.sortedBefore && (plan.learns || detailedStats_))
+      addStep("learn", bounce, [this, push, b](VkCommandBuffer cmd) {
+        pathSorter_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, true, detailedStats_, &timer_);
       });
     if (heatmap_->readsAfterTrace(b))
       addStep("heatmap", bounce, [this, push, b](VkCommandBuffer cmd) {
@@ -169,12 +165,27 @@ void PathTracer::buildBounceSteps(uint32_t b, gpu::PathStagePush& push, bool& ga
       recordStage(cmd, &timer_, "shade", [&] { recordShade(cmd, push, b, false); });
     });
   }
-  if (compacts) push.stateSet = 1u - push.stateSet;
-  if (sortAfter) buildSortSteps(b, keysInShade, push, gatherInTrace);
+  if (plan.compacts) push.stateSet = 1u - push.stateSet;
+  if (plan.sortAfter) buildSortSteps(b, plan.keysInShade, push, gatherInTrace);
 }
 
-// Keys of the next rays, the sort of every live path, then the reorder unless the next trace does it. The
-// sort-rank heatmap reads the reordered set right after the sort: that bounce gathers on its own.
+// The trace of bounce b alone: the rt pipeline, the gathering trace (it does the last sort's reorder), or the
+// plain one over the live paths.
+void PathTracer::buildTraceStep(uint32_t b, const gpu::PathStagePush& push, bool gathers) {
+  addStep("trace", static_cast<int>(b), [this, push, gathers](VkCommandBuffer cmd) {
+    const uint32_t n = buffers_->pathCount;
+    recordStage(cmd, &timer_, "trace", [&] {
+      if (usesRt())
+        rt_->traceRays(cmd, push, n);  // every path; the shader skips those past the live count
+      else if (gathers)
+        gatheringTrace(settings_.countSimt).dispatchThreads(cmd, push, n);  // every slot: it finds the live count
+      else
+        (settings_.countSimt ? traceCounting_ : trace_)
+            .dispatchIndirect(cmd, push, buffers_->live.handle(), PathBuffers::kLiveDispatchOffset);
+    });
+  });
+}
+
 void PathTracer::buildSortSteps(uint32_t b, bool keysInShade, gpu::PathStagePush& push, bool& gatherInTrace) {
   const int bounce = static_cast<int>(b);
   const bool heatmap = heatmapShown(settings_) != HeatmapView::None;

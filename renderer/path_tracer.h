@@ -103,7 +103,19 @@ class PathTracer {
   void addStep(const char* name, int bounce, std::function<void(VkCommandBuffer)> record);
   void buildMegakernelSteps(const gpu::PathStagePush& push);
   void buildWavefrontSteps(gpu::PathStagePush push);
+  // What bounce b records, decided once from the settings, the frame's sort plan and whether the last
+  // sort's reorder is left to this bounce's trace.
+  struct BouncePlan {
+    bool sortedBefore = false;     // the rays traced now were keyed and sorted after the last bounce
+    bool sortAfter = false;        // keys and a sort follow this bounce's shade
+    bool keysInShade = false;      // shade writes the keys (Settings::fusesKeys)
+    bool compacts = false;         // shade packs the live paths into the other state set
+    bool learns = false;           // the length caches learn from this trace's hits
+    bool traceShadeFused = false;  // trace and shade in one dispatch
+  };
+  BouncePlan planBounce(uint32_t bounce, bool gatherInTrace) const;
   void buildBounceSteps(uint32_t bounce, gpu::PathStagePush& push, bool& gatherInTrace);
+  void buildTraceStep(uint32_t bounce, const gpu::PathStagePush& push, bool gathers);
   void buildSortSteps(uint32_t bounce, bool keysInShade, gpu::PathStagePush& push, bool& gatherInTrace);
   void recordShade(VkCommandBuffer cmd, const gpu::PathStagePush& push, uint32_t bounce, bool traceFirst);
   void buildEndSteps(const gpu::PathStagePush& push);

@@ -11,6 +11,7 @@
 
 #include "renderer/vk/compute_pipeline.h"
 #include "renderer/vk/gpu_buffer.h"
+#include "renderer/vk/validation_layer.h"
 #include "renderer/vk/vk_context.h"
 #include "shaders/sort_types.h"
 #include "tests/gpu_test.h"
@@ -123,6 +124,9 @@ TEST_F(ValidationChecks, GpuAssistedValidationReportsAnOutOfBoundsAddress) {
 TEST_F(ValidationChecks, GpuAssistedValidationReportsAMisalignedAddress) {
   if (validationMode() != ValidationMode::GpuAssisted)
     GTEST_SKIP() << "needs RAYLAB_VALIDATE=gpu-av (GPU-assisted validation)";
+  // Debian 12's layer checks addresses against buffer ranges only (its 256 submissions went unreported).
+  if (validationLayerVersion() <= VK_MAKE_API_VERSION(0, 1, 3, 239))
+    GTEST_SKIP() << "GPU-AV of layer 1.3.239 does not check the alignment of device-address accesses";
   ComputePipeline copy(ctx(), "sort_copy", sizeof(gpu::SortCopyPush));
   const uint32_t reported = plantedReports(ctx(), "misaligned read", [&] {
     GpuBuffer in(ctx(), 1024 * sizeof(uint32_t));
