@@ -16,7 +16,7 @@ constexpr unsigned kAccumulation = kEffectAccumulation, kCache = kEffectCache, k
 
 bool gaussianKeys(KeyStrategy s) { return strategyInfo(s).samplesGaussian; }
 bool fixedLengthKeys(KeyStrategy s) { return strategyInfo(s).readsFixedLength; }
-bool cacheKeys(KeyStrategy s) { return usesLengthCache(s); }
+bool cacheKeys(KeyStrategy s) { return strategyInfo(s).learnsLengths; }
 
 std::string shortNumber(float v) {
   char text[32];
