@@ -50,22 +50,13 @@ done
 "$raylab" bench --resume "$dir/merged2" >"$dir/resume.log" 2>&1 || { cat "$dir/resume.log"; exit 1; }
 grep -q "resuming $dir/merged2: $cells of $cells cells done" "$dir/resume.log" || { cat "$dir/resume.log"; exit 1; }
 
-refuse() {  # refuse WHAT EXPECTED-TEXT ARGS...
-  local what=$1 text=$2
-  shift 2
-  set +e
-  "$raylab" bench "$@" >"$dir/refused.log" 2>&1
-  local rc=$?
-  set -e
-  [ $rc -eq 2 ] && grep -q -- "$text" "$dir/refused.log" || { echo "FAIL: $what: exit $rc"; cat "$dir/refused.log"; exit 1; }
-  echo "ok: refused $what"
-}
-refuse "a missing shard" "shard 1/3 is missing" --merge "$dir/k3-0" "$dir/k3-2" --out-dir "$dir/m"
-refuse "a shard twice" "shard 0/2 is given twice" --merge "$dir/k2-0" "$dir/k2-0" --out-dir "$dir/m"
-refuse "shards of two splits" "shards of one split have one K" --merge "$dir/k2-0" "$dir/k3-1" --out-dir "$dir/m"
+. "$(dirname "$0")/../refuse.sh"
+refuse bench "a missing shard" "shard 1/3 is missing" --merge "$dir/k3-0" "$dir/k3-2" --out-dir "$dir/m"
+refuse bench "a shard twice" "shard 0/2 is given twice" --merge "$dir/k2-0" "$dir/k2-0" --out-dir "$dir/m"
+refuse bench "shards of two splits" "shards of one split have one K" --merge "$dir/k2-0" "$dir/k3-1" --out-dir "$dir/m"
 "$raylab" bench "${sweep[@]}" --strategies fixed --shard 1/2 --out-dir "$dir/other" >"$dir/other.log" 2>&1 ||
   { cat "$dir/other.log"; exit 1; }
-refuse "another sweep" "holds a different sweep" --merge "$dir/k2-0" "$dir/other" --out-dir "$dir/m"
+refuse bench "another sweep" "holds a different sweep" --merge "$dir/k2-0" "$dir/other" --out-dir "$dir/m"
 cp -r "$dir/k2-1" "$dir/oldrev"
 python3 - "$dir/oldrev/sweep.json" <<'PY'
 import json, sys
@@ -73,10 +64,10 @@ record = json.load(open(sys.argv[1]))
 record['git_revision'] = '0000000'
 json.dump(record, open(sys.argv[1], 'w'))
 PY
-refuse "another revision" "was measured at revision 0000000" --merge "$dir/k2-0" "$dir/oldrev" --out-dir "$dir/m"
+refuse bench "another revision" "was measured at revision 0000000" --merge "$dir/k2-0" "$dir/oldrev" --out-dir "$dir/m"
 head -n 1 "$dir/k2-1/results.jsonl" >"$dir/oldrev/results.jsonl"
 cp "$dir/k2-1/sweep.json" "$dir/oldrev/"
-refuse "an unfinished shard" "has 1 of its 5 cells: finish it first" --merge "$dir/k2-0" "$dir/oldrev" --out-dir "$dir/m"
+refuse bench "an unfinished shard" "has 1 of its 5 cells: finish it first" --merge "$dir/k2-0" "$dir/oldrev" --out-dir "$dir/m"
 [ ! -e "$dir/m" ] || { echo "FAIL: a refused merge wrote $dir/m"; exit 1; }
-refuse "a shard past K" "--shard expects i/K" "${sweep[@]}" --shard 3/3 --out-dir "$dir/m"
-refuse "a resume as another shard" "it holds shard 1/2 of its sweep, not 0/2" "${sweep[@]}" --shard 0/2 --resume "$dir/k2-1"
+refuse bench "a shard past K" "--shard expects i/K" "${sweep[@]}" --shard 3/3 --out-dir "$dir/m"
+refuse bench "a resume as another shard" "it holds shard 1/2 of its sweep, not 0/2" "${sweep[@]}" --shard 0/2 --resume "$dir/k2-1"

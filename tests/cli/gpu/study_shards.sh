@@ -60,20 +60,11 @@ else
   grep -q "no report: matplotlib is missing" "$dir/merge.log" || { echo "FAIL: a missing matplotlib went unsaid"; exit 1; }
 fi
 
-refuse() {  # refuse WHAT EXPECTED-TEXT ARGS...
-  local what=$1 text=$2
-  shift 2
-  set +e
-  "$raylab" study "$@" >"$dir/refused.log" 2>&1
-  local rc=$?
-  set -e
-  [ $rc -eq 2 ] && grep -q -- "$text" "$dir/refused.log" || { echo "FAIL: $what: exit $rc"; cat "$dir/refused.log"; exit 1; }
-  echo "ok: refused $what"
-}
-refuse "a missing shard" "shard 1/2 is missing" --merge "$dir/s0" --out-dir "$dir/m"
-refuse "a shard twice" "shard 0/2 is given twice" --merge "$dir/s0" "$dir/s0" --out-dir "$dir/m"
-refuse "a folder that is no study" "no study.json there" --merge "$dir/s0" "$dir/whole/size-32x16" --out-dir "$dir/m"
-refuse "a shard past K" "--shard expects i/K" "${study[@]}" --shard 2/2 --out-dir "$dir/m"
-refuse "a device number past the devices" "--device '$ndevices' is unknown" "${study[@]}" --device $ndevices --out-dir "$dir/m"
+. "$(dirname "$0")/../refuse.sh"
+refuse study "a missing shard" "shard 1/2 is missing" --merge "$dir/s0" --out-dir "$dir/m"
+refuse study "a shard twice" "shard 0/2 is given twice" --merge "$dir/s0" "$dir/s0" --out-dir "$dir/m"
+refuse study "a folder that is no study" "no study.json there" --merge "$dir/s0" "$dir/whole/size-32x16" --out-dir "$dir/m"
+refuse study "a shard past K" "--shard expects i/K" "${study[@]}" --shard 2/2 --out-dir "$dir/m"
+refuse study "a device number past the devices" "--device '$ndevices' is unknown" "${study[@]}" --device $ndevices --out-dir "$dir/m"
 [ ! -e "$dir/m" ] || { echo "FAIL: a refused merge wrote $dir/m"; exit 1; }
 echo "ok: study shards merged"
