@@ -52,21 +52,28 @@ import matplotlib.ticker  # noqa: E402
 
 from checked_write import write_with  # noqa: E402  (app/checked_write.py, beside this script)
 
-STAGES = ["generate", "trace", "learn", "shade", "keys", "oracle-trace", "sort", "reorder",
-          "accumulate", "tonemap", "megakernel", "setup", "counters", "trace+shade"]
+def stage_columns(header, measured):
+    """The stages a CSV header has a NAME_ms column for and some cell timed, in the header's order (that of
+    renderer/stages.h, which declares them: this script keeps no list of its own to fall behind; one such list
+    left the heatmap out)."""
+    return [c[:-len("_ms")] for c in header if c.endswith("_ms") and c[:-len("_ms")] in measured]
 
 
 def load(folder):
     with open(os.path.join(folder, "results.csv")) as f:
-        rows = list(csv.DictReader(f))
+        reader = csv.DictReader(f)
+        rows = list(reader)
+        header = reader.fieldnames or []
     curves = {}
+    measured = set()
     with open(os.path.join(folder, "results.jsonl")) as f:
         for line in f:
             j = json.loads(line)
+            measured.update(j["result"].get("stage_ms", {}).keys())
             st = j["settings"]
             key = (st["scene"], j["view"], j["label"], paths_group_of(st["width"], st["height"], st["spp_per_frame"]))
             curves[key] = (j["result"]["error_curve_ms"], j["result"]["error_curve_rel_mse"])
-    return rows, curves
+    return rows, curves, stage_columns(header, measured)
 
 
 def save(fig, path):
@@ -116,11 +123,11 @@ def num(row, key):
         return float("nan")
 
 
-def stacked_stages(rows, title, path):
+def stacked_stages(rows, stages, title, path):
     fig, ax = plt.subplots(figsize=(max(6, 0.6 * len(rows) + 2), 4.5))
     labels = [r["label"] for r in rows]
     bottom = [0.0] * len(rows)
-    for stage in STAGES:
+    for stage in stages:
         values = [num(r, stage + "_ms") for r in rows]
         if not any(v > 0 for v in values):
             continue
@@ -407,7 +414,7 @@ def main():
         print(__doc__)
         return 2
     folder = sys.argv[1]
-    rows, curves = load(folder)
+    rows, curves, stages = load(folder)
     if not rows:
         print(f"bench_charts.py: {folder}/results.csv has no cells: no charts", file=sys.stderr)
         return 0
@@ -420,7 +427,7 @@ def main():
     for name, case_rows in cases.items():
         title = (f'{name}, {case_rows[0]["width"]}x{case_rows[0]["height"]} at {case_rows[0]["spp_per_frame"]} spp, '
                  f'{case_rows[0]["device"]}')
-        stacked_stages(case_rows, title, os.path.join(folder, f"stages_{name}.png"))
+        stacked_stages(case_rows, stages, title, os.path.join(folder, f"stages_{name}.png"))
         if scale_sweep:
             continue
         speed_accuracy(case_rows, title, os.path.join(folder, f"speed_accuracy_{name}.png"))

@@ -93,6 +93,23 @@ if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
   for chart in crossover_triangles_hall.png crossover_bounces_hall.png stages_temple-detail-1e4-hall-b2.png; do
     [ -s "$dir/scale/$chart" ] || { echo "FAIL: bench_charts.py drew no $chart"; ls "$dir/scale"; exit 1; }
   done
+  # The stacked stages are the CSV's stage columns (renderer/stages.h's order) that some cell timed.
+  /usr/bin/python3 - "$source_dir/app" "$dir/scale" <<'PY'
+import json, sys
+sys.path.insert(0, sys.argv[1])
+folder = sys.argv[2]
+sys.argv = sys.argv[:1]
+import bench_charts
+rows, curves, stages = bench_charts.load(folder)
+timed = set()
+for line in open(folder + '/results.jsonl'):
+    timed.update(json.loads(line)['result']['stage_ms'])
+assert set(stages) == timed and len(stages) >= 3, (stages, timed)
+header = open(folder + '/results.csv').readline().strip().split(',')
+assert [h for h in header if h[:-3] in timed and h.endswith('_ms')] == [s + '_ms' for s in stages], (header, stages)
+assert bench_charts.stage_columns(['frame_ms_median', 'trace_ms', 'heatmap_ms', 'x'], {'heatmap', 'trace'}) == ['trace', 'heatmap']
+print('ok: stacked stages', stages)
+PY
 else
   echo "matplotlib missing: the crossover charts are not checked"
 fi
