@@ -11,8 +11,14 @@
 
 namespace raylab {
 
+// The shaders' view and key-colour ids are the enums' values, one for one (heatmap_types.h).
 static_assert(static_cast<uint32_t>(HeatmapView::SortKey) == RL_HEAT_SORT_KEY);
+static_assert(static_cast<uint32_t>(HeatmapView::CellHit) == RL_HEAT_CELL_HIT);
+static_assert(static_cast<uint32_t>(HeatmapView::TraversalSteps) == RL_HEAT_STEPS);
+static_assert(static_cast<uint32_t>(HeatmapView::WarpEfficiency) == RL_HEAT_WARP);
+static_assert(static_cast<uint32_t>(HeatmapView::CacheMean) == RL_HEAT_CACHE_MEAN);
 static_assert(static_cast<uint32_t>(HeatmapView::CacheVariance) == RL_HEAT_CACHE_VARIANCE);
+static_assert(static_cast<uint32_t>(HeatmapKeyColour::Cell) == RL_HEAT_KEY_CELL);
 static_assert(static_cast<uint32_t>(HeatmapKeyColour::Rank) == RL_HEAT_KEY_RANK);
 static_assert(static_cast<uint32_t>(HeatmapKeyColour::Hash) == RL_HEAT_KEY_HASH);
 static_assert(SettingLimits::kMaxGridCellsPerAxis <= (1u << RL_HEAT_CELL_BITS));

@@ -195,7 +195,6 @@ struct GpuScene {
   // walks: RL_BVH_BINARY or RL_BVH_WIDE, set per frame from Settings::bvh. A uniform branch in traceClosest
   // and occluded rather than a specialization constant: one pipeline per stage as before.
   RL_REF(BvhWideNodeBuf) wideNodes;
-  RL_ADDRESS widePad;  // unused (the wide tree has no leaf records: its leaves are triangle ranges of its nodes)
   uint bvhLayout;
   uint pad0;
   RL_ADDRESS tlas;            // top-level acceleration structure of the rt tracer (0 with the compute tracer)
