@@ -1,6 +1,7 @@
 #include "app/bench_sweep.h"
 
 #include "app/setting_flags.h"
+#include "renderer/reorder/key_strategies.h"
 #include "renderer/settings_table.h"
 #include "scenes/scene_library.h"
 #include "scenes/temple_detail.h"
@@ -307,7 +308,7 @@ void CaseCells::addSorted(const Settings& plain) {
       std::vector<Settings> variants{withFlag(st, "--sort", sort)};
       for (const SettingRow* r : axisRows(kExpandOrder)) {
         const std::vector<std::string>& values = axes.of(r->flag);
-        if (values.empty() || (r->axis.applies && !r->axis.applies(variants.front().strategy))) continue;
+        if (values.empty() || (r->axis.applies && !(strategyInfo(variants.front().strategy).*r->axis.applies))) continue;
         checkCellCount(plan.cells.size() + variants.size() * values.size());
         std::vector<Settings> next;
         for (const Settings& v : variants)

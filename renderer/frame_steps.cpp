@@ -8,24 +8,26 @@
 #include "renderer/heatmap_pass.h"
 #include "renderer/heatmap_rules.h"
 #include "renderer/reorder/key_functions.h"
+#include "renderer/reorder/key_strategies.h"
 #include "renderer/reorder/path_sorter.h"
 #include "renderer/rt_tracer.h"
 #include "renderer/vk/stage_timer.h"
 
 namespace raylab {
 
-const ComputePipeline& PathTracer::shadeVariant(bool compact, bool traceFirst) {
-  if (!compact && !traceFirst) return shade_;
-  std::optional<ComputePipeline>& p = shadeVariants_[compact ? 1 : 0][traceFirst ? 1 : 0];
+const ComputePipeline& PathTracer::shadeVariant(bool compact, bool fusesTraceShade) {
+  if (!compact && !fusesTraceShade) return shade_;
+  std::optional<ComputePipeline>& p = shadeVariants_[compact ? 1 : 0][fusesTraceShade ? 1 : 0];
   if (!p)
     p.emplace(ctx_, "shade", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE,
-              std::vector<uint32_t>{static_cast<uint32_t>(KeyStrategy::None), compact ? 1u : 0u, traceFirst ? 1u : 0u});
+              SpecConstants{{RL_SPEC_COMPACT, compact ? 1u : 0u}, {RL_SPEC_FUSES_TRACE_SHADE, fusesTraceShade ? 1u : 0u}});
   return *p;
 }
 
-const ComputePipeline& PathTracer::gatheringTrace(bool counting) {
-  std::optional<ComputePipeline>& p = gatheringTrace_[counting ? 1 : 0];
-  if (!p) p.emplace(ctx_, "trace", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, std::vector<uint32_t>{counting ? 1u : 0u, 1u});
+const ComputePipeline& PathTracer::traceFusingGather(bool counting) {
+  std::optional<ComputePipeline>& p = traceFusingGather_[counting ? 1 : 0];
+  if (!p) p.emplace(ctx_, "trace", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE,
+                    SpecConstants{{RL_SPEC_COUNT_SIMT, counting ? 1u : 0u}, {RL_SPEC_FUSES_GATHER, 1u}});
   return *p;
 }
 
@@ -92,20 +94,20 @@ void PathTracer::buildWavefrontSteps(gpu::PathStagePush push) {
   addStep("generate", -1, [this, push](VkCommandBuffer cmd) {
     recordStage(cmd, &timer_, "generate", [&] { generate_.dispatchThreads(cmd, push, buffers_->pathCount); });
   });
-  bool gatherInTrace = false;  // the last sort's reorder is left to this bounce's trace
+  bool fusesGather = false;  // the last sort's reorder is left to this bounce's trace
   for (uint32_t b = 0; b < settings_.bounces; ++b) {
     push.bounce = b;
-    buildBounceSteps(b, push, gatherInTrace);
+    buildBounceSteps(b, push, fusesGather);
   }
 }
 
-// shade.comp as bounce `bounce` needs it; `traceFirst`: it also does the trace (Settings::traceShade).
+// shade.comp as bounce `bounce` needs it; `fusesTraceShade`: it also does the trace (Settings::traceShade).
 // Settings::compaction: every shade but the last bounce's packs the live paths into the other state set and
 // its own block of GpuFrame::live, which becomes the live block (the copy is timed as part of "shade"), and
 // gives the slots it visited the dead key, so keys, sort and reorder after it see a live prefix with dead
 // keys behind it as after a sort. Not where shade makes the keys (Settings::fusion keys): a path's key would
 // have to go to its new slot, which another subgroup may be marking dead.
-void PathTracer::recordShade(VkCommandBuffer cmd, const gpu::PathStagePush& push, uint32_t bounce, bool traceFirst) {
+void PathTracer::recordShade(VkCommandBuffer cmd, const gpu::PathStagePush& push, uint32_t bounce, bool fusesTraceShade) {
   const bool sortAfter = settings_.sorts() && bounce + 1 < settings_.bounces && framePlan_.sortAfter[bounce];
   const bool keysInShade = sortAfter && settings_.fusesKeys();
   const bool compacts = settings_.compacts() && !keysInShade && bounce + 1 < settings_.bounces;
@@ -114,41 +116,41 @@ void PathTracer::recordShade(VkCommandBuffer cmd, const gpu::PathStagePush& push
   if (usesRt()) {
     rt_->shade(cmd, push, buffers_->pathCount);
   } else if (compacts) {
-    shadeVariant(true, traceFirst).dispatchIndirect(cmd, push, live, liveDispatch);
+    shadeVariant(true, fusesTraceShade).dispatchIndirect(cmd, push, live, liveDispatch);
     computeBarrier(cmd);
     const VkBufferCopy packed{PathBuffers::liveAppendOffset(bounce), 0, PathBuffers::kLiveBlockBytes};
     vkCmdCopyBuffer(cmd, live, live, 1, &packed);
   } else {
-    (keysInShade ? pathSorter_->shadeWithKeys() : shadeVariant(false, traceFirst))
+    (keysInShade ? pathSorter_->shadeWithKeys() : shadeVariant(false, fusesTraceShade))
         .dispatchIndirect(cmd, push, live, liveDispatch);
   }
 }
 
-PathTracer::BouncePlan PathTracer::planBounce(uint32_t b, bool gatherInTrace) const {
+PathTracer::BouncePlan PathTracer::planBounce(uint32_t b, bool fusesGather) const {
   BouncePlan p;
   const bool sorting = settings_.sorts();
   p.sortedBefore = sorting && b > 0 && framePlan_.sortAfter[b - 1];
   p.sortAfter = sorting && b + 1 < settings_.bounces && framePlan_.sortAfter[b];
   p.keysInShade = p.sortAfter && settings_.fusesKeys();
   p.compacts = settings_.compacts() && !p.keysInShade && b + 1 < settings_.bounces;
-  p.learns = p.sortedBefore && usesLengthCache(settings_.strategy);
+  p.learns = p.sortedBefore && strategyInfo(settings_.strategy).learnsLengths;
   // One dispatch for trace and shade where nothing between them reads the hits: no reorder in this trace,
   // no keys in shade, no learning from sorted rays, no detailed statistics, no heatmap of this bounce.
-  p.traceShadeFused = settings_.fusesTraceShade() && !gatherInTrace && !p.keysInShade && !p.learns && !detailedStats_ &&
+  p.fusesTraceShade = settings_.fusesTraceShade() && !fusesGather && !p.keysInShade && !p.learns && !detailedStats_ &&
                       !heatmap_->readsAfterTrace(b);
   return p;
 }
 
-void PathTracer::buildBounceSteps(uint32_t b, gpu::PathStagePush& push, bool& gatherInTrace) {
+void PathTracer::buildBounceSteps(uint32_t b, gpu::PathStagePush& push, bool& fusesGather) {
   const int bounce = static_cast<int>(b);
-  const BouncePlan plan = planBounce(b, gatherInTrace);
-  if (plan.traceShadeFused) {
+  const BouncePlan plan = planBounce(b, fusesGather);
+  if (plan.fusesTraceShade) {
     addStep("trace+shade", bounce, [this, push, b](VkCommandBuffer cmd) {
       recordStage(cmd, &timer_, "trace+shade", [&] { recordShade(cmd, push, b, true); });
     });
   } else {
-    buildTraceStep(b, push, gatherInTrace);
-    if (gatherInTrace) push.stateSet = 1u - push.stateSet, gatherInTrace = false;
+    buildTraceStep(b, push, fusesGather);
+    if (fusesGather) push.stateSet = 1u - push.stateSet, fusesGather = false;
     if (detailedStats_ && !usesRt())
       addStep("counters", bounce, [this, b](VkCommandBuffer cmd) { recordStepsReadback(cmd, b); });
     // Learning and the accuracy readbacks are for rays that were keyed and sorted: other bounces have no
@@ -166,7 +168,7 @@ void PathTracer::buildBounceSteps(uint32_t b, gpu::PathStagePush& push, bool& ga
     });
   }
   if (plan.compacts) push.stateSet = 1u - push.stateSet;
-  if (plan.sortAfter) buildSortSteps(b, plan.keysInShade, push, gatherInTrace);
+  if (plan.sortAfter) buildSortSteps(b, plan.keysInShade, push, fusesGather);
 }
 
 // The trace of bounce b alone: the rt pipeline, the gathering trace (it does the last sort's reorder), or the
@@ -178,7 +180,7 @@ void PathTracer::buildTraceStep(uint32_t b, const gpu::PathStagePush& push, bool
       if (usesRt())
         rt_->traceRays(cmd, push, n);  // every path; the shader skips those past the live count
       else if (gathers)
-        gatheringTrace(settings_.countSimt).dispatchThreads(cmd, push, n);  // every slot: it finds the live count
+        traceFusingGather(settings_.countSimt).dispatchThreads(cmd, push, n);  // every slot: it finds the live count
       else
         (settings_.countSimt ? traceCounting_ : trace_)
             .dispatchIndirect(cmd, push, buffers_->live.handle(), PathBuffers::kLiveDispatchOffset);
@@ -186,7 +188,7 @@ void PathTracer::buildTraceStep(uint32_t b, const gpu::PathStagePush& push, bool
   });
 }
 
-void PathTracer::buildSortSteps(uint32_t b, bool keysInShade, gpu::PathStagePush& push, bool& gatherInTrace) {
+void PathTracer::buildSortSteps(uint32_t b, bool keysInShade, gpu::PathStagePush& push, bool& fusesGather) {
   const int bounce = static_cast<int>(b);
   const bool heatmap = heatmapShown(settings_) != HeatmapView::None;
   addStep("keys", bounce, [this, push, b, keysInShade](VkCommandBuffer cmd) {
@@ -197,8 +199,8 @@ void PathTracer::buildSortSteps(uint32_t b, bool keysInShade, gpu::PathStagePush
       heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, &timer_);
     });
   addStep("sort", bounce, [this](VkCommandBuffer cmd) { pathSorter_->recordSort(cmd, *buffers_, buffers_->pathCount, &timer_); });
-  gatherInTrace = settings_.fusesGather() && !heatmap_->readsAfterSort(b);
-  if (gatherInTrace) return;
+  fusesGather = settings_.fusesGather() && !heatmap_->readsAfterSort(b);
+  if (fusesGather) return;
   addStep("reorder", bounce, [this, push](VkCommandBuffer cmd) {
     pathSorter_->recordGather(cmd, *buffers_, buffers_->pathCount, push.stateSet, &timer_);
   });

@@ -31,7 +31,7 @@ std::optional<std::string> heatmapUnavailable(const Settings& s, HeatmapView vie
     return name + " needs sorted bounces: sort policy never runs no key stage";
   if (view == HeatmapView::CellHit && !predictsLength(s.strategy))
     return name + ": strategy " + toString(s.strategy) + " estimates no ray length, so there is no estimated cell";
-  if ((view == HeatmapView::CacheMean || view == HeatmapView::CacheVariance) && !usesLengthCache(s.strategy))
+  if ((view == HeatmapView::CacheMean || view == HeatmapView::CacheVariance) && !strategyInfo(s.strategy).learnsLengths)
     return name + ": strategy " + toString(s.strategy) +
            " keeps no length cache (only average, ema and gaussian learn one)";
   if (heatmapBounceShown(s) == 0)

@@ -111,13 +111,13 @@ class PathTracer {
     bool keysInShade = false;      // shade writes the keys (Settings::fusesKeys)
     bool compacts = false;         // shade packs the live paths into the other state set
     bool learns = false;           // the length caches learn from this trace's hits
-    bool traceShadeFused = false;  // trace and shade in one dispatch
+    bool fusesTraceShade = false;  // trace and shade in one dispatch
   };
-  BouncePlan planBounce(uint32_t bounce, bool gatherInTrace) const;
-  void buildBounceSteps(uint32_t bounce, gpu::PathStagePush& push, bool& gatherInTrace);
+  BouncePlan planBounce(uint32_t bounce, bool fusesGather) const;
+  void buildBounceSteps(uint32_t bounce, gpu::PathStagePush& push, bool& fusesGather);
   void buildTraceStep(uint32_t bounce, const gpu::PathStagePush& push, bool gathers);
-  void buildSortSteps(uint32_t bounce, bool keysInShade, gpu::PathStagePush& push, bool& gatherInTrace);
-  void recordShade(VkCommandBuffer cmd, const gpu::PathStagePush& push, uint32_t bounce, bool traceFirst);
+  void buildSortSteps(uint32_t bounce, bool keysInShade, gpu::PathStagePush& push, bool& fusesGather);
+  void recordShade(VkCommandBuffer cmd, const gpu::PathStagePush& push, uint32_t bounce, bool fusesTraceShade);
   void buildEndSteps(const gpu::PathStagePush& push);
   void abandonFrame();
   void addStepStages(const std::vector<StageTime>& stages);
@@ -138,12 +138,12 @@ class PathTracer {
   ComputePipeline generate_, trace_, traceCounting_, shade_, accumulate_, tonemap_, megakernel_,
       megakernelCounting_;
   // trace.comp's gathering variants (Settings::fusesGather), plain and counting, built on first use.
-  std::optional<ComputePipeline> gatheringTrace_[2];
-  const ComputePipeline& gatheringTrace(bool counting);
+  std::optional<ComputePipeline> traceFusingGather_[2];
+  const ComputePipeline& traceFusingGather(bool counting);
   // shade.comp's variants that compact (Settings::compaction) and trace first (Settings::traceShade),
-  // indexed [compact][traceFirst] ([0][0] is shade_), built on first use.
+  // indexed [compact][fusesTraceShade] ([0][0] is shade_), built on first use.
   std::optional<ComputePipeline> shadeVariants_[2][2];
-  const ComputePipeline& shadeVariant(bool compact, bool traceFirst);
+  const ComputePipeline& shadeVariant(bool compact, bool fusesTraceShade);
   GpuTimer timer_;
   SortPolicyModel sortPolicy_;
   SortPlan framePlan_;  // which bounces the frame being recorded sorts after

@@ -41,7 +41,7 @@ void RtTracer::serMegakernel(VkCommandBuffer cmd, const gpu::RtSerPush& push, Ke
   auto it = ser_.find(hintStrategy);
   if (it == ser_.end())
     it = ser_.emplace(hintStrategy, RtPipeline(ctx_, "megakernel_ser", sizeof(gpu::RtSerPush),
-                                               {{2u, strategyId(hintStrategy)}}))
+                                               {{RL_SPEC_KEY_STRATEGY, strategyId(hintStrategy)}}))
              .first;
   it->second.traceRays(cmd, push, paths);
 }

@@ -14,10 +14,6 @@ using namespace setting_rows;
 using L = SettingLimits;
 constexpr unsigned kAccumulation = kEffectAccumulation, kCache = kEffectCache, kSortCosts = kEffectSortCosts;
 
-bool gaussianKeys(KeyStrategy s) { return strategyInfo(s).samplesGaussian; }
-bool fixedLengthKeys(KeyStrategy s) { return strategyInfo(s).readsFixedLength; }
-bool cacheKeys(KeyStrategy s) { return strategyInfo(s).learnsLengths; }
-
 std::string shortNumber(float v) {
   char text[32];
   std::snprintf(text, sizeof(text), "%g", v);
@@ -122,8 +118,8 @@ std::vector<SettingRow> keyRows() {
           .effects(kCache).help("F", "fixed length = F * largest extent (default {default}; Meister et al. 0.25)")
           .sample("0.25")
           .axis({"fixed-factors", "0.5,0.25  fixed-length factors to sweep (every strategy that reads the fixed length)",
-                 fixedLengthKeys,
-                 [](const Settings& s) { return fixedLengthKeys(s.strategy) ? " factor=" + shortNumber(s.fixedFactor) : ""; },
+                 &KeyStrategyInfo::readsFixedLength,
+                 [](const Settings& s) { return strategyInfo(s.strategy).readsFixedLength ? " factor=" + shortNumber(s.fixedFactor) : ""; },
                  {}, /*labelWhenSwept=*/true}),
       // Thresholds: new parameters on the GPU, but what the cache learned stays.
       RAYLAB_FIELD(emaAlpha, "ema-alpha").range(L::kMinEmaAlpha, L::kMaxEmaAlpha).json("ema_alpha")
@@ -133,13 +129,13 @@ std::vector<SettingRow> keyRows() {
       RAYLAB_FIELD(gaussReset, "gauss-reset").range(0, 3.0e38).infinity().json("gauss_reset")
           .effects(kEffectKeyParameters)
           .help("V", "reset a cell when its variance exceeds V (default {default}, 'inf' never)").sample("inf")
-          .axis({"gauss-resets", "20,inf     Gaussian reset thresholds to sweep", gaussianKeys,
-                 [](const Settings& s) { return gaussianKeys(s.strategy) ? " reset=" + shortNumber(s.gaussReset) : ""; }, {},
+          .axis({"gauss-resets", "20,inf     Gaussian reset thresholds to sweep", &KeyStrategyInfo::samplesGaussian,
+                 [](const Settings& s) { return strategyInfo(s.strategy).samplesGaussian ? " reset=" + shortNumber(s.gaussReset) : ""; }, {},
                  /*labelWhenSwept=*/true}),
       RAYLAB_FIELD(learnEvery, "learn-every").range(1, 64).json("learn_every", keepDefault).csv("learn_every")
           .effects(kSortCosts).help("N", "length caches learn from every N-th sorted ray, {range} (default {default})")
           .sample("4")
-          .axis({"learn-every-list", "1,4,16 learning strides of the length-cache strategies to sweep", cacheKeys,
+          .axis({"learn-every-list", "1,4,16 learning strides of the length-cache strategies to sweep", &KeyStrategyInfo::learnsLengths,
                  [](const Settings& s) {
                    return s.learnEvery == 1 ? std::string() : " learn=1/" + std::to_string(s.learnEvery);
                  }}),

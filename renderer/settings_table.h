@@ -24,6 +24,8 @@
 
 namespace raylab {
 
+struct KeyStrategyInfo;  // reorder/key_strategies.h
+
 // What a change of a setting asks of the renderer; SettingsChange::between ORs the effects of the rows that
 // differ (and a new cache or path count means new key parameters; any effect, new sort costs).
 enum SettingEffect : unsigned {
@@ -42,8 +44,8 @@ enum SettingEffect : unsigned {
 struct SettingAxis {
   const char* flag = nullptr;  // "learn-every-list"; null: the setting is no axis
   const char* help = nullptr;  // its line in `raylab bench --help`, after the flag
-  // Whether the axis applies to a sorted cell with this strategy (null: to every one).
-  bool (*applies)(KeyStrategy) = nullptr;
+  // The strategy fact (reorder/key_strategies.h) that makes the axis apply to a sorted cell (null: every cell).
+  bool KeyStrategyInfo::*applies = nullptr;
   // The cell label's part for this setting (" learn=1/4"); empty for none.
   std::string (*label)(const Settings&) = nullptr;
   std::vector<std::string> defaults;  // the values swept when the flag is not given (none: the base's)

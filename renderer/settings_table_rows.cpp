@@ -132,7 +132,7 @@ void readGrid(const json& j, Settings& s) {
 SettingRow gridRow() {
   SettingRow r = rowOf("grid", {"grid"}, {"grid", "grid_auto_cells"}, 1, L::kMaxGridCellsPerAxis, kEffectCache);
   r.hint = "auto|N|NXxNYxNZ", r.help = "key grid (default {default}, 64 cells on the largest axis)", r.sample = "4x5x6";
-  r.axis = {"grids", "auto,32x8x32      grid settings to sweep", [](KeyStrategy k) { return strategyInfo(k).usesGrid; },
+  r.axis = {"grids", "auto,32x8x32      grid settings to sweep", &KeyStrategyInfo::usesGrid,
             [](const Settings& s) { return strategyInfo(s.strategy).usesGrid ? " grid=" + gridText(s) : ""; }, {"auto"}};
   r.parseFn = [](const SettingRow&, Settings& s, const std::string& t) { parseGrid(s, t); };
   r.text = gridText;
@@ -159,7 +159,7 @@ SettingRow clampRow() {
                        L::kMaxClampDistance, kEffectCache);
   r.hint = "D", r.help = "clamp the key grid to camera +- D", r.sample = "7";
   r.axis = {"clamps", "off,50           camera clamp distances to sweep",
-            [](KeyStrategy k) { return strategyInfo(k).usesGrid; },
+            &KeyStrategyInfo::usesGrid,
             [](const Settings& s) {
               if (!strategyInfo(s.strategy).usesGrid) return std::string();
               return s.clampToCamera ? " clamp=" + std::to_string(int(s.clampDistance)) : std::string(" clamp=off");

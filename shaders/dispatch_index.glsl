@@ -5,13 +5,14 @@
 #ifndef RAYLAB_DISPATCH_INDEX_GLSL
 #define RAYLAB_DISPATCH_INDEX_GLSL
 
+#include "spec_ids.h"
 #include "dispatch_grid.h"
 
 #ifndef RL_RAY_TRACING_STAGE  // ray-generation shaders have gl_LaunchIDEXT instead
 // The work-group size is specialization constant 0 in every compute stage (ComputePipeline). Declared here
 // too (a repeated, equal declaration is allowed) because gl_WorkGroupSize before any declaration is (1, 1, 1)
 // to glslang: a stage that declared its size below this include got every index wrong.
-layout(local_size_x_id = 0) in;
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 
 uint flatInvocationIndex() {
   return (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;

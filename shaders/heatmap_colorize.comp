@@ -6,12 +6,13 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
+#include "spec_ids.h"
 #include "heatmap_types.h"
 #include "rng.glsl"
 #include "heatmap_colours.glsl"
 #include "dispatch_index.glsl"
 
-layout(local_size_x_id = 0) in;
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 layout(push_constant, scalar) uniform Push { HeatmapPush pc; };
 
 void main() {

@@ -5,11 +5,12 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
+#include "spec_ids.h"
 #include "hit_query_types.h"
 #include "bvh_traverse.glsl"
 #include "dispatch_index.glsl"
 
-layout(local_size_x_id = 0) in;
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 layout(push_constant, scalar) uniform Push { HitQueryPush pc; };
 
 void main() {

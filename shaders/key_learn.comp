@@ -21,14 +21,15 @@
 #extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_EXT_shader_subgroup_extended_types_int64 : require
+#include "spec_ids.h"
 #include "key_types.h"
 #include "rng.glsl"
 #include "keys.glsl"
 #include "path_state.glsl"
 #include "dispatch_index.glsl"
 
-layout(local_size_x_id = 0) in;
-layout(constant_id = 1) const uint kStrategy = RL_KEY_AVERAGE;
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
+layout(constant_id = RL_SPEC_KEY_STRATEGY) const uint kStrategy = RL_KEY_AVERAGE;
 layout(push_constant, scalar) uniform Push { KeyLearnPush pc; };
 
 // Adds a 64-bit two's-complement value to a (lo, hi) pair of buffer words with a software carry. A macro:

@@ -9,13 +9,14 @@
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#include "spec_ids.h"
 #include "key_types.h"
 #include "rng.glsl"
 #include "keys.glsl"
 #include "dispatch_index.glsl"
 
-layout(local_size_x_id = 0) in;
-layout(constant_id = 1) const uint kStrategy = RL_KEY_AVERAGE;
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
+layout(constant_id = RL_SPEC_KEY_STRATEGY) const uint kStrategy = RL_KEY_AVERAGE;
 layout(push_constant, scalar) uniform Push { KeyLearnPush pc; };
 
 float varianceOf(float count, float m2) { return count >= 2.0 ? m2 / (count - 1.0) : 0.0; }

@@ -5,6 +5,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
+#include "spec_ids.h"
 #include "key_types.h"
 #include "bvh_traverse.glsl"
 #include "rng.glsl"
@@ -12,7 +13,7 @@
 #include "path_state.glsl"
 #include "dispatch_index.glsl"
 
-layout(local_size_x_id = 0) in;
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 layout(push_constant, scalar) uniform Push { KeyPush pc; };
 
 void main() {

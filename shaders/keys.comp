@@ -5,14 +5,15 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
+#include "spec_ids.h"
 #include "key_types.h"
 #include "rng.glsl"
 #include "keys.glsl"
 #include "path_state.glsl"
 #include "dispatch_index.glsl"
 
-layout(local_size_x_id = 0) in;
-layout(constant_id = 1) const uint kStrategy = RL_KEY_FIXED;
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
+layout(constant_id = RL_SPEC_KEY_STRATEGY) const uint kStrategy = RL_KEY_FIXED;
 layout(push_constant, scalar) uniform Push { KeyPush pc; };
 
 void main() {

@@ -21,6 +21,7 @@
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#include "spec_ids.h"
 #include "shared_types.h"
 #include "key_types.h"
 #include "path_shading.glsl"
@@ -29,9 +30,9 @@
 #include "ray_counting.glsl"
 #include "dispatch_index.glsl"
 
-layout(constant_id = 1) const uint kKeyStrategy = RL_KEY_NONE;
-layout(constant_id = 2) const bool kCompact = false;
-layout(constant_id = 3) const bool kTraceFirst = false;
+layout(constant_id = RL_SPEC_KEY_STRATEGY) const uint kKeyStrategy = RL_KEY_NONE;
+layout(constant_id = RL_SPEC_COMPACT) const bool kCompact = false;
+layout(constant_id = RL_SPEC_FUSES_TRACE_SHADE) const bool kFusesTraceShade = false;
 
 // keys.comp's output for slot i: the key and the slot as the sort's payload; the predicted length.
 void storeKey(GpuFrame f, uint i, PathVars p, uint id, out float len) {
@@ -88,7 +89,7 @@ void main() {
   uint id;
   PathVars p = loadPath(s, i, id);
   HitRecord hit;
-  if (kTraceFirst) {
+  if (kFusesTraceShade) {
     hit = traceClosest(f.scene, p.origin, p.direction, 1e30);
     gCounters = f.counters;  // as trace.comp counts: one ray for each live lane
     gCounterBase = pc.bounce * RL_COUNTER_STRIDE;

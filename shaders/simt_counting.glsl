@@ -4,9 +4,10 @@
 #ifndef RAYLAB_SIMT_COUNTING_GLSL
 #define RAYLAB_SIMT_COUNTING_GLSL
 
+#include "spec_ids.h"
 #include "ray_counting.glsl"
 
-layout(constant_id = 1) const bool kCountSimt = false;
+layout(constant_id = RL_SPEC_COUNT_SIMT) const bool kCountSimt = false;
 #define RL_TRAVERSAL_STEP()                                                               \
   if (kCountSimt) {                                                                       \
     uint activeLanes = subgroupBallotBitCount(subgroupBallot(true));                      \

@@ -5,10 +5,11 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
+#include "spec_ids.h"
 #include "sort_types.h"
 #include "sort_bitonic.glsl"
 
-layout(local_size_x_id = 0) in;
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 layout(push_constant, scalar) uniform Push { SortBitonicPush pc; };
 
 const uint TILE = SORT_BITONIC_TILE;

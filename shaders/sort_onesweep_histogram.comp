@@ -7,9 +7,10 @@
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
+#include "spec_ids.h"
 #include "sort_types.h"
 
-layout(local_size_x_id = 0) in;
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 layout(push_constant, scalar) uniform Push { SortOneSweepPush pc; };
 
 const uint KPT = SORT_ONESWEEP_HIST_KPT;

@@ -13,11 +13,12 @@
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_memory_scope_semantics : require
+#include "spec_ids.h"
 #include "sort_types.h"
 
-layout(local_size_x_id = 0) in;
-layout(constant_id = 1) const uint SG_SIZE = 32;
-layout(constant_id = 2) const uint KPT = 15;
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
+layout(constant_id = RL_SPEC_SUBGROUP_SIZE) const uint SG_SIZE = 32;
+layout(constant_id = RL_SPEC_KEYS_PER_THREAD) const uint KPT = 15;
 layout(push_constant, scalar) uniform Push { SortOneSweepPush pc; };
 
 #include "sort_scan.glsl"

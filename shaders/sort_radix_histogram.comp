@@ -8,10 +8,11 @@
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
+#include "spec_ids.h"
 #include "sort_types.h"
 
-layout(local_size_x_id = 0) in;
-layout(constant_id = 1) const uint KPT = 15;  // keys per invocation
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
+layout(constant_id = RL_SPEC_KEYS_PER_THREAD) const uint KPT = 15;  // keys per invocation
 layout(push_constant, scalar) uniform Push { SortRadixPush pc; };
 
 shared uint sHist[SORT_RADIX];

@@ -7,9 +7,10 @@
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
+#include "spec_ids.h"
 #include "sort_types.h"
 
-layout(local_size_x_id = 0) in;
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 layout(push_constant, scalar) uniform Push { SortScanPush pc; };
 
 #include "sort_scan.glsl"

@@ -9,12 +9,13 @@
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_ballot : require
+#include "spec_ids.h"
 #include "sort_types.h"
 
-layout(local_size_x_id = 0) in;
+layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 // The device's subgroup size as the host sees it: sizes the per-subgroup histograms and the slices.
-layout(constant_id = 1) const uint SG_SIZE = 32;
-layout(constant_id = 2) const uint KPT = 15;  // keys per invocation
+layout(constant_id = RL_SPEC_SUBGROUP_SIZE) const uint SG_SIZE = 32;
+layout(constant_id = RL_SPEC_KEYS_PER_THREAD) const uint KPT = 15;  // keys per invocation
 layout(push_constant, scalar) uniform Push { SortRadixPush pc; };
 
 #include "sort_scan.glsl"

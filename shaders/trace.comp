@@ -8,6 +8,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
+#include "spec_ids.h"
 #include "shared_types.h"
 #include "simt_counting.glsl"
 #include "path_shading.glsl"
@@ -16,7 +17,7 @@
 #include "reorder_slot.glsl"
 #include "dispatch_index.glsl"
 
-layout(constant_id = 2) const bool kGatherFirst = false;
+layout(constant_id = RL_SPEC_FUSES_GATHER) const bool kFusesGather = false;
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
@@ -25,7 +26,7 @@ void main() {
   uint i = flatInvocationIndex();
   vec3 origin, direction;
   bool live;
-  if (kGatherFirst) {
+  if (kFusesGather) {
     // Dispatched over every slot (not the live count, which this dispatch rewrites).
     if (i >= f.pathCount) return;
     live = reorderSlot(f, pc.stateSet, i, origin, direction);

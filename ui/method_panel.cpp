@@ -97,7 +97,7 @@ void drawPipelineSection(Settings& s, ViewOptions& view) {
     ImGui::SetTooltip("shade packs the live paths at the front, so later stages visit only live paths (compute wavefront only)");
   if (s.compaction != Compaction::None && !s.compacts())
     ImGui::TextDisabled("compaction: only the compute wavefront compacts");
-  comboSetting("trace + shade", s, &Settings::traceShade, allValues<TraceShade>());
+  comboSetting("trace-shade", s, &Settings::traceShade, allValues<TraceShade>());
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("fused: one dispatch per bounce where nothing reads the hit in between (compute wavefront)");
   comboSetting("kernel", s, &Settings::kernel, allValues<Kernel>());

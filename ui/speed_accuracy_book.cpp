@@ -13,9 +13,6 @@ namespace {
 
 using Baseline = MethodKey::Baseline;
 
-// Strategies whose keys read the fixed length (as the estimate, the seed of a cache, or a miss's end point).
-bool readsFixedLength(KeyStrategy s) { return strategyInfo(s).readsFixedLength; }
-
 std::string number(const char* name, float v) {
   char text[48];
   if (std::isinf(v)) std::snprintf(text, sizeof(text), " %s inf", name);
@@ -57,11 +54,11 @@ MethodKey methodKeyOf(const Settings& s) {
   } else {
     k.grid = GridSetting{false, 0, {0, 0, 0}};
   }
-  if (readsFixedLength(s.strategy)) k.fixedFactor = s.fixedFactor;
+  if (strategyInfo(s.strategy).readsFixedLength) k.fixedFactor = s.fixedFactor;
   if (strategyInfo(s.strategy).readsEmaAlpha) k.emaAlpha = s.emaAlpha;
   if (strategyInfo(s.strategy).samplesGaussian) k.gaussOutlier = s.gaussOutlier, k.gaussReset = s.gaussReset;
   k.sortBits = s.sortBits;
-  if (usesLengthCache(s.strategy)) k.learnEvery = s.learnEvery;
+  if (strategyInfo(s.strategy).learnsLengths) k.learnEvery = s.learnEvery;
   if (s.sorts() && s.tracer == Tracer::Compute) k.fusion = s.fusion;  // elsewhere it does nothing
   return k;
 }
@@ -87,7 +84,7 @@ std::string describe(const MethodKey& k) {
     text += grid;
     if (k.clampDistance > 0.0f) text += number("clamp", k.clampDistance);
   }
-  if (readsFixedLength(k.strategy)) text += " |" + number("f", k.fixedFactor);
+  if (strategyInfo(k.strategy).readsFixedLength) text += " |" + number("f", k.fixedFactor);
   if (strategyInfo(k.strategy).readsEmaAlpha) text += number("a", k.emaAlpha);
   if (strategyInfo(k.strategy).samplesGaussian) text += number("out", k.gaussOutlier) + number("reset", k.gaussReset);
   if (k.sortBits != 0) text += " | bits " + std::to_string(k.sortBits);

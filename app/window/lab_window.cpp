@@ -197,30 +197,10 @@ bool LabWindow::frame() {
   const auto now = std::chrono::steady_clock::now();
   float seconds = std::min(std::chrono::duration<float>(now - lastFrame_).count(), 0.25f);
   lastFrame_ = now;
-  // The panels are rebuilt and the window presented only when something on it may have changed: input
-  // within the last kPanelSettleSeconds (ImGui's hover delays and animations play out in it), a script or
-  // panel change of settings, a preview or restart in the last UI frame, or completed render frames not yet
-  // shown, at most every kImageRefreshSeconds. Other UI frames only render their steps: on lavapipe a
-  // presented window costs tens of milliseconds whether or not the panels are rebuilt (docs/lab-window.md),
-  // which the UI frames of a live render cannot afford each time.
-  if (input_->takeActivity()) lastInput_ = now;
-  const bool refresh = imagePending_ && std::chrono::duration<double>(now - lastPresent_).count() >= kImageRefreshSeconds;
-  // A pending window screenshot draws the panels every UI frame, so the shot shows them as they are now.
-  const bool drawPanels = panelsDirty_ || refresh || !(settings_ == before) || !pendingWindowShot_.empty() ||
-                          std::chrono::duration<double>(now - lastInput_).count() < kPanelSettleSeconds;
+  const bool drawPanels = panelsDue(now, before);
   panelsDirty_ = false;
   const auto panelsStart = std::chrono::steady_clock::now();
-  bool panelsDirtyNext = false;
-  if (drawPanels) {
-    layer_->newFrame();
-    handleHotkeys();
-    fillCameraModel();
-    UiRequests requests = ui_.draw(settings_, view_, cameraModel_);
-    ImGui::Render();
-    if (std::string failure = imgui_.saveIfDue(); !failure.empty()) reportWriteFailure(failure);
-    handleRequests(requests);
-    panelsDirtyNext = requests.redrawPanels;  // the correction shows in the next build
-  }
+  const bool panelsDirtyNext = drawPanels && buildPanels();
   updateCamera(seconds);
   bool changed = false;
   const bool restarted = syncTracer(&changed);
@@ -231,38 +211,13 @@ bool LabWindow::frame() {
   // window screenshot waits for a UI frame that completed a render frame, so it shows that frame.
   // A UI frame that presents spends the panels' time and a present besides its steps: the steps get less.
   const RenderTurn turn = live_->turn(*tracer_, scene_.scene, drawPanels ? msSince(panelsStart) + presentMs_ : 0.0);
-  const bool capture = turn.frameDone && !pendingWindowShot_.empty();
   // A restart or preview changes what the panels show: they are rebuilt next UI frame. A completed frame's
   // image and statistics are shown by the next refresh.
   panelsDirty_ = panelsDirtyNext || restarted || turn.preview;
   imagePending_ = imagePending_ || turn.frameDone;
-  PresentedFrame shown;
-  if (drawPanels || turn.preview || capture) {
-    const auto presentStart = std::chrono::steady_clock::now();
-    shown = presenter_->drawFrame(live_->shown(*tracer_), ImGui::GetDrawData(), capture,
-                                  heatmapShown(settings_) != HeatmapView::None);
-    presentMs_ += 0.5 * (msSince(presentStart) - presentMs_);  // smoothed: one slow present does not starve the steps
-    recreate_ = shown.recreateSwapchain;
-    panelsDirty_ = panelsDirty_ || recreate_;
-    lastPresent_ = now;
-    imagePending_ = imagePending_ && !drawPanels;  // a preview alone leaves the render's frame unshown
-  }
+  const PresentedFrame shown = presentIfDue(drawPanels, turn, now);
   ++uiFrames_;
-  if (frameLog_) {
-    UiFrameRecord r;
-    r.uiMs = msSince(start);
-    r.panels = drawPanels;
-    r.presented = shown.rendered;
-    r.changed = changed;
-    r.restarted = restarted;
-    r.framePaths = tracer_->framePaths();
-    try {
-      frameLog_->write(r, turn, tracer_->settings());
-    } catch (const WriteError& e) {
-      reportWriteFailure(std::string(e.what()) + " (the frame log stops here)");
-      frameLog_.reset();
-    }
-  }
+  if (frameLog_) logUiFrame(msSince(start), drawPanels, shown, changed, restarted, turn);
   if (!turn.frameDone) return true;
   noteSlowStep();
   // Statistics, screenshots and the script's frame count follow whole render frames only.
@@ -272,6 +227,68 @@ bool LabWindow::frame() {
   saveScreenshots(shown);
   if (script_) script_->frameDone();
   return true;
+}
+
+// The panels are rebuilt and the window presented only when something on it may have changed: input
+// within the last kPanelSettleSeconds (ImGui's hover delays and animations play out in it), a script or
+// panel change of settings, a preview or restart in the last UI frame, or completed render frames not yet
+// shown, at most every kImageRefreshSeconds. Other UI frames only render their steps: on lavapipe a
+// presented window costs tens of milliseconds whether or not the panels are rebuilt (docs/lab-window.md),
+// which the UI frames of a live render cannot afford each time.
+bool LabWindow::panelsDue(std::chrono::steady_clock::time_point now, const Settings& before) {
+  if (input_->takeActivity()) lastInput_ = now;
+  const bool refresh = imagePending_ && std::chrono::duration<double>(now - lastPresent_).count() >= kImageRefreshSeconds;
+  // A pending window screenshot draws the panels every UI frame, so the shot shows them as they are now.
+  return panelsDirty_ || refresh || !(settings_ == before) || !pendingWindowShot_.empty() ||
+         std::chrono::duration<double>(now - lastInput_).count() < kPanelSettleSeconds;
+}
+
+// Builds this UI frame's panels and carries out what they asked; true when they must be built again next
+// UI frame (a correction shows in the next build).
+bool LabWindow::buildPanels() {
+  layer_->newFrame();
+  handleHotkeys();
+  fillCameraModel();
+  UiRequests requests = ui_.draw(settings_, view_, cameraModel_);
+  ImGui::Render();
+  if (std::string failure = imgui_.saveIfDue(); !failure.empty()) reportWriteFailure(failure);
+  handleRequests(requests);
+  return requests.redrawPanels;
+}
+
+// Draws and presents the window when the panels were built, a preview was rendered or a window screenshot
+// is due with this completed frame; otherwise presents nothing.
+PresentedFrame LabWindow::presentIfDue(bool drawPanels, const RenderTurn& turn,
+                                       std::chrono::steady_clock::time_point now) {
+  const bool capture = turn.frameDone && !pendingWindowShot_.empty();
+  if (!drawPanels && !turn.preview && !capture) return {};
+  const auto presentStart = std::chrono::steady_clock::now();
+  PresentedFrame shown = presenter_->drawFrame(live_->shown(*tracer_), ImGui::GetDrawData(), capture,
+                                               heatmapShown(settings_) != HeatmapView::None);
+  presentMs_ += 0.5 * (msSince(presentStart) - presentMs_);  // smoothed: one slow present does not starve the steps
+  recreate_ = shown.recreateSwapchain;
+  panelsDirty_ = panelsDirty_ || recreate_;
+  lastPresent_ = now;
+  imagePending_ = imagePending_ && !drawPanels;  // a preview alone leaves the render's frame unshown
+  return shown;
+}
+
+// One line of the frame log; a failed write is reported and ends the log, not the lab.
+void LabWindow::logUiFrame(double uiMs, bool drawPanels, const PresentedFrame& shown, bool changed, bool restarted,
+                           const RenderTurn& turn) {
+  UiFrameRecord r;
+  r.uiMs = uiMs;
+  r.panels = drawPanels;
+  r.presented = shown.rendered;
+  r.changed = changed;
+  r.restarted = restarted;
+  r.framePaths = tracer_->framePaths();
+  try {
+    frameLog_->write(r, turn, tracer_->settings());
+  } catch (const WriteError& e) {
+    reportWriteFailure(std::string(e.what()) + " (the frame log stops here)");
+    frameLog_.reset();
+  }
 }
 
 // The render is the window's size times the resolution scale; the renderer restarts only what must.

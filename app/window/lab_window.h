@@ -29,6 +29,7 @@ class LabInput;
 class FrameLog;
 class LiveRender;
 struct PresentedFrame;
+struct RenderTurn;
 
 class LabWindow {
  public:
@@ -43,6 +44,11 @@ class LabWindow {
   void loadStartScene();
   void openWindow();
   bool frame();
+  bool panelsDue(std::chrono::steady_clock::time_point now, const Settings& before);
+  bool buildPanels();
+  PresentedFrame presentIfDue(bool drawPanels, const RenderTurn& turn, std::chrono::steady_clock::time_point now);
+  void logUiFrame(double uiMs, bool drawPanels, const PresentedFrame& shown, bool changed, bool restarted,
+                  const RenderTurn& turn);
   void recreateSwapchain();
   // True when the render restarted its accumulation; `changed`: the settings or camera changed (a change
   // of strategy, grid, clamp or policy keeps accumulating, yet the frame log records it as a change).
@@ -99,7 +105,7 @@ class LabWindow {
   static constexpr double kPanelSettleSeconds = 1.0, kImageRefreshSeconds = 0.1;
   bool panelsDirty_ = true;
   bool imagePending_ = false;
-  double presentMs_ = 0.0;  // what presenting the window took, smoothed (LiveRender leaves it room)  // a render frame completed since the window was last presented
+  double presentMs_ = 0.0;  // what presenting the window took, smoothed (LiveRender leaves it room)
   uint64_t frames_ = 0;
   uint64_t uiFrames_ = 0;
   double wallMsTotal_ = 0.0, loopMsTotal_ = 0.0;

@@ -77,13 +77,13 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
       oneSweepHistogram_ =
           ComputePipeline(ctx, "sort_onesweep_histogram", sizeof(gpu::SortOneSweepPush), kOneSweepHistogramGroup);
       oneSweepPass_ =
-          ComputePipeline(ctx, "sort_onesweep_pass", sizeof(gpu::SortOneSweepPush), group, {subgroup, kpt});
+          ComputePipeline(ctx, "sort_onesweep_pass", sizeof(gpu::SortOneSweepPush), group, {{RL_SPEC_SUBGROUP_SIZE, subgroup}, {RL_SPEC_KEYS_PER_THREAD, kpt}});
       oneSweepState_ = GpuBuffer(
           ctx, (VkDeviceSize(SORT_ONESWEEP_STATUS) + VkDeviceSize(SORT_ONESWEEP_MAX_PASSES) * maxGroups * SORT_RADIX) * 4);
     } else {
-      histogram_ = ComputePipeline(ctx, "sort_radix_histogram", sizeof(gpu::SortRadixPush), group, {kpt});
+      histogram_ = ComputePipeline(ctx, "sort_radix_histogram", sizeof(gpu::SortRadixPush), group, {{RL_SPEC_KEYS_PER_THREAD, kpt}});
       scan_ = ComputePipeline(ctx, "sort_radix_scan", sizeof(gpu::SortScanPush), std::max(kScanGroup, subgroup));
-      scatter_ = ComputePipeline(ctx, "sort_radix_scatter", sizeof(gpu::SortRadixPush), group, {subgroup, kpt});
+      scatter_ = ComputePipeline(ctx, "sort_radix_scatter", sizeof(gpu::SortRadixPush), group, {{RL_SPEC_SUBGROUP_SIZE, subgroup}, {RL_SPEC_KEYS_PER_THREAD, kpt}});
       hist_ = GpuBuffer(ctx, (VkDeviceSize(SORT_RADIX) * maxGroups + SORT_RADIX) * 4);
     }
     copy_ = ComputePipeline(ctx, "sort_copy", sizeof(gpu::SortCopyPush), kCopyGroup);

@@ -52,7 +52,6 @@ uint32_t keyCached(const KeyParams& p, const KeyEnv& env, const KeyPath& path, b
 
 uint32_t strategyId(KeyStrategy s) { return strategyInfo(s).shaderId; }
 
-bool usesLengthCache(KeyStrategy s) { return strategyInfo(s).learnsLengths; }
 
 uint32_t spatialKeyBits(KeyStrategy s, const gpu::GpuKeyGrid& g) {
   switch (s) {

@@ -38,7 +38,6 @@ uint32_t strategyId(KeyStrategy s);
 // all ones, so it stays the largest in those bits), or 0 for None.
 uint32_t spatialKeyBits(KeyStrategy s, const gpu::GpuKeyGrid& grid);
 uint32_t keyWidth(KeyStrategy s, const gpu::GpuKeyGrid& grid);
-bool usesLengthCache(KeyStrategy s);
 
 // Deterministic arithmetic (twins of keys.glsl; only +, -, *, comparisons and bit operations).
 float detRcp(float x);

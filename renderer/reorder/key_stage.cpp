@@ -6,6 +6,7 @@
 #include <string>
 
 #include "renderer/reorder/key_functions.h"
+#include "renderer/reorder/key_strategies.h"
 #include "renderer/vk/vk_context.h"
 
 namespace raylab {
@@ -46,7 +47,7 @@ void KeyStage::apply(const Settings& settings, glm::vec3 cameraPos, uint32_t max
   bool reset = change.resetCache || gridChanged;
   grid_ = grid;
 
-  if (!usesLengthCache(settings.strategy)) {
+  if (!strategyInfo(settings.strategy).learnsLengths) {
     cache_.reset();  // nothing to remember: give the memory back
   } else if (!cache_ || gridChanged) {
     cache_ = std::make_unique<LengthCache>(*ctx_, buildLengthCacheLayout(grid_, triangles_, cameraPos));
@@ -91,7 +92,7 @@ const ComputePipeline& KeyStage::pipeline(const char* shader, KeyStrategy strate
   auto key = std::make_pair(std::string(shader), strategy);
   auto it = pipelines_.find(key);
   if (it == pipelines_.end()) {
-    ComputePipeline p(*ctx_, shader, pushBytes, RL_PATH_GROUP_SIZE, {strategyId(strategy)});
+    ComputePipeline p(*ctx_, shader, pushBytes, RL_PATH_GROUP_SIZE, {{RL_SPEC_KEY_STRATEGY, strategyId(strategy)}});
     it = pipelines_.emplace(key, std::move(p)).first;
   }
   return it->second;
@@ -120,7 +121,7 @@ void KeyStage::recordKeys(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint3
 void KeyStage::recordLearn(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint32_t stateSet, uint32_t bounce,
                            uint32_t count, StageTimer* timer) {
   KeyStrategy s = settings_.strategy;
-  if (!cache_ || !usesLengthCache(s) || bounce == 0 || count == 0) return;
+  if (!cache_ || !strategyInfo(s).learnsLengths || bounce == 0 || count == 0) return;
   if (count > maxPaths_) throw std::invalid_argument("KeyStage::recordLearn: more paths than maxPaths");
   const uint32_t every = std::max(1u, settings_.learnEvery);
   gpu::KeyLearnPush push{frameBlock, paramsBuffer_.address(), stateSet, bounce, count, every};

@@ -9,15 +9,11 @@
 namespace raylab {
 
 ComputePipeline::ComputePipeline(const VulkanContext& ctx, const std::string& shaderName, uint32_t pushBytes,
-                                 uint32_t groupSize, const std::vector<uint32_t>& extraConstants)
+                                 uint32_t groupSize, const SpecConstants& variant)
     : handle_(ctx, shaderName, pushBytes, VK_SHADER_STAGE_COMPUTE_BIT), groupSize_(groupSize) {
-  std::vector<uint32_t> constants{groupSize};
-  constants.insert(constants.end(), extraConstants.begin(), extraConstants.end());
-  std::vector<VkSpecializationMapEntry> entries;
-  for (uint32_t i = 0; i < constants.size(); ++i)
-    entries.push_back({i, static_cast<uint32_t>(i * sizeof(uint32_t)), sizeof(uint32_t)});
-  VkSpecializationInfo spec{static_cast<uint32_t>(entries.size()), entries.data(),
-                            constants.size() * sizeof(uint32_t), constants.data()};
+  SpecConstants constants{{RL_SPEC_GROUP_SIZE, groupSize}};
+  constants.insert(constants.end(), variant.begin(), variant.end());
+  const Specialization spec(constants, shaderName);
 
   VkShaderModule module = makeShaderModule(ctx, shaderName);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
@@ -25,7 +21,7 @@ ComputePipeline::ComputePipeline(const VulkanContext& ctx, const std::string& sh
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   info.stage.module = module;
   info.stage.pName = "main";
-  info.stage.pSpecializationInfo = &spec;
+  info.stage.pSpecializationInfo = spec.info();
   info.layout = handle_.layout;
   VkResult r = vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &info, nullptr, &handle_.pipeline);
   vkDestroyShaderModule(ctx.device(), module, nullptr);

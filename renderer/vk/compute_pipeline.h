@@ -1,6 +1,6 @@
 // One compute shader as a pipeline with no descriptor sets: every buffer reaches the shader as a device
-// address inside its push constants. The work-group size is specialization constant 0 (local_size_x_id = 0)
-// so the host knows it without reflection; further specialization constants (ids 1..) select variants.
+// address inside its push constants. The work-group size is specialization constant RL_SPEC_GROUP_SIZE
+// (local_size_x_id) so the host knows it without reflection; further {RL_SPEC_*, value} pairs select variants.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +10,7 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/vk/pipeline_handle.h"
+#include "renderer/vk/spec_constants.h"
 
 namespace raylab {
 
@@ -21,7 +22,7 @@ class ComputePipeline {
   // `pushBytes` (callers pass sizeof(their struct)) must equal the push-constant block size the SPIR-V
   // declares, or the constructor throws; every dispatch checks sizeof(Push) against it again.
   ComputePipeline(const VulkanContext& ctx, const std::string& shaderName, uint32_t pushBytes,
-                  uint32_t groupSize = 64, const std::vector<uint32_t>& extraConstants = {});
+                  uint32_t groupSize = 64, const SpecConstants& variant = {});
 
   uint32_t groupSize() const { return groupSize_; }
   const std::string& name() const { return handle_.name; }

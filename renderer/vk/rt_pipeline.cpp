@@ -19,19 +19,12 @@ const VulkanContext& requireRayTracing(const VulkanContext& ctx, const std::stri
 }  // namespace
 
 RtPipeline::RtPipeline(const VulkanContext& ctx, const std::string& raygenName, uint32_t pushBytes,
-                       const std::vector<std::pair<uint32_t, uint32_t>>& constants)
+                       const SpecConstants& constants)
     : handle_(requireRayTracing(ctx, raygenName), raygenName, pushBytes, VK_SHADER_STAGE_RAYGEN_BIT_KHR) {
   const char* names[] = {raygenName.c_str(), "rt_miss", "rt_shadow_miss", "rt_closest_hit"};
   const VkShaderStageFlagBits kinds[] = {VK_SHADER_STAGE_RAYGEN_BIT_KHR, VK_SHADER_STAGE_MISS_BIT_KHR,
                                          VK_SHADER_STAGE_MISS_BIT_KHR, VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR};
-  std::vector<VkSpecializationMapEntry> entries;
-  std::vector<uint32_t> values;
-  for (const auto& [id, value] : constants) {
-    entries.push_back({id, static_cast<uint32_t>(values.size() * sizeof(uint32_t)), sizeof(uint32_t)});
-    values.push_back(value);
-  }
-  VkSpecializationInfo spec{static_cast<uint32_t>(entries.size()), entries.data(), values.size() * sizeof(uint32_t),
-                            values.data()};
+  const Specialization spec(constants, raygenName);
   VkPipelineShaderStageCreateInfo stages[4];
   VkRayTracingShaderGroupCreateInfoKHR groups[4];
   for (uint32_t i = 0; i < 4; ++i) {
@@ -39,7 +32,7 @@ RtPipeline::RtPipeline(const VulkanContext& ctx, const std::string& raygenName, 
     stages[i].stage = kinds[i];
     stages[i].module = makeShaderModule(ctx, names[i]);
     stages[i].pName = "main";
-    if (i == 0 && !entries.empty()) stages[i].pSpecializationInfo = &spec;
+    if (i == 0) stages[i].pSpecializationInfo = spec.info();
     groups[i] = {VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
     groups[i].type = i < 3 ? VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR
                            : VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR;

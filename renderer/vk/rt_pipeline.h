@@ -13,6 +13,7 @@
 
 #include "renderer/vk/gpu_buffer.h"
 #include "renderer/vk/pipeline_handle.h"
+#include "renderer/vk/spec_constants.h"
 
 namespace raylab {
 
@@ -22,9 +23,9 @@ class RtPipeline {
  public:
   RtPipeline() = default;
   // `pushBytes` must equal the ray-generation shader's push-constant block (checked against the SPIR-V);
-  // `constants` are (constant_id, value) specialization constants of the ray-generation shader.
+  // `constants` are {RL_SPEC_*, value} specialization constants of the ray-generation shader.
   RtPipeline(const VulkanContext& ctx, const std::string& raygenName, uint32_t pushBytes,
-             const std::vector<std::pair<uint32_t, uint32_t>>& constants = {});
+             const SpecConstants& constants = {});
 
   // Binds, pushes constants and launches `width` x 1 x 1 ray-generation invocations (none if zero).
   template <class Push>

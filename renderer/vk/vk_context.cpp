@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
-#include <cstring>
-#include <type_traits>
+#include <optional>
 
 #include "renderer/vk/compute_pipeline.h"
+#include "renderer/vk/ray_tracing_support.h"
 #include "renderer/vk/vk_check.h"
 
 namespace raylab {
@@ -33,6 +33,26 @@ std::vector<VkPhysicalDevice> enumerateDevices(VkInstance instance) {
   std::vector<VkPhysicalDevice> devices(count);
   VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, devices.data()));
   return devices;
+}
+
+std::vector<VkQueueFamilyProperties> queueFamilyProperties(VkPhysicalDevice physical) {
+  uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
+  return families;
+}
+
+// A family that does graphics too where there is one (the window draws its panels on the same queue), else
+// any compute family; none if the device computes nowhere.
+std::optional<uint32_t> chooseQueueFamily(VkPhysicalDevice physical) {
+  const std::vector<VkQueueFamilyProperties> families = queueFamilyProperties(physical);
+  const VkQueueFlags both = VK_QUEUE_COMPUTE_BIT | VK_QUEUE_GRAPHICS_BIT;
+  for (uint32_t i = 0; i < families.size(); ++i)
+    if ((families[i].queueFlags & both) == both) return i;
+  for (uint32_t i = 0; i < families.size(); ++i)
+    if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) return i;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -116,21 +136,10 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
 }
 
 void VulkanContext::createDevice(const ContextOptions& options) {
-  uint32_t familyCount = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
-  std::vector<VkQueueFamilyProperties> families(familyCount);
-  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, families.data());
-  // Prefer a family that does graphics too: the window draws its panels on the same queue.
-  int chosen = -1;
-  for (uint32_t i = 0; i < familyCount && chosen < 0; ++i)
-    if ((families[i].queueFlags & (VK_QUEUE_COMPUTE_BIT | VK_QUEUE_GRAPHICS_BIT)) ==
-        (VK_QUEUE_COMPUTE_BIT | VK_QUEUE_GRAPHICS_BIT))
-      chosen = static_cast<int>(i);
-  for (uint32_t i = 0; i < familyCount && chosen < 0; ++i)
-    if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) chosen = static_cast<int>(i);
-  if (chosen < 0) throw VulkanError(info_.name + " has no compute queue");
-  queueFamily_ = static_cast<uint32_t>(chosen);
-  info_.timestamps = families[queueFamily_].timestampValidBits > 0;
+  const std::optional<uint32_t> family = chooseQueueFamily(physical_);
+  if (!family) throw VulkanError(info_.name + " has no compute queue");
+  queueFamily_ = *family;
+  info_.timestamps = queueFamilyProperties(physical_)[queueFamily_].timestampValidBits > 0;
 
   VkPhysicalDeviceVulkan12Features have12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   VkPhysicalDeviceFeatures2 have{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
@@ -140,87 +149,16 @@ void VulkanContext::createDevice(const ContextOptions& options) {
     throw VulkanError(info_.name + " lacks bufferDeviceAddress, scalarBlockLayout or shaderInt64");
 
   // Ray tracing (the rt tracer) and SER, enabled where the device has them.
+  RayTracingSupport rayTracing(physical_, info_);
   std::vector<const char*> extensions = options.deviceExtensions;
-  uint32_t extensionCount = 0;
-  vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount, nullptr);
-  std::vector<VkExtensionProperties> available(extensionCount);
-  vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount, available.data());
-  auto has = [&](const char* name) {
-    for (const auto& e : available)
-      if (std::strcmp(e.extensionName, name) == 0) return true;
-    return false;
-  };
-  VkPhysicalDeviceAccelerationStructureFeaturesKHR haveAs{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
-  VkPhysicalDeviceRayTracingPipelineFeaturesKHR haveRt{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
-  VkPhysicalDeviceRayTracingInvocationReorderFeaturesNV haveSer{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_INVOCATION_REORDER_FEATURES_NV};
-  const char* rtExtensions[] = {VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
-                                VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
-  std::string missing;
-  for (const char* e : rtExtensions)
-    if (!has(e)) missing += (missing.empty() ? "" : ", ") + std::string(e);
-  const bool serExtension = has(VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME);
-  if (missing.empty()) {
-    haveAs.pNext = &haveRt;
-    if (serExtension) haveRt.pNext = &haveSer;
-    VkPhysicalDeviceFeatures2 query{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-    query.pNext = &haveAs;
-    vkGetPhysicalDeviceFeatures2(physical_, &query);
-    if (!haveAs.accelerationStructure) missing = "the accelerationStructure feature";
-    if (!haveRt.rayTracingPipeline) missing += (missing.empty() ? "" : ", ") + std::string("the rayTracingPipeline feature");
-  }
-  info_.rayTracing = missing.empty();
-  info_.rayTracingMissing = missing;
-  VkPhysicalDeviceAccelerationStructureFeaturesKHR wantAs{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
-  VkPhysicalDeviceRayTracingPipelineFeaturesKHR wantRt{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
-  VkPhysicalDeviceRayTracingInvocationReorderFeaturesNV wantSer{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_INVOCATION_REORDER_FEATURES_NV};
-  if (info_.rayTracing) {
-    for (const char* e : rtExtensions) extensions.push_back(e);
-    wantAs.accelerationStructure = VK_TRUE;
-    wantRt.rayTracingPipeline = VK_TRUE;
-    wantAs.pNext = &wantRt;
-    info_.ser = serExtension && haveSer.rayTracingInvocationReorder;
-    if (info_.ser) {
-      extensions.push_back(VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME);
-      wantSer.rayTracingInvocationReorder = VK_TRUE;
-      wantRt.pNext = &wantSer;
-    }
-    VkPhysicalDeviceRayTracingPipelinePropertiesKHR rtProps{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR};
-    VkPhysicalDeviceAccelerationStructurePropertiesKHR asProps{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
-    VkPhysicalDeviceRayTracingInvocationReorderPropertiesNV serProps{
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_INVOCATION_REORDER_PROPERTIES_NV};
-    VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
-    rtProps.pNext = &asProps;
-    asProps.pNext = &subgroup;
-    if (info_.ser) subgroup.pNext = &serProps;
-    VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
-    props.pNext = &rtProps;
-    vkGetPhysicalDeviceProperties2(physical_, &props);
-    info_.shaderGroupHandleSize = rtProps.shaderGroupHandleSize;
-    info_.shaderGroupHandleAlignment = rtProps.shaderGroupHandleAlignment;
-    info_.shaderGroupBaseAlignment = rtProps.shaderGroupBaseAlignment;
-    info_.maxRayDispatchInvocationCount = rtProps.maxRayDispatchInvocationCount;
-    info_.minAccelerationStructureScratchOffsetAlignment = asProps.minAccelerationStructureScratchOffsetAlignment;
-    info_.subgroupsInRayGen = (subgroup.supportedStages & VK_SHADER_STAGE_RAYGEN_BIT_KHR) &&
-                              (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT);
-    if (info_.ser)
-      info_.serReorderingHint =
-          serProps.rayTracingInvocationReorderReorderingHint == VK_RAY_TRACING_INVOCATION_REORDER_MODE_REORDER_NV
-              ? "reorder"
-              : "none";
-  }
-  if (!info_.ser)
-    info_.serMissing = !info_.rayTracing ? missing + ", " + VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME
-                       : !serExtension   ? std::string(VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME)
-                                         : "the rayTracingInvocationReorder feature";
+  extensions.insert(extensions.end(), rayTracing.extensions().begin(), rayTracing.extensions().end());
 
   VkPhysicalDeviceVulkan12Features want12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   want12.bufferDeviceAddress = VK_TRUE;
   want12.scalarBlockLayout = VK_TRUE;
   want12.hostQueryReset = have12.hostQueryReset;
   want12.shaderSubgroupExtendedTypes = have12.shaderSubgroupExtendedTypes;
-  if (info_.rayTracing) want12.pNext = &wantAs;
+  want12.pNext = rayTracing.features();
   VkPhysicalDeviceFeatures2 want{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   want.pNext = &want12;
   want.features.shaderInt64 = VK_TRUE;
@@ -240,20 +178,7 @@ void VulkanContext::createDevice(const ContextOptions& options) {
   VK_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
   if (info_.rayTracing) {
-    auto load = [&](auto& fn, const char* name) {
-      fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(vkGetDeviceProcAddr(device_, name));
-      if (!fn) throw VulkanError(std::string("the device has no ") + name);
-    };
-    load(rt_.createAccelerationStructure, "vkCreateAccelerationStructureKHR");
-    load(rt_.destroyAccelerationStructure, "vkDestroyAccelerationStructureKHR");
-    load(rt_.getAccelerationStructureBuildSizes, "vkGetAccelerationStructureBuildSizesKHR");
-    load(rt_.cmdBuildAccelerationStructures, "vkCmdBuildAccelerationStructuresKHR");
-    load(rt_.getAccelerationStructureDeviceAddress, "vkGetAccelerationStructureDeviceAddressKHR");
-    load(rt_.cmdCopyAccelerationStructure, "vkCmdCopyAccelerationStructureKHR");
-    load(rt_.cmdWriteAccelerationStructuresProperties, "vkCmdWriteAccelerationStructuresPropertiesKHR");
-    load(rt_.createRayTracingPipelines, "vkCreateRayTracingPipelinesKHR");
-    load(rt_.getRayTracingShaderGroupHandles, "vkGetRayTracingShaderGroupHandlesKHR");
-    load(rt_.cmdTraceRays, "vkCmdTraceRaysKHR");
+    rt_ = loadRayTracingFunctions(device_);
     setRayTracingBarriers(true);
   }
 
@@ -304,23 +229,12 @@ std::vector<std::string> VulkanContext::describeDevices() {
     const size_t number = lines.size();  // what --device N picks
     VkPhysicalDeviceProperties p;
     vkGetPhysicalDeviceProperties(d, &p);
-    uint32_t count = 0;
-    vkEnumerateDeviceExtensionProperties(d, nullptr, &count, nullptr);
-    std::vector<VkExtensionProperties> extensions(count);
-    vkEnumerateDeviceExtensionProperties(d, nullptr, &count, extensions.data());
-    auto lacking = [&](std::initializer_list<const char*> names) {
-      std::string missing;
-      for (const char* n : names) {
-        bool found = false;
-        for (const auto& e : extensions) found = found || std::strcmp(e.extensionName, n) == 0;
-        if (!found) missing += (missing.empty() ? "" : ", ") + std::string(n);
-      }
+    auto lacking = [&](const std::vector<const char*>& names) {
+      const std::string missing = missingDeviceExtensions(d, names);
       return missing.empty() ? std::string("yes") : "no (lacks " + missing + ")";
     };
-    lines.push_back(std::to_string(number) + ": " + p.deviceName + "\n  rt tracer: " +
-                    lacking({VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
-                             VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME}) +
-                    "\n  SER: " + lacking({VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME}));
+    lines.push_back(std::to_string(number) + ": " + p.deviceName + "\n  rt tracer: " + lacking(kRayTracingExtensions) +
+                    "\n  SER: " + lacking(kSerExtensions));
   }
   vkDestroyInstance(instance, nullptr);
   return lines;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/reorder/key_strategies.h"
 #include "tests/exact_hit.h"
 #include "tests/gpu_test.h"
 #include "tests/test_key_support.h"
@@ -64,7 +65,7 @@ TEST_F(KeyGpu, KeysEqualTwinForEveryStrategyAndGrid) {
       KeyOutput out = runKeys(ctx(), stage, frame, n);
       std::vector<float> oracle = stage.downloadOracleLengths(n);
       EXPECT_EQ(compareWithTwin(stage, frame, paths, out, 1, oracle), 0u);
-      if (usesLengthCache(strategy) && stage.grid().gridBits() > 0) {
+      if (strategyInfo(strategy).learnsLengths && stage.grid().gridBits() > 0) {
         // The learned lengths must actually be used for some paths (else this test proves little).
         uint32_t learned = 0;
         for (uint32_t i = 0; i < n; ++i)
