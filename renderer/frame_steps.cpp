@@ -16,7 +16,7 @@
 namespace raylab {
 
 const ComputePipeline& PathTracer::shadeVariant(bool compact, bool fusesTraceShade) {
-  if (!compact && !fusesTraceShade) return shade_;
+  if (!compact && !fusesTraceShade) return shade_.get();
   std::optional<ComputePipeline>& p = shadeVariants_[compact ? 1 : 0][fusesTraceShade ? 1 : 0];
   if (!p)
     p.emplace(ctx_, "shade", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE,
@@ -63,7 +63,7 @@ void PathTracer::buildSteps() {
 void PathTracer::buildMegakernelSteps(const gpu::PathStagePush& push) {
   addStep("megakernel", -1, [this, push](VkCommandBuffer cmd) {
     const uint32_t n = buffers_->pathCount;
-    const ComputePipeline& megakernel = settings_.countSimt ? megakernelCounting_ : megakernel_;
+    const ComputePipeline& megakernel = (settings_.countSimt ? megakernelCounting_ : megakernel_).get();
     recordStage(cmd, &timer_, "megakernel", [&] {
       if (!usesRt()) {
         megakernel.dispatchThreads(cmd, push, n);
@@ -182,7 +182,7 @@ void PathTracer::buildTraceStep(uint32_t b, const gpu::PathStagePush& push, bool
       else if (gathers)
         traceFusingGather(settings_.countSimt).dispatchThreads(cmd, push, n);  // every slot: it finds the live count
       else
-        (settings_.countSimt ? traceCounting_ : trace_)
+        (settings_.countSimt ? traceCounting_ : trace_).get()
             .dispatchIndirect(cmd, push, buffers_->live.handle(), PathBuffers::kLiveDispatchOffset);
     });
   });

@@ -126,7 +126,7 @@ gpu::HeatmapPush HeatmapPass::push(const PathBuffers& buffers, uint32_t stateSet
 void HeatmapPass::gather(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t gatherKind,
                          bool megakernel, StageTimer* timer) {
   ScopedStage s(timer, cmd, "heatmap");
-  gather_.dispatchThreads(cmd, push(buffers, stateSet, gatherKind, megakernel), buffers.pathCount);
+  gather_.get().dispatchThreads(cmd, push(buffers, stateSet, gatherKind, megakernel), buffers.pathCount);
   computeBarrier(cmd);
   gathered_ = true;
 }
@@ -165,7 +165,7 @@ bool HeatmapPass::colorize(VkCommandBuffer cmd, const PathBuffers& buffers, Stag
   probeRecorded_.reset();
   if (view_ == HeatmapView::None) return false;
   ScopedStage s(timer, cmd, "heatmap");
-  colorize_.dispatchThreads(cmd, push(buffers, 0, RL_HEAT_GATHER_VALUE, false), buffers.pixelCount);
+  colorize_.get().dispatchThreads(cmd, push(buffers, 0, RL_HEAT_GATHER_VALUE, false), buffers.pixelCount);
   computeBarrier(cmd);
   // The hovered pixel: its heat word and probe words, 16 bytes (the caller's end-of-frame barrier makes
   // them visible to the host).

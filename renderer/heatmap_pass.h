@@ -11,7 +11,7 @@
 #include "renderer/frame_stats.h"
 #include "renderer/heatmap_colours.h"
 #include "renderer/settings.h"
-#include "renderer/vk/compute_pipeline.h"
+#include "renderer/vk/lazy_pipeline.h"
 #include "renderer/vk/gpu_buffer.h"
 
 namespace raylab {
@@ -68,7 +68,7 @@ class HeatmapPass {
               bool megakernel, StageTimer* timer);
   gpu::HeatmapPush push(const PathBuffers& buffers, uint32_t stateSet, uint32_t gatherKind, bool megakernel) const;
 
-  ComputePipeline gather_, colorize_;
+  LazyPipeline gather_, colorize_;  // built when a heatmap is first drawn
   uint32_t pixelCount_;
   GpuBuffer heat_, probeData_, range_, probeReadback_;
   HeatmapView view_ = HeatmapView::None;

@@ -46,11 +46,11 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared
       camera_(camera),
       scene_(std::move(gpuScene)),
       generate_(ctx, "generate", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
+      accumulate_(ctx, "accumulate", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
+      tonemap_(ctx, "tonemap", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
       trace_(ctx, "trace", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {{RL_SPEC_COUNT_SIMT, 0}}),
       traceCounting_(ctx, "trace", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {{RL_SPEC_COUNT_SIMT, 1}}),
       shade_(ctx, "shade", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
-      accumulate_(ctx, "accumulate", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
-      tonemap_(ctx, "tonemap", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
       megakernel_(ctx, "megakernel", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {{RL_SPEC_COUNT_SIMT, 0}}),
       megakernelCounting_(ctx, "megakernel", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {{RL_SPEC_COUNT_SIMT, 1}}),
       timer_(ctx) {

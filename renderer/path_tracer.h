@@ -9,6 +9,7 @@
 
 #include "renderer/reorder/sort_policy.h"
 #include "renderer/vk/compute_pipeline.h"
+#include "renderer/vk/lazy_pipeline.h"
 #include "renderer/frame_stats.h"
 #include "renderer/frame_steps.h"
 #include "renderer/gpu_scene.h"
@@ -135,8 +136,8 @@ class PathTracer {
   std::unique_ptr<PathSorter> pathSorter_;
   std::unique_ptr<HeatmapPass> heatmap_;
   std::unique_ptr<RtTracer> rt_;  // acceleration structures and rt pipelines, made when the rt tracer is first used
-  ComputePipeline generate_, trace_, traceCounting_, shade_, accumulate_, tonemap_, megakernel_,
-      megakernelCounting_;
+  ComputePipeline generate_, accumulate_, tonemap_;  // every frame records them
+  LazyPipeline trace_, traceCounting_, shade_, megakernel_, megakernelCounting_;  // as the settings pick
   // trace.comp's gathering variants (Settings::fusesGather), plain and counting, built on first use.
   std::optional<ComputePipeline> traceFusingGather_[2];
   const ComputePipeline& traceFusingGather(bool counting);
