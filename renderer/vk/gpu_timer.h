@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "renderer/frame_stats.h"
+#include "renderer/vk/gpu_buffer.h"
 #include "renderer/vk/stage_timer.h"
 
 namespace raylab {
@@ -39,6 +40,8 @@ class GpuTimer : public StageTimer {
   };
   const VulkanContext& ctx_;
   VkQueryPool pool_ = VK_NULL_HANDLE;
+  GpuBuffer settle_;  // CPU devices: where settle() copies each timestamp read, one slot per query
+  void settle(VkCommandBuffer cmd, uint32_t query);
   uint32_t capacity_ = 0;
   uint32_t used_ = 0;
   int bounce_ = -1;

@@ -89,11 +89,11 @@ assert json.load(open('shots/remembered.json'))['settings']['strategy'] == 'none
 # thread's time shows up as gaps inside the submissions' GPU spans (frames in steps are tested in
 # tests/gpu/test_render_invariant.cpp, window_frame_log.sh and window_matches_headless.sh). Under AddressSanitizer the host side runs several times slower while the driver's
 # threads do not, so there the figures are printed, not judged.
-# On a quiet machine a frame is fast, and the window's gaps stay 10-15 ms (its panels, drawn through the same
-# lavapipe on the same two cores): CI's clean clone read 78-86% covered at 55-71 ms frames in all three tries
-# (headless 99.5%). So the window's stages are judged against headless's own (within 0.5-2x; they read
-# 0.76-0.86x there) and must cover at least half of its frame; headless must cover 90%. The faults this
-# guards against read 0.01% covered and rays/s 260x apart. Gaps on a GPU are issue 18's to measure.
+# On a quiet machine the window's stages once covered only 78-86% of its frame (headless 99.5%): lavapipe
+# took a deferred timestamp late, on its rasterizer threads, while the next stage already ran. GpuTimer now
+# waits for each timestamp on CPU devices (renderer/vk/gpu_timer.cpp), and the window reads 97-98% as
+# headless does; the window must cover 80% and headless 90%, and their stage sums agree within 0.67-1.5x.
+# The faults this guards against read 0.01% covered and rays/s 260x apart.
 printf 'set bounces 4\nwait 3\nscreenshot timing\nquit\n' >timing.txt
 sanitized=0
 ldd "$raylab" | grep -q libasan && sanitized=1
@@ -108,7 +108,7 @@ import json, sys
 w = json.load(open('shots/timing.json'))['stats']
 h = json.load(open('timing-headless.json'))['frames'][-1]
 ok = True
-for name, f, least in (('window', w, 0.5), ('headless', h, 0.9)):
+for name, f, least in (('window', w, 0.8), ('headless', h, 0.9)):
     cover = f['stage_sum_ms'] / f['gpu_frame_ms']
     print('%s: GPU frame %.1f ms, stages %.1f ms (%.1f%%), unattributed %.1f ms, %.3g rays/s' %
           (name, f['gpu_frame_ms'], f['stage_sum_ms'], 100 * cover, f['unattributed_ms'], f['rays_per_second']))
@@ -117,11 +117,11 @@ for name, f, least in (('window', w, 0.5), ('headless', h, 0.9)):
 stages = w['stage_sum_ms'] / h['stage_sum_ms']
 ratio = w['rays_per_second'] / h['rays_per_second']
 print('window/headless: stages %.2fx, rays/s %.2fx' % (stages, ratio))
-sys.exit(0 if ok and 0.5 < stages < 2 and 0.25 < ratio < 4 else 1)
+sys.exit(0 if ok and 0.67 < stages < 1.5 and 0.25 < ratio < 4 else 1)
 PY
   then timing_ok=1; break; fi
   [ $sanitized -eq 0 ] || { echo "sanitizer build: timing figures above not judged"; timing_ok=1; break; }
-  echo "timing attempt $attempt missed (stages under half the window's frame or 90% of headless's, or stages or rays/s apart)"
+  echo "timing attempt $attempt missed (stages under 80% of the window's frame or 90% of headless's, or stages or rays/s apart)"
 done
 [ $timing_ok -eq 1 ] || { echo "FAIL: the window's stages do not account for its frame time"; exit 1; }
 
