@@ -16,6 +16,11 @@ nlohmann::json frameJson(const FrameStats& stats, const Settings& settings) {
   for (const StageTime& t : stats.stages) stages[t.stage] += t.ms;
   nlohmann::json sorted = nlohmann::json::array(), reasons = nlohmann::json::array();
   for (const BounceStats& b : stats.bounces) sorted.push_back(b.sortedAfter), reasons.push_back(b.sortReason);
+  // The heatmap pixel the readout shows (the pointer over the image), or null: what tests check against
+  // real pointer motion (tests/cli/gpu/window_hover.sh).
+  const HeatmapProbe& probe = stats.heatmap.probe;
+  const nlohmann::json hover =
+      probe.valid ? nlohmann::json{{"x", probe.x}, {"y", probe.y}, {"state", probe.state}} : nlohmann::json(nullptr);
   return {{"frame", stats.frameIndex},
           {"gpu_frame_ms", stats.frameMs},
           {"wall_ms", stats.wallMs},
@@ -23,6 +28,7 @@ nlohmann::json frameJson(const FrameStats& stats, const Settings& settings) {
           {"sort_policy", toString(settings.sortPolicy)},
           {"stages", stages},
           {"sorted_after", sorted},
+          {"hover", hover},
           {"sort_reasons", reasons}};
 }
 
