@@ -1,4 +1,5 @@
-// Colour helpers shared by the display shaders; renderer/tonemap_reference.cpp is the C++ twin.
+// Colour helpers of the display shader (tonemap.comp). They have no C++ twin: what
+// they compute is checked where images are compared, GPU against GPU, bit for bit.
 #ifndef RAYLAB_COLOR_GLSL
 #define RAYLAB_COLOR_GLSL
 

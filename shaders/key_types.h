@@ -1,6 +1,6 @@
 // Structs shared by the key stage's C++ side and its shaders (keys.comp, key_oracle.comp, key_learn.comp,
 // key_merge.comp): the grid, the length cache and the push constants. Data and macros only, scalar block
-// layout; tests/test_key_functions.cpp asserts the host sizes.
+// layout; tests/cpu/test_key_functions.cpp asserts the host sizes.
 #ifndef RAYLAB_KEY_TYPES_H
 #define RAYLAB_KEY_TYPES_H
 

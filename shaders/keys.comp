@@ -1,7 +1,7 @@
 #version 460
 // Sort keys of the current path set: key, payload (the path's index) and the predicted ray length, one
 // thread per path. The strategy is specialization constant 1 (RL_KEY_*), so each variant compiles to
-// only its own key function (keys.glsl, twin of renderer/key_functions.cpp).
+// only its own key function (keys.glsl, twin of renderer/reorder/key_functions.cpp).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require

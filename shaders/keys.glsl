@@ -1,5 +1,5 @@
 // The key functions, one per strategy, each the twin of the function of the same name in
-// renderer/key_functions.cpp. The GPU keys must equal the C++ keys bit for bit (tests/test_key_gpu.cpp), so:
+// renderer/reorder/key_functions.cpp. The GPU keys must equal the C++ keys bit for bit (tests/gpu/test_key_gpu.cpp), so:
 // every float result is `precise` (no fused multiply-add the C++ side would not do), expressions are
 // written in the same order on both sides, and division, sqrt, log and cos are replaced by deterministic
 // Newton iterations and polynomials (Vulkan lets those built-ins be approximate, differently per device).
@@ -163,7 +163,7 @@ uvec2 octahedralCell(vec3 d, uint bitsU, uint bitsV) {
 
 float clampLength(float x, float maxLength) { return x > 0.0 ? min(x, maxLength) : 0.0; }
 
-// ---- length cache lookup (the table is built on the host by renderer/length_cache.cpp, same hash)
+// ---- length cache lookup (the table is built on the host by renderer/reorder/length_cache.cpp, same hash)
 
 uint hashCell(uint x) {
   x ^= x >> 16;

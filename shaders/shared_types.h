@@ -1,5 +1,5 @@
 // Structs shared by C++ and GLSL: data and macros only. Included by every compute shader and by the host
-// code that fills the buffers; tests/test_shared_layout.cpp asserts sizes and offsets on the host so the
+// code that fills the buffers; tests/cpu/test_shared_layout.cpp asserts sizes and offsets on the host so the
 // two sides cannot drift. Everything uses the GLSL scalar block layout (vec3 = 12 bytes, align 4), which
 // matches glm's C++ layout. Buffers are passed as device addresses (GL_EXT_buffer_reference), so no
 // descriptor sets exist: a stage's push constants hold the addresses it reads and writes.

@@ -1,6 +1,6 @@
-// Push constants of the sort shaders, shared by C++ (renderer/gpu_sort.cpp) and GLSL (shaders/sort_*.comp):
+// Push constants of the sort shaders, shared by C++ (renderer/reorder/gpu_sort.cpp) and GLSL (shaders/sort_*.comp):
 // data and macros only. Buffers are device addresses (uint64 on the host, buffer references in GLSL);
-// tests/test_gpu_sort.cpp asserts the host sizes so the two sides cannot drift.
+// tests/gpu/test_gpu_sort.cpp asserts the host sizes so the two sides cannot drift.
 #ifndef RAYLAB_SORT_TYPES_H
 #define RAYLAB_SORT_TYPES_H
 

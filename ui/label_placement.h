@@ -1,6 +1,6 @@
 // Where the labels of a scatter plot go so that none overlaps another label or a marker and all stay inside
 // the plot: each label tries the eight places around its marker, then the same farther out (drawn with a
-// leader line back to the marker). Plain C++ (tests/cpu/test_label_placement.cpp); scatter_plot draws it.
+// leader line back to the marker). Plain C++ (tests/cpu/test_panel_layout.cpp); scatter_plot draws it.
 #pragma once
 
 #include <vector>

@@ -1,5 +1,5 @@
 // C++ twins of the GLSL key functions in shaders/keys.glsl: same names, same arguments, same operation
-// order, so a key computed here equals the GPU's bit for bit (tests/test_key_gpu.cpp checks it). The
+// order, so a key computed here equals the GPU's bit for bit (tests/gpu/test_key_gpu.cpp checks it). The
 // renderer never calls these per path; they are the reference the shaders are tested against, and the
 // grid helpers (cellOf, mortonCell) are shared with the accuracy figures and the cache builder.
 #pragma once

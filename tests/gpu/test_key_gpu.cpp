@@ -1,5 +1,5 @@
 // GPU keys against their C++ twins: for every strategy and several grid settings, keys.comp must produce
-// exactly the keys and predicted lengths of renderer/key_functions.cpp for the same paths (lavapipe, with
+// exactly the keys and predicted lengths of renderer/reorder/key_functions.cpp for the same paths (lavapipe, with
 // validation on). The adaptive strategies are first taught some lengths so their cache lookups are real.
 #include <algorithm>
 #include <cmath>
