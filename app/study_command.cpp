@@ -17,6 +17,7 @@
 #include "app/command_errors.h"
 #include "app/scene_setup.h"
 #include "app/study_plan.h"
+#include "app/study_thesis.h"
 #include "renderer/checked_write.h"
 #include "renderer/git_revision.h"
 #include "renderer/vk/vk_context.h"
@@ -27,6 +28,7 @@ namespace {
 const char* kStudyHelp =
     "usage: raylab study SCENE[@VIEW] [--quick] [--out-dir DIR] [--sizes WxH,...] [--bounces N,...]\n"
     "                    [--strategies a,b,...] [--device NAME|N] [--validate[=sync|gpu-av]] [--shard i/K]\n"
+    "       raylab study temple --thesis [--out-dir DIR] [--device NAME|N]\n"
     "       raylab study --merge DIR... [--out-dir OUT]\n"
     "Where sorting pays on one scene: one `raylab bench` sweep per image size (paths per frame from 131k to\n"
     "8.4M), 4 and 8 bounces, the strategies dead-last, fixed, two-point and average with the always and auto\n"
@@ -40,6 +42,12 @@ const char* kStudyHelp =
     "                      in plan order) with g mod K = i, 0 <= i < K: one of K disjoint parts, for K GPUs\n"
     "                      or hosts (every shard with the same flags but --out-dir and --device); writes the\n"
     "                      results but no report\n"
+    "  --thesis            the source study's Tables 4.1-4.2 and section 4.3 re-measured: temple alley, hall and\n"
+    "                      openings at 2048x1024 (256x128 on a CPU device; one --sizes value replaces it),\n"
+    "                      4 bounces; unsorted, fixed, origin-direction, average, and gaussian reset at 20 on\n"
+    "                      a camera-clamped grid; bitonic and radix. DIR/thesis.md and thesis.html put each\n"
+    "                      figure beside the thesis's, both as ratios to their own unsorted path tracer, and\n"
+    "                      say which of its findings hold\n"
     "  --merge DIR...      put the K shard folders of one study back together in OUT (default study-out):\n"
     "                      each size with `raylab bench --merge`, then the report; refuses folders of other\n"
     "                      studies, a shard missing or given twice (exit 2)\n";
@@ -53,6 +61,7 @@ StudyOptions parseStudyOptions(const std::vector<std::string>& args) {
       return args[++i];
     };
     if (a == "--quick") o.quick = true;
+    else if (a == "--thesis") o.thesis = true;
     else if (a == "--out-dir") o.outDir = value();
     else if (a == "--sizes") o.sizes = splitList(value());
     else if (a == "--bounces") o.bounces = value();
@@ -222,6 +231,7 @@ int runStudyCommand(const std::vector<std::string>& args) {
   try {
     o = parseStudyOptions(args);
     cpu = isCpuDevice(o);
+    if (o.thesis) return runThesisStudy(o, cpu);
     const StudyPreset preset = studyPreset(o.quick, cpu);
     plan = studyPlan(o, preset);
     if (cpu && o.sizes.empty())

@@ -26,6 +26,7 @@ struct StudyOptions {
   std::string target;  // SCENE[@VIEW]
   std::string outDir = "study-out";
   bool quick = false;
+  bool thesis = false;              // --thesis: the source study's table (app/study_thesis.h)
   std::vector<std::string> sizes;   // --sizes: the preset's otherwise
   std::string bounces, strategies;  // --bounces, --strategies: the preset's otherwise
   std::string device;

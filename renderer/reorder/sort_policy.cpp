@@ -84,8 +84,12 @@ SortPlan SortPolicyModel::plan(SortPolicy policy, uint32_t bounces) const {
       bool close = false;
       const bool sorts = decide(b, decision, close);
       const Arm& other = sorts ? e.unsorted : e.sorted;
-      const uint32_t age = frames_ - other.lastFrame;
-      if (age >= (close ? kNoisyStaleFrames : kStaleFrames)) {
+      const uint32_t age = frames_ - other.lastFrame, every = close ? kNoisyStaleFrames : kStaleFrames;
+      // Probes fall on frames that are multiples of their interval, for every bounce alike, so one frame in
+      // `every` at most probes, all the bounces that are due in it: probed each on its own schedule, the
+      // bounces put a probe in 28-31% of the frames of a noisy history (tests/cpu/test_sort_policy.cpp,
+      // AutoProbesShareFrames), and a bench cell's median frame could be a probing one.
+      if (age >= every && frames_ % every == 0) {
         s = !sorts;
         why = std::string(s ? "probe: sorted" : "probe: unsorted") + ", measured " + std::to_string(age) +
               " frames ago (" + decision + ")";

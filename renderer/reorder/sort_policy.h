@@ -18,7 +18,8 @@
 //   otherwise: sort iff gain = unsorted - (sorted - cost) exceeds cost by kSigmas standard errors of the
 //     difference (the margin, from the measured spread; 0 for a noiseless history). The arm not taken is
 //     measured again (the bounce flips for one frame, "probe") once its last sample is kStaleFrames old,
-//     or kNoisyStaleFrames when the difference is within the margin (flipping then costs little).
+//     or kNoisyStaleFrames when the difference is within the margin (flipping then costs little), on the
+//     first frame after that whose count is a multiple of that interval: the bounces probe in shared frames.
 // Attribution when stages fuse: with Settings::fusion gather the reorder is timed inside the next trace,
 // so in the sorted arm's work of b+1, which the decision adds to cost anyway (the reason text then shows a
 // smaller gain and cost, the same difference). With fused trace+shade a sort after b makes b+1 split

@@ -2,6 +2,8 @@
 // then sorts after a bounce exactly when the measured gain of the next bounce exceeds the measured cost by
 // the noise margin, and its decisions are a function of the cost history alone (the same history gives the
 // same plans). Replayed histories: a cold first frame, noisy frames, a view change.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "renderer/reorder/sort_policy.h"
@@ -84,9 +86,11 @@ TEST(SortPolicy, AutoWarmsUpExploresThenSortsOnlyWhereItPays) {
   EXPECT_EQ(p[6].reasons[1], "gain 0.200 <= cost 0.500 ms");
   EXPECT_EQ(p[6].reasons[0], "gain 1.000 > cost 0.500 ms");
   // The arm not taken (sorted after bounce 1, last at frame 4) is measured again once it is kStaleFrames old
-  // (a noiseless history: never sooner).
-  EXPECT_EQ(p[4 + SortPolicyModel::kStaleFrames].reasons[1], "probe: sorted, measured 16 frames ago (gain 0.200 <= cost 0.500 ms)");
-  EXPECT_TRUE(p[4 + SortPolicyModel::kStaleFrames].sortAfter[1]);
+  // (a noiseless history: never sooner), on the next frame whose count is a multiple of kStaleFrames: 32.
+  static_assert(SortPolicyModel::kStaleFrames == 16);
+  for (int f = 6; f < 32; ++f) EXPECT_FALSE(isProbe(p[f], 1)) << f;
+  EXPECT_EQ(p[32].reasons[1], "probe: sorted, measured 28 frames ago (gain 0.200 <= cost 0.500 ms)");
+  EXPECT_TRUE(p[32].sortAfter[1]);
 }
 
 TEST(SortPolicy, AutoNeverSortsWhenSortingCostsMoreThanItSaves) {
@@ -145,6 +149,37 @@ TEST(SortPolicy, AutoFollowsAViewChange) {
   std::vector<SortPlan> before(p.begin(), p.begin() + 80);
   expectDecisions(before, 6, {true, false, false});
   expectDecisions(p, 80 + 3 * int(SortPolicyModel::kStaleFrames), {false, true, false});
+}
+
+// H200 Sponza at 512x256 (131k paths): sorting costs more than it saves after every bounce, by little
+// against the noise, so the decisions are "close" and each bounce re-measures the sorted arm every
+// kNoisyStaleFrames frames. Probed on their own schedules, the bounces put a probe in most frames, and the
+// median frame of a bench cell was a probing one: auto read 1.20 ms against never's 1.15 (4.8% over). Probes
+// share frames: at most one frame in kNoisyStaleFrames probes, whichever bounces are due.
+TEST(SortPolicy, AutoProbesShareFrames) {
+  for (uint32_t seed : {1u, 2u, 3u, 4u, 5u}) {
+    SortPolicyModel m;
+    uint32_t rng = seed;
+    auto noise = [&] {
+      rng = rng * 1664525u + 1013904223u;
+      return 0.3 * double(rng >> 8) / double(1u << 24) - 0.15;
+    };
+    // gain - cost about -0.1 ms a bounce, noise +-0.15 ms.
+    std::vector<SortPlan> p = replay(m, 4, 200, [&](int, const SortPlan& plan) {
+      const std::vector<double> unsorted{0.3, 0.3 + noise(), 0.28 + noise(), 0.25 + noise()},
+          sorted{0.3, 0.25 + noise(), 0.24 + noise(), 0.2 + noise()};
+      return frameTimes(plan, unsorted, sorted, 0.15 + 0.3 * std::abs(noise()));
+    });
+    SCOPED_TRACE(seed);
+    int probing = 0, frames = 0;
+    for (size_t f = 16; f < p.size(); ++f, ++frames) {
+      bool any = false;
+      for (size_t b = 0; b + 1 < 4; ++b) any = any || isProbe(p[f], b);
+      probing += any;
+    }
+    EXPECT_LE(probing * int(SortPolicyModel::kNoisyStaleFrames), frames) << probing << " of " << frames << " frames probe";
+    expectDecisions(p, 16, {false, false, false});
+  }
 }
 
 TEST(SortPolicy, AutoIsDeterministicForACostHistory) {
