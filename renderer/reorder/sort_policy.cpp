@@ -88,7 +88,11 @@ SortPlan SortPolicyModel::plan(SortPolicy policy, uint32_t bounces) const {
       // Probes fall on frames that are multiples of their interval, for every bounce alike, so one frame in
       // `every` at most probes, all the bounces that are due in it: probed each on its own schedule, the
       // bounces put a probe in 28-31% of the frames of a noisy history (tests/cpu/test_sort_policy.cpp,
-      // AutoProbesShareFrames), and a bench cell's median frame could be a probing one.
+      // AutoProbesShareFrames), and a bench cell's median frame could be a probing one. Tried and not kept:
+      // doubling a bounce's interval after each probe that confirmed its decision (up to 64 frames): its
+      // stale arm then held a wrong decision in that noisy history (bounce 0 sorted at frame 45: gain 0.225
+      // > cost 0.174 + margin 0.049 ms), while on the H200 the miss it aimed at is within the cells' noise
+      // (docs/results/h200-scale-paths/policy-matrix/shared-probes).
       if (age >= every && frames_ % every == 0) {
         s = !sorts;
         why = std::string(s ? "probe: sorted" : "probe: unsorted") + ", measured " + std::to_string(age) +
