@@ -50,6 +50,12 @@ std::vector<SortPlan> replay(SortPolicyModel& m, uint32_t bounces, int frames, T
   return plans;
 }
 
+// A seeded LCG's next value in [0, 1): the noisy histories' noise, the same on every machine.
+double lcgUniform(uint32_t& state) {
+  state = state * 1664525u + 1013904223u;
+  return double(state >> 8) / double(1u << 24);
+}
+
 bool isProbe(const SortPlan& p, size_t b) { return p.reasons[b].rfind("probe", 0) == 0; }
 
 // From frame `from` on, bounce b sorts exactly when `want[b]`, but in probe frames (which must be rare).
@@ -121,10 +127,7 @@ TEST(SortPolicy, AutoDecidesThroughNoise) {
   for (uint32_t seed : {1u, 2u, 3u, 4u}) {
     SortPolicyModel m;
     uint32_t rng = seed;
-    auto noise = [&] {
-      rng = rng * 1664525u + 1013904223u;
-      return 0.6 * double(rng >> 8) / double(1u << 24) - 0.3;
-    };
+    auto noise = [&] { return 0.6 * lcgUniform(rng) - 0.3; };
     // gain - cost: bounce 0 +1.2 ms, bounce 1 -1.0 ms, bounce 2 +0.8 ms.
     std::vector<SortPlan> p = replay(m, 4, 200, [&](int, const SortPlan& plan) {
       const std::vector<double> unsorted{3.0, 4.0 + noise(), 2.0 + noise(), 3.0 + noise()},
@@ -160,10 +163,7 @@ TEST(SortPolicy, AutoProbesShareFrames) {
   for (uint32_t seed : {1u, 2u, 3u, 4u, 5u}) {
     SortPolicyModel m;
     uint32_t rng = seed;
-    auto noise = [&] {
-      rng = rng * 1664525u + 1013904223u;
-      return 0.3 * double(rng >> 8) / double(1u << 24) - 0.15;
-    };
+    auto noise = [&] { return 0.3 * lcgUniform(rng) - 0.15; };
     // gain - cost about -0.1 ms a bounce, noise +-0.15 ms.
     std::vector<SortPlan> p = replay(m, 4, 200, [&](int, const SortPlan& plan) {
       const std::vector<double> unsorted{0.3, 0.3 + noise(), 0.28 + noise(), 0.25 + noise()},
@@ -188,10 +188,7 @@ TEST(SortPolicy, AutoIsDeterministicForACostHistory) {
     SortPolicyModel m;
     std::vector<std::vector<bool>> plans;
     uint32_t rng = seed;
-    auto noise = [&] {
-      rng = rng * 1664525u + 1013904223u;
-      return 0.3 * double(rng >> 8) / double(1u << 24);
-    };
+    auto noise = [&] { return 0.3 * lcgUniform(rng); };
     for (int f = 0; f < 300; ++f) {
       SortPlan p = m.plan(SortPolicy::Auto, 5);
       plans.push_back(p.sortAfter);
