@@ -23,9 +23,9 @@ std::vector<ThesisSweep> thesisPlan(const StudyOptions& o, bool cpu) {
       "--bounces", "4", "--sorts", "bitonic,radix", "--timed-frames", cpu ? "2" : "8", "--warmup", cpu ? "1" : "3",
       "--reference-spp", cpu ? "4" : "16", "--no-charts"};
   std::vector<ThesisSweep> sweeps = {
-      {o.outDir + "/thesis-keys", {"--strategies", "fixed,origin-direction,average"}},
+      {o.outDir + "/thesis-keys", size, {"--strategies", "fixed,origin-direction,average"}},
       // Section 4.3: "the distribution resets when the variance exceeds 20", on the camera-clamped grid.
-      {o.outDir + "/thesis-gaussian", {"--strategies", "gaussian", "--gauss-resets", "20", "--clamps", "50"}},
+      {o.outDir + "/thesis-gaussian", size, {"--strategies", "gaussian", "--gauss-resets", "20", "--clamps", "50"}},
   };
   for (ThesisSweep& s : sweeps) {
     s.benchArgs.insert(s.benchArgs.begin(), common.begin(), common.end());
@@ -51,7 +51,7 @@ int runThesisStudy(const StudyOptions& o, bool cpu) {
     return kExitFailure;
   }
   std::vector<std::string> args = {"--out", o.outDir + "/thesis"};
-  const std::string size = sweeps.front().benchArgs[3];
+  const std::string& size = sweeps.front().size;
   if (size != "2048x1024" || cpu)
     args.insert(args.end(), {"--note", std::string("Measured ") + (cpu ? "on a CPU device " : "") + "at " + size +
                                            ", not the thesis's 2048x1024 on its RTX GPU."});

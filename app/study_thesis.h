@@ -15,6 +15,7 @@ namespace raylab {
 
 struct ThesisSweep {
   std::string folder;                  // OUT/thesis-keys, OUT/thesis-gaussian
+  std::string size;                    // WxH: 2048x1024, the CPU's or --sizes's
   std::vector<std::string> benchArgs;  // its `raylab bench` arguments
 };
 

@@ -30,7 +30,6 @@ THESIS = {
     "gaussian": {"pt_mean": 30.87, "sort": 82.95},
 }
 THESIS_UNSORTED_MEAN = 41.08
-THESIS_WARP = 32  # the thesis's GPU (NVIDIA): threads per warp out of 32
 # Our strategies for the thesis's methods: its Meister row is origin+direction keys with average lengths,
 # which are two strategies here (the key, and the cached lengths with grid keys).
 OURS = [("unsorted", "none"), ("fixed", "fixed"), ("meister", "origin-direction"), ("meister", "average"),
@@ -98,6 +97,14 @@ def table(cells):
     return rows
 
 
+def ours(rows, key, field, view=None):
+    """Our figure of `key` at `view`, or its mean over the three views (view None)."""
+    per = rows.get(key, {})
+    if view is None:
+        return mean([per[v][field] for v in VIEWS if v in per])
+    return per[view][field] if view in per else math.nan
+
+
 def thesis_pt(method, view_index):
     t = THESIS[method]
     if view_index is None:
@@ -119,21 +126,15 @@ def fmt(v, digits=2):
 def lines_for(rows, view):
     """The table's rows for one view (None: the mean over the three)."""
     index = None if view is None else VIEWS.index(view)
-    def ours(key, field):
-        per = rows.get(key, {})
-        if view is None:
-            return mean([per[v][field] for v in VIEWS if v in per])
-        return per[view][field] if view in per else math.nan
-
-    base_pt = ours(("unsorted", "none", "-"), "pt")
-    base_frame = ours(("unsorted", "none", "-"), "frame")
+    base_pt = ours(rows, ("unsorted", "none", "-"), "pt", view)
+    base_frame = ours(rows, ("unsorted", "none", "-"), "frame", view)
     thesis_base = THESIS_UNSORTED_MEAN if index is None else THESIS["unsorted"]["pt"][index]
     out = []
     order = sorted(rows, key=lambda k: ([m for m, _ in OURS].index(k[0]), k[1], k[2]))
     for key in order:
         method, strategy, sort = key
-        pt, tpw = ours(key, "pt"), ours(key, "tpw")
-        sort_ms, frame = ours(key, "sort_ms"), ours(key, "frame")
+        pt, tpw = ours(rows, key, "pt", view), ours(rows, key, "tpw", view)
+        sort_ms, frame = ours(rows, key, "sort_ms", view), ours(rows, key, "frame", view)
         out.append([strategy, sort, fmt(pt), fmt(pt / base_pt), fmt(thesis_pt(method, index) / thesis_base),
                     fmt(tpw, 1), fmt(thesis_tpw(method, index), 1), fmt(sort_ms), fmt(sort_ms / base_pt),
                     fmt(THESIS[method]["sort"] / thesis_base), fmt(frame), fmt(frame / base_frame)])
@@ -148,8 +149,7 @@ HEADER = ["method", "sort", "path tracer ms", "/ unsorted", "thesis / unsorted",
 def findings(rows):
     """Each of the thesis's findings and whether it holds here, from the means over the three views."""
     def m(key, field):
-        per = rows.get(key, {})
-        return mean([per[v][field] for v in VIEWS if v in per])
+        return ours(rows, key, field)
 
     base = ("unsorted", "none", "-")
     out = []
@@ -187,7 +187,7 @@ def findings(rows):
     return out
 
 
-def markdown(rows, note):
+def markdown(rows, found, note):
     text = ["# The source study's table, re-measured", ""]
     if note:
         text += [note, ""]
@@ -196,18 +196,18 @@ def markdown(rows, note):
                  "| " + " | ".join(HEADER) + " |", "|" + "---|" * len(HEADER)]
         text += ["| " + " | ".join(r) + " |" for r in lines_for(rows, view)]
         text.append("")
-    text += ["## Findings", ""] + [f"- {f}" for f in findings(rows)] + [""]
+    text += ["## Findings", ""] + [f"- {f}" for f in found] + [""]
     return "\n".join(text)
 
 
-def html_page(rows, note):
+def html_page(rows, found, note):
     parts = ["<!doctype html><meta charset=utf-8><title>raylab: the thesis's table</title>",
              "<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}"
              "td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}</style>",
              "<h1>The source study's table, re-measured</h1>"]
     if note:
         parts.append(f"<p>{html.escape(note)}</p>")
-    parts.append("<h2>Findings</h2><ul>" + "".join(f"<li>{html.escape(f)}</li>" for f in findings(rows)) + "</ul>")
+    parts.append("<h2>Findings</h2><ul>" + "".join(f"<li>{html.escape(f)}</li>" for f in found) + "</ul>")
     for view in VIEWS + [None]:
         parts.append(f"<h2>{'mean of the three views' if view is None else view}</h2><table><tr>" +
                      "".join(f"<th>{html.escape(h)}</th>" for h in HEADER) + "</tr>")
@@ -230,7 +230,8 @@ def main(argv):
     if not out or not folders:
         fail("usage: thesis_table.py --out PREFIX [--note TEXT] BENCH_DIR...")
     rows = table(load(folders))
-    md, page = markdown(rows, note), html_page(rows, note)
+    found = findings(rows)
+    md, page = markdown(rows, found, note), html_page(rows, found, note)
     write_with(out + ".md", lambda f: f.write(md), "w")
     write_with(out + ".html", lambda f: f.write(page), "w")
     print(md)

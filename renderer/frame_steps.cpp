@@ -15,22 +15,6 @@
 
 namespace raylab {
 
-const ComputePipeline& PathTracer::shadeVariant(bool compact, bool fusesTraceShade) {
-  if (!compact && !fusesTraceShade) return shade_.get();
-  std::optional<ComputePipeline>& p = shadeVariants_[compact ? 1 : 0][fusesTraceShade ? 1 : 0];
-  if (!p)
-    p.emplace(ctx_, "shade", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE,
-              SpecConstants{{RL_SPEC_COMPACT, compact ? 1u : 0u}, {RL_SPEC_FUSES_TRACE_SHADE, fusesTraceShade ? 1u : 0u}});
-  return *p;
-}
-
-const ComputePipeline& PathTracer::traceFusingGather(bool counting) {
-  std::optional<ComputePipeline>& p = traceFusingGather_[counting ? 1 : 0];
-  if (!p) p.emplace(ctx_, "trace", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE,
-                    SpecConstants{{RL_SPEC_COUNT_SIMT, counting ? 1u : 0u}, {RL_SPEC_FUSES_GATHER, 1u}});
-  return *p;
-}
-
 void PathTracer::addStep(const char* name, int bounce, std::function<void(VkCommandBuffer)> record) {
   steps_.push_back({name, bounce, std::move(record)});
 }
@@ -63,7 +47,7 @@ void PathTracer::buildSteps() {
 void PathTracer::buildMegakernelSteps(const gpu::PathStagePush& push) {
   addStep("megakernel", -1, [this, push](VkCommandBuffer cmd) {
     const uint32_t n = buffers_->pathCount;
-    const ComputePipeline& megakernel = (settings_.countSimt ? megakernelCounting_ : megakernel_).get();
+    const ComputePipeline& megakernel = megakernel_[settings_.countSimt].get();
     recordStage(cmd, &timer_, "megakernel", [&] {
       if (!usesRt()) {
         megakernel.dispatchThreads(cmd, push, n);
@@ -116,12 +100,12 @@ void PathTracer::recordShade(VkCommandBuffer cmd, const gpu::PathStagePush& push
   if (usesRt()) {
     rt_->shade(cmd, push, buffers_->pathCount);
   } else if (compacts) {
-    shadeVariant(true, fusesTraceShade).dispatchIndirect(cmd, push, live, liveDispatch);
+    shade_[1][fusesTraceShade].get().dispatchIndirect(cmd, push, live, liveDispatch);
     computeBarrier(cmd);
     const VkBufferCopy packed{PathBuffers::liveAppendOffset(bounce), 0, PathBuffers::kLiveBlockBytes};
     vkCmdCopyBuffer(cmd, live, live, 1, &packed);
   } else {
-    (keysInShade ? pathSorter_->shadeWithKeys() : shadeVariant(false, fusesTraceShade))
+    (keysInShade ? pathSorter_->shadeWithKeys() : shade_[0][fusesTraceShade].get())
         .dispatchIndirect(cmd, push, live, liveDispatch);
   }
 }
@@ -180,9 +164,9 @@ void PathTracer::buildTraceStep(uint32_t b, const gpu::PathStagePush& push, bool
       if (usesRt())
         rt_->traceRays(cmd, push, n);  // every path; the shader skips those past the live count
       else if (gathers)
-        traceFusingGather(settings_.countSimt).dispatchThreads(cmd, push, n);  // every slot: it finds the live count
+        trace_[settings_.countSimt][1].get().dispatchThreads(cmd, push, n);  // every slot: it finds the live count
       else
-        (settings_.countSimt ? traceCounting_ : trace_).get()
+        trace_[settings_.countSimt][0].get()
             .dispatchIndirect(cmd, push, buffers_->live.handle(), PathBuffers::kLiveDispatchOffset);
     });
   });

@@ -32,6 +32,13 @@ gpu::GpuCamera makeGpuCamera(const Viewpoint& v, uint32_t width, uint32_t height
   return c;
 }
 
+namespace {
+// A path stage (one thread per path) as a pipeline built on first use, with its variant's constants.
+LazyPipeline pathStage(const VulkanContext& ctx, const char* shader, SpecConstants variant) {
+  return LazyPipeline(ctx, shader, sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, std::move(variant));
+}
+}  // namespace
+
 PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera)
     : PathTracer(ctx, scene, std::make_shared<GpuSceneData>(ctx, scene), settings, camera) {}
 
@@ -48,11 +55,16 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared
       generate_(ctx, "generate", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
       accumulate_(ctx, "accumulate", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
       tonemap_(ctx, "tonemap", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
-      trace_(ctx, "trace", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {{RL_SPEC_COUNT_SIMT, 0}}),
-      traceCounting_(ctx, "trace", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {{RL_SPEC_COUNT_SIMT, 1}}),
-      shade_(ctx, "shade", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
-      megakernel_(ctx, "megakernel", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {{RL_SPEC_COUNT_SIMT, 0}}),
-      megakernelCounting_(ctx, "megakernel", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {{RL_SPEC_COUNT_SIMT, 1}}),
+      trace_{{pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 0}, {RL_SPEC_FUSES_GATHER, 0}}),
+               pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 0}, {RL_SPEC_FUSES_GATHER, 1}})},
+              {pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 1}, {RL_SPEC_FUSES_GATHER, 0}}),
+               pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 1}, {RL_SPEC_FUSES_GATHER, 1}})}},
+      shade_{{pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 0}}),
+               pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 1}})},
+              {pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 1}, {RL_SPEC_FUSES_TRACE_SHADE, 0}}),
+               pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 1}, {RL_SPEC_FUSES_TRACE_SHADE, 1}})}},
+      megakernel_{pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 0}}),
+                  pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 1}})},
       timer_(ctx) {
   checkSupported(settings_);
   allocate();

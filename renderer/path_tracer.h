@@ -137,14 +137,10 @@ class PathTracer {
   std::unique_ptr<HeatmapPass> heatmap_;
   std::unique_ptr<RtTracer> rt_;  // acceleration structures and rt pipelines, made when the rt tracer is first used
   ComputePipeline generate_, accumulate_, tonemap_;  // every frame records them
-  LazyPipeline trace_, traceCounting_, shade_, megakernel_, megakernelCounting_;  // as the settings pick
-  // trace.comp's gathering variants (Settings::fusesGather), plain and counting, built on first use.
-  std::optional<ComputePipeline> traceFusingGather_[2];
-  const ComputePipeline& traceFusingGather(bool counting);
-  // shade.comp's variants that compact (Settings::compaction) and trace first (Settings::traceShade),
-  // indexed [compact][fusesTraceShade] ([0][0] is shade_), built on first use.
-  std::optional<ComputePipeline> shadeVariants_[2][2];
-  const ComputePipeline& shadeVariant(bool compact, bool fusesTraceShade);
+  // The variants the settings pick, each built on first use: trace.comp by [countSimt][fusesGather],
+  // shade.comp by [compact][fusesTraceShade] (Settings::compaction, Settings::traceShade), megakernel.comp by
+  // [countSimt].
+  LazyPipeline trace_[2][2], shade_[2][2], megakernel_[2];
   GpuTimer timer_;
   SortPolicyModel sortPolicy_;
   SortPlan framePlan_;  // which bounces the frame being recorded sorts after

@@ -45,8 +45,7 @@ std::vector<VkQueueFamilyProperties> queueFamilyProperties(VkPhysicalDevice phys
 
 // A family that does graphics too where there is one (the window draws its panels on the same queue), else
 // any compute family; none if the device computes nowhere.
-std::optional<uint32_t> chooseQueueFamily(VkPhysicalDevice physical) {
-  const std::vector<VkQueueFamilyProperties> families = queueFamilyProperties(physical);
+std::optional<uint32_t> chooseQueueFamily(const std::vector<VkQueueFamilyProperties>& families) {
   const VkQueueFlags both = VK_QUEUE_COMPUTE_BIT | VK_QUEUE_GRAPHICS_BIT;
   for (uint32_t i = 0; i < families.size(); ++i)
     if ((families[i].queueFlags & both) == both) return i;
@@ -136,10 +135,11 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
 }
 
 void VulkanContext::createDevice(const ContextOptions& options) {
-  const std::optional<uint32_t> family = chooseQueueFamily(physical_);
+  const std::vector<VkQueueFamilyProperties> families = queueFamilyProperties(physical_);
+  const std::optional<uint32_t> family = chooseQueueFamily(families);
   if (!family) throw VulkanError(info_.name + " has no compute queue");
   queueFamily_ = *family;
-  info_.timestamps = queueFamilyProperties(physical_)[queueFamily_].timestampValidBits > 0;
+  info_.timestamps = families[queueFamily_].timestampValidBits > 0;
 
   VkPhysicalDeviceVulkan12Features have12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   VkPhysicalDeviceFeatures2 have{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
