@@ -149,10 +149,14 @@ void emptyTree(Bvh& bvh) {
   bvh.nodes[0].leftOrFirst = 1;
 }
 
+double msSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
 }  // namespace
 
 Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize) {
-  auto start = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
   Bvh bvh;
   if (triangles.empty()) {
     emptyTree(bvh);
@@ -164,6 +168,8 @@ Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize) {
       lo = glm::min(lo, glm::vec3(source[i].lower_x, source[i].lower_y, source[i].lower_z));
       hi = glm::max(hi, glm::vec3(source[i].upper_x, source[i].upper_y, source[i].upper_z));
     }
+    bvh.stats.primitivesMs = msSince(start);
+    const auto embreeStart = std::chrono::steady_clock::now();
     EmbreeDevice device;
     RTCBVH handle = rtcNewBVH(device.get());
     device.check("rtcNewBVH");
@@ -180,6 +186,8 @@ Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize) {
       if (root || leafLimit >= kEmbreeLeafLimit || error.find("depth limit") == std::string::npos) break;
       leafLimit = std::min(leafLimit * 2, kEmbreeLeafLimit);
     }
+    bvh.stats.embreeMs = msSince(embreeStart);
+    const auto flattenStart = std::chrono::steady_clock::now();
     try {
       if (!root || !error.empty())
         throw std::runtime_error("buildBvh: Embree's rtcBuildBVH failed: " + (error.empty() ? "no tree" : error));
@@ -194,14 +202,15 @@ Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize) {
       throw;
     }
     rtcReleaseBVH(handle);
+    bvh.stats.flattenMs = msSince(flattenStart);
     if (bvh.triangleOrder.size() != triangles.size())
       throw std::runtime_error("buildBvh: Embree's leaves hold " + std::to_string(bvh.triangleOrder.size()) +
                                " triangles of " + std::to_string(triangles.size()));
     bvh.stats.maxLeafSize = leafLimit;
   }
   bvh.stats.nodeCount = static_cast<uint32_t>(bvh.nodes.size());
+  bvh.stats.buildMs = msSince(start);
   bvh.stats.sahCost = bvhSahCost(bvh);
-  bvh.stats.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }
 

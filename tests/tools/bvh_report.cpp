@@ -1,7 +1,7 @@
 // raylab_bvh_report: builds the BVH of each scene named on the command line `repeats` times and prints one
 // JSON line a scene (triangles, nodes, leaves, depth, SAH cost, build ms: median and min of the wall time,
-// median of the process CPU time). It measures the builder on its own, without a Vulkan device or a render
-// (docs/results/embree-bvh/README.md).
+// median of the process CPU time; the medians of the build's phases and of the wide BVH's collapse). It
+// measures the builder on its own, without a Vulkan device or a render (docs/results/embree-bvh/README.md).
 // Usage: raylab_bvh_report [--repeats N] [--max-leaf N] [--out FILE] SCENE...
 #include <algorithm>
 #include <cstdio>
@@ -14,6 +14,7 @@
 
 #include "renderer/bvh.h"
 #include "renderer/bvh_sah.h"
+#include "renderer/bvh_wide.h"
 #include "renderer/checked_write.h"
 #include "scenes/scene_library.h"
 
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
   try {
     for (const std::string& name : scenes) {
       raylab::Scene scene = raylab::loadSceneByName(name);
-      std::vector<double> ms, cpuMs;
+      std::vector<double> ms, cpuMs, primitivesMs, embreeMs, flattenMs, collapseMs;
       raylab::Bvh bvh;
       for (int r = 0; r < repeats; ++r) {
         // Process CPU time (every thread's) beside the wall time: on a shared machine the wall time says
@@ -51,7 +52,16 @@ int main(int argc, char** argv) {
         bvh = maxLeaf ? raylab::buildBvh(scene.triangles, maxLeaf) : raylab::buildBvh(scene.triangles);
         cpuMs.push_back(1000.0 * static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC);
         ms.push_back(bvh.stats.buildMs);
+        primitivesMs.push_back(bvh.stats.primitivesMs);
+        embreeMs.push_back(bvh.stats.embreeMs);
+        flattenMs.push_back(bvh.stats.flattenMs);
+        raylab::Bvh copy = bvh;  // the collapse rewrites the binary tree's leaf order
+        collapseMs.push_back(raylab::collapseBvh(copy).stats.buildMs);
       }
+      auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+      };
       std::sort(ms.begin(), ms.end());
       std::sort(cpuMs.begin(), cpuMs.end());
       uint32_t largestLeaf = 0;
@@ -67,6 +77,10 @@ int main(int argc, char** argv) {
                             {"build_ms_median", ms[ms.size() / 2]},
                             {"build_ms_min", ms.front()},
                             {"build_cpu_ms_median", cpuMs[cpuMs.size() / 2]},
+                            {"primitives_ms_median", median(primitivesMs)},
+                            {"embree_ms_median", median(embreeMs)},
+                            {"flatten_ms_median", median(flattenMs)},
+                            {"wide_collapse_ms_median", median(collapseMs)},
                             {"repeats", repeats}};
       lines += row.dump() + "\n";
       std::printf("%s\n", row.dump().c_str());
