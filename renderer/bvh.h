@@ -19,10 +19,10 @@ struct BvhBuildStats {
   uint32_t maxLeafSize = 0;   // the leaf-size limit the build ended with (above the requested one only
                               // where the depth limit forced it)
   double sahCost = 0.0;       // renderer/bvh_sah.h's cost with both costs 1
-  double buildMs = 0.0;       // the whole buildBvh call: Embree device, build and flattening
+  double buildMs = 0.0;       // the whole buildBvh call: Embree device, build and flattening (not the
+                              // sahCost statistic, computed after it)
   // Its phases (wall ms), for finding where a build's time goes: the primitives' boxes (and the scene's),
-  // Embree's rtcBuildBVH (device creation included), the flattening into our layout; the SAH cost is not
-  // in buildMs.
+  // Embree's rtcBuildBVH (device creation included), the flattening into our layout.
   double primitivesMs = 0.0;
   double embreeMs = 0.0;
   double flattenMs = 0.0;

@@ -13,7 +13,6 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/bvh.h"
-#include "renderer/bvh_sah.h"
 #include "renderer/bvh_wide.h"
 #include "renderer/checked_write.h"
 #include "scenes/scene_library.h"
@@ -62,8 +61,6 @@ int main(int argc, char** argv) {
         std::sort(v.begin(), v.end());
         return v[v.size() / 2];
       };
-      std::sort(ms.begin(), ms.end());
-      std::sort(cpuMs.begin(), cpuMs.end());
       uint32_t largestLeaf = 0;
       for (const raylab::gpu::BvhNode& n : bvh.nodes) largestLeaf = std::max(largestLeaf, n.triCount);
       nlohmann::json row = {{"scene", name},
@@ -73,10 +70,10 @@ int main(int argc, char** argv) {
                             {"largest_leaf", largestLeaf},
                             {"max_leaf_size", maxLeaf ? nlohmann::json(maxLeaf) : nlohmann::json("default")},
                             {"max_depth", bvh.stats.maxDepth},
-                            {"sah_cost", raylab::bvhSahCost(bvh)},
-                            {"build_ms_median", ms[ms.size() / 2]},
-                            {"build_ms_min", ms.front()},
-                            {"build_cpu_ms_median", cpuMs[cpuMs.size() / 2]},
+                            {"sah_cost", bvh.stats.sahCost},
+                            {"build_ms_median", median(ms)},
+                            {"build_ms_min", *std::min_element(ms.begin(), ms.end())},
+                            {"build_cpu_ms_median", median(cpuMs)},
                             {"primitives_ms_median", median(primitivesMs)},
                             {"embree_ms_median", median(embreeMs)},
                             {"flatten_ms_median", median(flattenMs)},
