@@ -21,11 +21,13 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
 #include "renderer/bvh_sah.h"
 #include "renderer/embree_device.h"
+#include "renderer/parallel.h"
 
 namespace raylab {
 namespace {
@@ -67,16 +69,59 @@ void* embreeCreateLeaf(RTCThreadLocalAllocator alloc, const RTCBuildPrimitive* p
   return n;
 }
 
-RTCBuildPrimitive primitiveOf(const Triangle& t, uint32_t index) {
+bool finite(const Triangle& t) {
   for (const glm::vec3& v : t.v)  // checked per vertex: glm::min would drop a NaN
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-      throw std::invalid_argument("buildBvh: triangle " + std::to_string(index) + " has a non-finite vertex");
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return false;
+  return true;
+}
+
+RTCBuildPrimitive primitiveOf(const Triangle& t, uint32_t index) {
   glm::vec3 lo = glm::min(t.v[0], glm::min(t.v[1], t.v[2]));
   glm::vec3 hi = glm::max(t.v[0], glm::max(t.v[1], t.v[2]));
   RTCBuildPrimitive p;
   p.lower_x = lo.x, p.lower_y = lo.y, p.lower_z = lo.z, p.geomID = 0;
   p.upper_x = hi.x, p.upper_y = hi.y, p.upper_z = hi.z, p.primID = index;
   return p;
+}
+
+// One chunk of the primitives: its triangles' boxes and their union, or the first triangle with a non-finite
+// vertex.
+struct PrimitiveChunk {
+  glm::vec3 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
+  size_t firstBad = std::numeric_limits<size_t>::max();
+
+  void fill(const std::vector<Triangle>& triangles, size_t begin, size_t end, RTCBuildPrimitive* out) {
+    for (size_t i = begin; i < end; ++i) {
+      if (!finite(triangles[i])) {
+        firstBad = i;
+        return;
+      }
+      out[i] = primitiveOf(triangles[i], static_cast<uint32_t>(i));
+      lo = glm::min(lo, glm::vec3(out[i].lower_x, out[i].lower_y, out[i].lower_z));
+      hi = glm::max(hi, glm::vec3(out[i].upper_x, out[i].upper_y, out[i].upper_z));
+    }
+  }
+};
+
+// Fills `out` with every triangle's box, in chunks on `threads` threads, and sets the scene's box. The chunks'
+// boxes are merged in chunk order (glm::min keeps the earlier of equal values, as one loop would: the same
+// bits), and the error names the lowest bad triangle, whichever chunk finished first. A few chunks a thread
+// share the work out on a loaded machine.
+void fillPrimitives(const std::vector<Triangle>& triangles, uint32_t threads, RTCBuildPrimitive* out,
+                    glm::vec3& lo, glm::vec3& hi) {
+  const size_t chunkCount = threads == 1 ? 1 : 4 * size_t(threads);
+  const size_t chunkSize = (triangles.size() + chunkCount - 1) / chunkCount;
+  std::vector<PrimitiveChunk> chunks(chunkCount);
+  parallelFor(threads, chunkCount, [&](size_t c) {
+    chunks[c].fill(triangles, std::min(c * chunkSize, triangles.size()),
+                   std::min((c + 1) * chunkSize, triangles.size()), out);
+  });
+  for (const PrimitiveChunk& c : chunks) {
+    if (c.firstBad != std::numeric_limits<size_t>::max())
+      throw std::invalid_argument("buildBvh: triangle " + std::to_string(c.firstBad) + " has a non-finite vertex");
+    lo = glm::min(lo, c.lo);
+    hi = glm::max(hi, c.hi);
+  }
 }
 
 // Depth-first, siblings adjacent: a node's two children take the next two free slots, then the left
@@ -113,7 +158,7 @@ struct BvhFlattener {
 };
 
 // One rtcBuildBVH; null when Embree gave up (its depth limit with too small a leaf limit).
-const EmbreeBuildNode* runEmbreeBuild(RTCBVH handle, std::vector<RTCBuildPrimitive>& prims, uint32_t leafLimit) {
+const EmbreeBuildNode* runEmbreeBuild(RTCBVH handle, RTCBuildPrimitive* prims, size_t count, uint32_t leafLimit) {
   RTCBuildArguments args = rtcDefaultBuildArguments();
   args.byteSize = sizeof(args);
   args.buildQuality = RTC_BUILD_QUALITY_MEDIUM;
@@ -128,9 +173,9 @@ const EmbreeBuildNode* runEmbreeBuild(RTCBVH handle, std::vector<RTCBuildPrimiti
   args.traversalCost = 1.0f;
   args.intersectionCost = 1.0f;
   args.bvh = handle;
-  args.primitives = prims.data();
-  args.primitiveCount = prims.size();
-  args.primitiveArrayCapacity = prims.size();  // no room to split primitives into: no spatial splits
+  args.primitives = prims;
+  args.primitiveCount = count;
+  args.primitiveArrayCapacity = count;  // no room to split primitives into: no spatial splits
   args.createNode = embreeCreateNode;
   args.setNodeChildren = embreeSetChildren;
   args.setNodeBounds = embreeSetBounds;
@@ -155,19 +200,17 @@ double msSince(std::chrono::steady_clock::time_point t) {
 
 }  // namespace
 
-Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize) {
+Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize, uint32_t threads) {
   const auto start = std::chrono::steady_clock::now();
   Bvh bvh;
   if (triangles.empty()) {
     emptyTree(bvh);
   } else {
-    std::vector<RTCBuildPrimitive> source(triangles.size());
+    threads = workerThreads(threads, triangles.size(), 16384);
+    // Not zero-filled: every element is written before Embree reads it (10M triangles: 320 MB).
+    auto prims = std::make_unique_for_overwrite<RTCBuildPrimitive[]>(triangles.size());
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (size_t i = 0; i < triangles.size(); ++i) {
-      source[i] = primitiveOf(triangles[i], static_cast<uint32_t>(i));
-      lo = glm::min(lo, glm::vec3(source[i].lower_x, source[i].lower_y, source[i].lower_z));
-      hi = glm::max(hi, glm::vec3(source[i].upper_x, source[i].upper_y, source[i].upper_z));
-    }
+    fillPrimitives(triangles, threads, prims.get(), lo, hi);
     bvh.stats.primitivesMs = msSince(start);
     const auto embreeStart = std::chrono::steady_clock::now();
     EmbreeDevice device;
@@ -175,17 +218,18 @@ Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize) {
     device.check("rtcNewBVH");
     uint32_t leafLimit = std::clamp(maxLeafSize, 1u, kEmbreeLeafLimit);
     const EmbreeBuildNode* root = nullptr;
-    std::vector<RTCBuildPrimitive> prims;
     std::string error;
     // Embree throws away a build whose fallback splits reach maxDepth ("depth limit reached"); bigger
-    // leaves need fewer levels, so that one error is retried with twice the leaf limit.
-    while (true) {
-      prims = source;  // Embree reorders the array it is given
-      root = runEmbreeBuild(handle, prims, leafLimit);
+    // leaves need fewer levels, so that one error is retried with twice the leaf limit, from the primitives
+    // refilled (Embree reorders the array it is given).
+    for (bool retry = false;; retry = true) {
+      if (retry) fillPrimitives(triangles, threads, prims.get(), lo, hi);
+      root = runEmbreeBuild(handle, prims.get(), triangles.size(), leafLimit);
       error = device.takeError();
       if (root || leafLimit >= kEmbreeLeafLimit || error.find("depth limit") == std::string::npos) break;
       leafLimit = std::min(leafLimit * 2, kEmbreeLeafLimit);
     }
+    prims.reset();
     bvh.stats.embreeMs = msSince(embreeStart);
     const auto flattenStart = std::chrono::steady_clock::now();
     try {

@@ -5,7 +5,8 @@
 // --hash adds hashes of the output (the binary tree as built; the wide tree with the binary tree's rewritten
 // leaf order after the collapse; each with its stats but not the times), to check that a change to the
 // builder leaves its output bit for bit the same.
-// Usage: raylab_bvh_report [--repeats N] [--max-leaf N] [--hash] [--out FILE] SCENE...
+// --threads N: the threads of the phases around Embree's build (default: the hardware's).
+// Usage: raylab_bvh_report [--repeats N] [--max-leaf N] [--threads N] [--hash] [--out FILE] SCENE...
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
@@ -56,6 +57,7 @@ std::string wideHash(const raylab::Bvh& collapsed, const raylab::BvhWide& w) {
 int main(int argc, char** argv) {
   int repeats = 5;
   uint32_t maxLeaf = 0;  // 0: buildBvh's default
+  uint32_t threads = 0;  // 0: the hardware's
   bool hash = false;
   std::string outPath;
   std::vector<std::string> scenes;
@@ -65,6 +67,8 @@ int main(int argc, char** argv) {
       repeats = std::max(1, std::atoi(argv[++i]));
     } else if (a == "--max-leaf" && i + 1 < argc) {
       maxLeaf = static_cast<uint32_t>(std::max(1, std::atoi(argv[++i])));
+    } else if (a == "--threads" && i + 1 < argc) {
+      threads = static_cast<uint32_t>(std::max(1, std::atoi(argv[++i])));
     } else if (a == "--hash") {
       hash = true;
     } else if (a == "--out" && i + 1 < argc) {
@@ -74,7 +78,8 @@ int main(int argc, char** argv) {
     }
   }
   if (scenes.empty()) {
-    std::fprintf(stderr, "usage: raylab_bvh_report [--repeats N] [--max-leaf N] [--hash] [--out FILE] SCENE...\n");
+    std::fprintf(stderr,
+                 "usage: raylab_bvh_report [--repeats N] [--max-leaf N] [--threads N] [--hash] [--out FILE] SCENE...\n");
     return 2;
   }
   std::string lines;
@@ -88,7 +93,7 @@ int main(int argc, char** argv) {
         // Process CPU time (every thread's) beside the wall time: on a shared machine the wall time says
         // as much about the other jobs as about the builder.
         std::clock_t cpu0 = std::clock();
-        bvh = maxLeaf ? raylab::buildBvh(scene.triangles, maxLeaf) : raylab::buildBvh(scene.triangles);
+        bvh = raylab::buildBvh(scene.triangles, maxLeaf ? maxLeaf : raylab::kDefaultMaxLeafSize, threads);
         cpuMs.push_back(1000.0 * static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC);
         ms.push_back(bvh.stats.buildMs);
         primitivesMs.push_back(bvh.stats.primitivesMs);
