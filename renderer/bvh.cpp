@@ -18,6 +18,7 @@
 #include "renderer/bvh.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -39,21 +40,34 @@ constexpr uint32_t kEmbreeMaxDepth = RL_BVH_STACK - 2;
 constexpr uint32_t kEmbreeLeafLimit = RTC_BUILD_MAX_PRIMITIVES_PER_LEAF;
 
 // The temporary tree, in memory Embree hands out per thread (rtcThreadLocalAlloc) and frees with the BVH.
+// An interior node also counts its subtree (set with its children, which Embree sets once they are complete):
+// the flattening places every subtree at its final offsets from these counts, in parallel.
 struct EmbreeBuildNode {
-  uint32_t leafCount = 0;  // 0: interior
-  uint32_t* prims = nullptr;  // leaf: the primitive ids (triangle indices)
+  uint32_t leafCount = 0;       // 0: interior
+  uint32_t interiorBelow = 0;   // interior: the interior nodes of its subtree, itself included
+  union {
+    uint32_t* prims = nullptr;  // leaf: the primitive ids (triangle indices)
+    uint32_t trianglesBelow;    // interior: the triangles of its subtree's leaves
+  };
   EmbreeBuildNode* children[2] = {nullptr, nullptr};
   RTCBounds childBounds[2];
 };
 
+uint32_t interiorIn(const EmbreeBuildNode* n) { return n && n->leafCount == 0 ? n->interiorBelow : 0; }
+uint32_t trianglesIn(const EmbreeBuildNode* n) { return !n ? 0 : n->leafCount > 0 ? n->leafCount : n->trianglesBelow; }
+
 void* embreeCreateNode(RTCThreadLocalAllocator alloc, unsigned int childCount, void*) {
   if (childCount != 2) return nullptr;  // maxBranchingFactor is 2; anything else would be a broken build
-  return new (rtcThreadLocalAlloc(alloc, sizeof(EmbreeBuildNode), 16)) EmbreeBuildNode();
+  auto* n = new (rtcThreadLocalAlloc(alloc, sizeof(EmbreeBuildNode), 16)) EmbreeBuildNode();
+  n->trianglesBelow = 0;
+  return n;
 }
 
 void embreeSetChildren(void* node, void** children, unsigned int childCount, void*) {
   auto* n = static_cast<EmbreeBuildNode*>(node);
   for (unsigned int i = 0; i < childCount && i < 2; ++i) n->children[i] = static_cast<EmbreeBuildNode*>(children[i]);
+  n->interiorBelow = 1 + interiorIn(n->children[0]) + interiorIn(n->children[1]);
+  n->trianglesBelow = trianglesIn(n->children[0]) + trianglesIn(n->children[1]);
 }
 
 void embreeSetBounds(void* node, const RTCBounds** bounds, unsigned int childCount, void*) {
@@ -126,34 +140,97 @@ void fillPrimitives(const std::vector<Triangle>& triangles, uint32_t threads, RT
 
 // Depth-first, siblings adjacent: a node's two children take the next two free slots, then the left
 // subtree is laid out before the right one (the layout the hand-written builder had, and the traversal's).
+// With the subtrees' counts every subtree's place is known beforehand: its children pair at firstNode, its
+// descendants' pairs after it, its triangles from firstTriangle, the left subtree's before the right one's.
+// So subtrees are laid out in parallel into arrays of their final size, the same bits as one recursion.
+struct FlattenItem {
+  const EmbreeBuildNode* node;
+  uint32_t slot, depth, firstNode, firstTriangle;
+};
+
+struct FlattenStats {
+  uint32_t leafCount = 0, largestLeaf = 0, maxDepth = 0;
+};
+
 struct BvhFlattener {
   Bvh& bvh;
 
-  void leaf(uint32_t slot, const EmbreeBuildNode& n, uint32_t depth) {
-    bvh.nodes[slot].leftOrFirst = static_cast<uint32_t>(bvh.triangleOrder.size());
-    bvh.nodes[slot].triCount = n.leafCount;
-    bvh.triangleOrder.insert(bvh.triangleOrder.end(), n.prims, n.prims + n.leafCount);
-    bvh.stats.leafCount++;
-    bvh.stats.largestLeaf = std::max(bvh.stats.largestLeaf, n.leafCount);
-    bvh.stats.maxDepth = std::max(bvh.stats.maxDepth, depth);
+  void leaf(const FlattenItem& item, FlattenStats& stats) {
+    const EmbreeBuildNode& n = *item.node;
+    bvh.nodes[item.slot].leftOrFirst = item.firstTriangle;
+    bvh.nodes[item.slot].triCount = n.leafCount;
+    std::copy(n.prims, n.prims + n.leafCount, bvh.triangleOrder.begin() + item.firstTriangle);
+    stats.leafCount++;
+    stats.largestLeaf = std::max(stats.largestLeaf, n.leafCount);
+    stats.maxDepth = std::max(stats.maxDepth, item.depth);
   }
 
-  void node(uint32_t slot, const EmbreeBuildNode& n, uint32_t depth) {
-    if (depth >= RL_BVH_STACK) throw std::runtime_error("buildBvh: Embree's tree is deeper than RL_BVH_STACK");
-    if (n.leafCount > 0) return leaf(slot, n, depth);
+  // Writes interior node `item` and its children's boxes; returns the children to lay out.
+  std::array<FlattenItem, 2> expand(const FlattenItem& item) {
+    const EmbreeBuildNode& n = *item.node;
     if (!n.children[0] || !n.children[1])
       throw std::runtime_error("buildBvh: Embree left an interior node without two children");
-    uint32_t left = static_cast<uint32_t>(bvh.nodes.size());
-    bvh.nodes.resize(bvh.nodes.size() + 2);
-    bvh.nodes[slot].leftOrFirst = left;
-    bvh.nodes[slot].triCount = 0;
+    const EmbreeBuildNode* left = n.children[0];
+    const EmbreeBuildNode* right = n.children[1];
+    // The counts place every subtree: a wrong one would write into another's place, so each is checked.
+    if (n.interiorBelow != 1 + interiorIn(left) + interiorIn(right) ||
+        n.trianglesBelow != trianglesIn(left) + trianglesIn(right))
+      throw std::runtime_error("buildBvh: Embree's tree does not match its subtree counts");
+    bvh.nodes[item.slot].leftOrFirst = item.firstNode;
+    bvh.nodes[item.slot].triCount = 0;
     for (uint32_t c = 0; c < 2; ++c) {
       const RTCBounds& b = n.childBounds[c];
-      bvh.nodes[left + c].boundsMin = {b.lower_x, b.lower_y, b.lower_z};
-      bvh.nodes[left + c].boundsMax = {b.upper_x, b.upper_y, b.upper_z};
+      bvh.nodes[item.firstNode + c].boundsMin = {b.lower_x, b.lower_y, b.lower_z};
+      bvh.nodes[item.firstNode + c].boundsMax = {b.upper_x, b.upper_y, b.upper_z};
     }
-    node(left, *n.children[0], depth + 1);
-    node(left + 1, *n.children[1], depth + 1);
+    const uint32_t depth = item.depth + 1, below = item.firstNode + 2;
+    return {FlattenItem{left, item.firstNode, depth, below, item.firstTriangle},
+            FlattenItem{right, item.firstNode + 1, depth, below + 2 * interiorIn(left),
+                        item.firstTriangle + trianglesIn(left)}};
+  }
+
+  void node(const FlattenItem& item, FlattenStats& stats) {
+    if (item.depth >= RL_BVH_STACK) throw std::runtime_error("buildBvh: Embree's tree is deeper than RL_BVH_STACK");
+    if (item.node->leafCount > 0) return leaf(item, stats);
+    const std::array<FlattenItem, 2> children = expand(item);
+    node(children[0], stats);
+    node(children[1], stats);
+  }
+
+  // The top of the tree, laid out here, down to subtrees small enough to share out (the largest split first,
+  // until each holds at most 1/8 of a thread's share, or there are 64 a thread: Embree's tree is at most
+  // RL_BVH_STACK deep, so a lopsided tree ends the splitting too).
+  std::vector<FlattenItem> splitTop(const FlattenItem& root, uint32_t threads) {
+    std::vector<FlattenItem> items{root};
+    if (threads == 1) return items;
+    const uint64_t total = interiorIn(root.node);
+    while (items.size() < 64 * size_t(threads)) {
+      auto largest = std::max_element(items.begin(), items.end(), [](const FlattenItem& a, const FlattenItem& b) {
+        return interiorIn(a.node) < interiorIn(b.node);
+      });
+      if (interiorIn(largest->node) == 0 || uint64_t(interiorIn(largest->node)) * 8 * threads <= total) break;
+      if (largest->depth >= RL_BVH_STACK)
+        throw std::runtime_error("buildBvh: Embree's tree is deeper than RL_BVH_STACK");
+      const std::array<FlattenItem, 2> children = expand(*largest);
+      *largest = children[0];
+      items.push_back(children[1]);
+    }
+    return items;
+  }
+
+  void flatten(const EmbreeBuildNode& root, uint32_t threads) {
+    std::vector<FlattenItem> items = splitTop(FlattenItem{&root, 0, 0, 1, 0}, threads);
+    // The big ones first: no thread left with one at the end.
+    std::stable_sort(items.begin(), items.end(), [](const FlattenItem& a, const FlattenItem& b) {
+      return interiorIn(a.node) > interiorIn(b.node);
+    });
+    std::vector<FlattenStats> stats(items.size());
+    parallelFor(threads, items.size(), [&](size_t i) { node(items[i], stats[i]); });
+    for (const FlattenStats& s : stats) {
+      bvh.stats.leafCount += s.leafCount;
+      bvh.stats.largestLeaf = std::max(bvh.stats.largestLeaf, s.largestLeaf);
+      bvh.stats.maxDepth = std::max(bvh.stats.maxDepth, s.maxDepth);
+    }
   }
 };
 
@@ -198,6 +275,19 @@ double msSince(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 }
 
+// Lays out Embree's tree into arrays of their final size (each element written once: see BvhFlattener).
+void flattenInto(Bvh& bvh, const EmbreeBuildNode& root, size_t triangleCount, glm::vec3 lo, glm::vec3 hi,
+                 uint32_t threads) {
+  if (trianglesIn(&root) != triangleCount)
+    throw std::runtime_error("buildBvh: Embree's leaves hold " + std::to_string(trianglesIn(&root)) +
+                             " triangles of " + std::to_string(triangleCount));
+  bvh.nodes.resize(1 + 2 * size_t(interiorIn(&root)));
+  bvh.nodes[0].boundsMin = lo;
+  bvh.nodes[0].boundsMax = hi;
+  bvh.triangleOrder.resize(triangleCount);
+  BvhFlattener{bvh}.flatten(root, threads);
+}
+
 }  // namespace
 
 Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize, uint32_t threads) {
@@ -235,21 +325,13 @@ Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize, uint3
     try {
       if (!root || !error.empty())
         throw std::runtime_error("buildBvh: Embree's rtcBuildBVH failed: " + (error.empty() ? "no tree" : error));
-      bvh.nodes.reserve(2 * triangles.size());
-      bvh.nodes.resize(1);
-      bvh.nodes[0].boundsMin = lo;
-      bvh.nodes[0].boundsMax = hi;
-      bvh.triangleOrder.reserve(triangles.size());
-      BvhFlattener{bvh}.node(0, *root, 0);
+      flattenInto(bvh, *root, triangles.size(), lo, hi, threads);
     } catch (...) {
       rtcReleaseBVH(handle);
       throw;
     }
     rtcReleaseBVH(handle);
     bvh.stats.flattenMs = msSince(flattenStart);
-    if (bvh.triangleOrder.size() != triangles.size())
-      throw std::runtime_error("buildBvh: Embree's leaves hold " + std::to_string(bvh.triangleOrder.size()) +
-                               " triangles of " + std::to_string(triangles.size()));
     bvh.stats.maxLeafSize = leafLimit;
   }
   bvh.stats.nodeCount = static_cast<uint32_t>(bvh.nodes.size());
