@@ -5,7 +5,7 @@
 // --hash adds hashes of the output (the binary tree as built; the wide tree with the binary tree's rewritten
 // leaf order after the collapse; each with its stats but not the times), to check that a change to the
 // builder leaves its output bit for bit the same.
-// --threads N: the threads of the phases around Embree's build (default: the hardware's).
+// --threads N: the threads of the phases around Embree's build and of the collapse (default: the hardware's).
 // Usage: raylab_bvh_report [--repeats N] [--max-leaf N] [--threads N] [--hash] [--out FILE] SCENE...
 #include <algorithm>
 #include <cstdint>
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
         embreeMs.push_back(bvh.stats.embreeMs);
         flattenMs.push_back(bvh.stats.flattenMs);
         collapsed = bvh;  // the collapse rewrites the binary tree's leaf order
-        wide = raylab::collapseBvh(collapsed);
+        wide = raylab::collapseBvh(collapsed, threads);
         collapseMs.push_back(wide.stats.buildMs);
       }
       auto median = [](std::vector<double> v) {
