@@ -281,10 +281,10 @@ void flattenInto(Bvh& bvh, const EmbreeBuildNode& root, size_t triangleCount, gl
   if (trianglesIn(&root) != triangleCount)
     throw std::runtime_error("buildBvh: Embree's leaves hold " + std::to_string(trianglesIn(&root)) +
                              " triangles of " + std::to_string(triangleCount));
-  bvh.nodes.resize(1 + 2 * size_t(interiorIn(&root)));
+  resizeFaultingInParallel(bvh.nodes, 1 + 2 * size_t(interiorIn(&root)), threads);
   bvh.nodes[0].boundsMin = lo;
   bvh.nodes[0].boundsMax = hi;
-  bvh.triangleOrder.resize(triangleCount);
+  resizeFaultingInParallel(bvh.triangleOrder, triangleCount, threads);
   BvhFlattener{bvh}.flatten(root, threads);
 }
 

@@ -190,8 +190,9 @@ void collapseInParallel(Bvh& binary, BvhWide& wide, uint32_t threads) {
   at.place(c, 0, 0);
   if (at.triangleCount != binary.triangleOrder.size())
     throw std::runtime_error("wide BVH: its leaves hold another number of triangles than the binary tree's");
-  wide.nodes.resize(at.nodeCount);
-  std::vector<uint32_t> order(at.triangleCount);
+  resizeFaultingInParallel(wide.nodes, at.nodeCount, threads);
+  std::vector<uint32_t> order;
+  resizeFaultingInParallel(order, at.triangleCount, threads);
   for (const auto& [index, node] : at.topNodes) wide.nodes[index] = node;
   for (const Placement::TopLeaf& l : at.topLeaves) {
     const gpu::BvhNode& leaf = binary.nodes[l.binary];

@@ -13,6 +13,9 @@
 #include <thread>
 #include <vector>
 
+#include <sys/mman.h>
+#include <unistd.h>
+
 namespace raylab {
 
 // The threads for `work` items, each thread worth at least `grain` of them: `requested` when not 0 (the tests
@@ -50,6 +53,30 @@ void parallelFor(uint32_t threads, size_t count, const Task& task) {
   for (std::thread& t : pool) t.join();
   for (std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
+}
+
+// v.resize(n) for a large vector, its fresh pages faulted in on `threads` threads first. Most of a big
+// resize's time is not its zero fill but the page faults (the kernel zeroes every page it hands out), and
+// std::vector offers no way to skip the fill: MADV_POPULATE_WRITE (Linux 5.14) faults a range in, and its
+// chunks go to the threads. temple-detail:10000000's 10M nodes (320 MB): the flattening took 259 and 289 ms
+// with a plain resize, 116 and 117 ms with this (2-core machine); 183 and 200 against 156 and 160 ms on the
+// 16-core host. Where the call fails (an older kernel: EINVAL), resize faults the pages in as before.
+template <typename T>
+void resizeFaultingInParallel(std::vector<T>& v, size_t n, uint32_t threads) {
+#ifdef MADV_POPULATE_WRITE
+  constexpr size_t kChunk = size_t(8) << 20;  // bytes a task
+  if (n > v.capacity() && threads > 1 && (n - v.size()) * sizeof(T) >= 4 * kChunk) {
+    v.reserve(n);
+    const uintptr_t page = uintptr_t(sysconf(_SC_PAGESIZE));
+    const uintptr_t begin = (reinterpret_cast<uintptr_t>(v.data() + v.size()) + page - 1) & ~(page - 1);
+    const uintptr_t end = reinterpret_cast<uintptr_t>(v.data() + n) & ~(page - 1);
+    parallelFor(threads, (end - begin + kChunk - 1) / kChunk, [&](size_t i) {
+      const uintptr_t from = begin + i * kChunk;
+      madvise(reinterpret_cast<void*>(from), std::min<uintptr_t>(kChunk, end - from), MADV_POPULATE_WRITE);
+    });
+  }
+#endif
+  v.resize(n);
 }
 
 }  // namespace raylab
