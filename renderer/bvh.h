@@ -41,7 +41,10 @@ struct Bvh {
 // Depth stays below the shaders' traversal stack (RL_BVH_STACK); the SAH chooses each leaf's size up to
 // `maxLeafSize` triangles (at most 32, Embree's limit), unless the depth limit forces bigger leaves. No
 // triangles: a root whose inverted box no ray enters. Throws std::invalid_argument for a non-finite vertex
-// (the scene loaders refuse those already) and std::runtime_error if Embree fails.
-Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize = 8);
+// (the scene loaders refuse those already) and std::runtime_error if Embree fails. `threads`: for the phases
+// around Embree's build (Embree has its own); 0: the hardware's, fewer for small scenes. The tree is the same
+// for every count (the tests compare them).
+constexpr uint32_t kDefaultMaxLeafSize = 8;
+Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize = kDefaultMaxLeafSize, uint32_t threads = 0);
 
 }  // namespace raylab

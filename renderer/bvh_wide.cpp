@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+
+#include "renderer/bvh_wide_plan.h"
 
 namespace raylab {
 namespace {
@@ -111,11 +112,8 @@ struct SlotEntry {
   uint32_t first, count;  // leaf: the triangles, at their old BVH positions
 };
 
-struct Collapser {
-  Bvh& binary;
-  BvhWide& out;
-  std::vector<uint32_t> newOrder;                              // the wide tree's leaf order of triangleOrder
-  std::vector<std::pair<uint32_t, uint32_t>> movedLeaves;      // (binary leaf, its new first triangle)
+struct WidePlanner {
+  const Bvh& binary;
 
   // Whether kids fit one wide node with every binary leaf among them as leaf slots: 8 slots, a leaf taking one
   // per 8 triangles, and at most 32 triangles.
@@ -188,12 +186,10 @@ struct Collapser {
     return entries;
   }
 
-  void build(uint32_t wideIndex, uint32_t binaryIndex, uint32_t depth) {
-    if (depth >= RL_BVH_STACK) throw std::runtime_error("wide BVH: deeper than the traversal stack");
-    out.stats.maxDepth = std::max(out.stats.maxDepth, depth);
-    std::vector<uint32_t> kidIndices = childrenOf(binaryIndex);
+  WideNodePlan plan(uint32_t binaryIndex) const {
+    WideNodePlan p;
     // A binary leaf reached as a wide node of its own (its parent's budget was spent) is that node's one leaf.
-    std::vector<SlotEntry> entries = entriesOf(kidIndices);
+    const std::vector<SlotEntry> entries = entriesOf(childrenOf(binaryIndex));
     std::vector<gpu::BvhNode> kids;
     glm::vec3 lo(1e30f), hi(-1e30f);
     for (const SlotEntry& e : entries) {
@@ -201,10 +197,9 @@ struct Collapser {
       lo = glm::min(lo, kids.back().boundsMin);
       hi = glm::max(hi, kids.back().boundsMax);
     }
-    gpu::BvhWideNode node{};
     if (kids.empty()) {  // the empty scene: a root without children
-      out.nodes[wideIndex] = node;
-      return;
+      p.empty = true;
+      return p;
     }
     const std::array<int, RL_BVH_WIDTH> childOfSlot = assignSlots(kids, 0.5f * (lo + hi));
     std::vector<std::pair<uint32_t, gpu::BvhNode>> placed;
@@ -214,75 +209,55 @@ struct Collapser {
       placed.push_back({s, kids[childOfSlot[s]]});
       if (!entries[childOfSlot[s]].leaf) interiorMask |= 1u << s;
     }
-    node.origin = lo;
-    for (uint32_t axis = 0; axis < 3; ++axis) quantizeAxis(node, axis, placed, lo[axis], hi[axis]);
-    node.exponents |= interiorMask << 24;
-    node.childBase = uint32_t(out.nodes.size());
-    out.nodes.resize(out.nodes.size() + std::popcount(interiorMask));
-
-    // The leaf block: binary leaves by decreasing size (a leaf's slots stay together, in order), so the block
-    // starts with a leaf of 2 or more triangles and no meta byte is 0; all single triangles: from offset 1.
-    std::vector<uint32_t> leafKids;  // binary leaf indices, each once
-    uint32_t largest = 0;
-    for (const SlotEntry& e : entries)
-      if (e.leaf && (leafKids.empty() || leafKids.back() != e.binary)) {
-        leafKids.push_back(e.binary);
-        largest = std::max(largest, binary.nodes[e.binary].triCount);
-      }
-    std::stable_sort(leafKids.begin(), leafKids.end(), [&](uint32_t a, uint32_t b) {
-      return binary.nodes[a].triCount > binary.nodes[b].triCount;
-    });
-    const uint32_t start = largest == 1 ? 1u : 0u;
-    node.triBase = uint32_t(newOrder.size()) - start;
-    std::vector<std::pair<uint32_t, uint32_t>> offsetOf;  // (binary leaf, its offset in the block)
-    uint32_t offset = start;
-    for (uint32_t b : leafKids) {
-      const gpu::BvhNode& leaf = binary.nodes[b];
-      offsetOf.push_back({b, offset});
-      movedLeaves.push_back({b, uint32_t(newOrder.size())});
-      newOrder.insert(newOrder.end(), binary.triangleOrder.begin() + leaf.leftOrFirst,
-                      binary.triangleOrder.begin() + leaf.leftOrFirst + leaf.triCount);
-      offset += leaf.triCount;
-    }
-    std::vector<std::pair<uint32_t, uint32_t>> interiors;  // (wide index, binary index), in slot order
+    p.node.origin = lo;
+    for (uint32_t axis = 0; axis < 3; ++axis) quantizeAxis(p.node, axis, placed, lo[axis], hi[axis]);
+    p.node.exponents |= interiorMask << 24;
+    const std::vector<std::pair<uint32_t, uint32_t>> offsetOf = planLeafBlock(entries, p);
     for (uint32_t s = 0; s < RL_BVH_WIDTH; ++s) {
       if (childOfSlot[s] < 0) continue;
       const SlotEntry& e = entries[childOfSlot[s]];
-      if (e.leaf) {
-        uint32_t leafOffset = 0;
-        for (const auto& [b, o] : offsetOf)
-          if (b == e.binary) leafOffset = o;
-        leafOffset += e.first - binary.nodes[e.binary].leftOrFirst;
-        setMeta(node, s, ((e.count - 1u) << 5) | leafOffset);
-        out.stats.leafCount++;
-      } else {
-        interiors.push_back({node.childBase + uint32_t(interiors.size()), e.binary});
+      if (!e.leaf) {
+        p.interiors.push_back(e.binary);
+        continue;
       }
+      uint32_t leafOffset = 0;
+      for (const auto& [b, o] : offsetOf)
+        if (b == e.binary) leafOffset = o;
+      leafOffset += e.first - binary.nodes[e.binary].leftOrFirst;
+      setMeta(p.node, s, ((e.count - 1u) << 5) | leafOffset);
+      p.leafSlots++;
     }
-    out.nodes[wideIndex] = node;
-    for (const auto& [w, b] : interiors) build(w, b, depth + 1);
+    return p;
+  }
+
+  // The leaf block: binary leaves by decreasing size (a leaf's slots stay together, in order), so the block
+  // starts with a leaf of 2 or more triangles and no meta byte is 0; all single triangles: from offset 1.
+  // Returns each leaf's offset in the block.
+  std::vector<std::pair<uint32_t, uint32_t>> planLeafBlock(const std::vector<SlotEntry>& entries,
+                                                           WideNodePlan& p) const {
+    uint32_t largest = 0;
+    for (const SlotEntry& e : entries)
+      if (e.leaf && (p.leaves.empty() || p.leaves.back() != e.binary)) {
+        p.leaves.push_back(e.binary);
+        largest = std::max(largest, binary.nodes[e.binary].triCount);
+      }
+    std::stable_sort(p.leaves.begin(), p.leaves.end(), [&](uint32_t a, uint32_t b) {
+      return binary.nodes[a].triCount > binary.nodes[b].triCount;
+    });
+    p.blockStart = largest == 1 ? 1u : 0u;
+    std::vector<std::pair<uint32_t, uint32_t>> offsetOf;  // (binary leaf, its offset in the block)
+    uint32_t offset = p.blockStart;
+    for (uint32_t b : p.leaves) {
+      offsetOf.push_back({b, offset});
+      offset += binary.nodes[b].triCount;
+    }
+    return offsetOf;
   }
 };
 
 }  // namespace
 
-BvhWide collapseBvh(Bvh& binary) {
-  const auto start = std::chrono::steady_clock::now();
-  BvhWide wide;
-  wide.nodes.resize(1);
-  if (!binary.nodes.empty()) {
-    Collapser c{binary, wide, {}, {}};
-    c.newOrder.reserve(binary.triangleOrder.size());
-    c.build(0, 0, 0);
-    if (c.newOrder.size() != binary.triangleOrder.size())
-      throw std::runtime_error("wide BVH: its leaves hold another number of triangles than the binary tree's");
-    for (const auto& [b, first] : c.movedLeaves) binary.nodes[b].leftOrFirst = first;
-    binary.triangleOrder = std::move(c.newOrder);
-  }
-  wide.stats.nodeCount = uint32_t(wide.nodes.size());
-  wide.stats.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  return wide;
-}
+WideNodePlan planWideNode(const Bvh& binary, uint32_t binaryIndex) { return WidePlanner{binary}.plan(binaryIndex); }
 
 WideChildBox decodeChildBox(const gpu::BvhWideNode& node, uint32_t slot) {
   WideChildBox b;

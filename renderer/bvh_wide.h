@@ -36,8 +36,9 @@ struct BvhWide {
 // Collapses `binary` and moves its leaves into the wide tree's leaf order (binary.triangleOrder and its leaf
 // nodes' leftOrFirst change; its shape, boxes and SAH cost do not). Throws std::runtime_error when the tree
 // would be deeper than the traversal stack (RL_BVH_STACK); a binary tree within that depth never is (a wide
-// level is at least one binary level).
-BvhWide collapseBvh(Bvh& binary);
+// level is at least one binary level). `threads`: 0 for the hardware's (fewer for small trees); the result is
+// the same for every count (the tests compare them).
+BvhWide collapseBvh(Bvh& binary, uint32_t threads = 0);
 
 // A child box as the traversal decodes it (origin + q * 2^e, in float): tests use this.
 struct WideChildBox {

@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 #include "renderer/bvh.h"
 #include "renderer/bvh_sah.h"
@@ -199,6 +201,56 @@ TEST(Bvh, NonFiniteVertexIsRefused) {
   EXPECT_THROW(buildBvh(tris), std::invalid_argument);
   tris[1].v[2].y = std::numeric_limits<float>::infinity();
   EXPECT_THROW(buildBvh(tris), std::invalid_argument);
+}
+
+// The boxes are computed in chunks on several threads; the message names the lowest bad triangle however
+// the chunks are shared out.
+TEST(Bvh, NonFiniteVertexMessageNamesTheFirst) {
+  std::vector<Triangle> tris(1000, Triangle{{glm::vec3(0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)}});
+  tris[917].v[0].x = std::numeric_limits<float>::infinity();
+  tris[312].v[1].z = std::numeric_limits<float>::quiet_NaN();
+  tris[313].v[2].y = -std::numeric_limits<float>::infinity();
+  for (uint32_t threads : {1u, 3u, 7u, 0u}) {
+    try {
+      buildBvh(tris, 8, threads);
+      ADD_FAILURE() << "no exception with " << threads << " threads";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()), "buildBvh: triangle 312 has a non-finite vertex") << threads << " threads";
+    }
+  }
+}
+
+void expectSameBvh(const Bvh& a, const Bvh& b, const std::string& what) {
+  ASSERT_EQ(a.nodes.size(), b.nodes.size()) << what;
+  EXPECT_EQ(std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(gpu::BvhNode)), 0) << what;
+  EXPECT_EQ(a.triangleOrder, b.triangleOrder) << what;
+  EXPECT_EQ(a.stats.nodeCount, b.stats.nodeCount) << what;
+  EXPECT_EQ(a.stats.leafCount, b.stats.leafCount) << what;
+  EXPECT_EQ(a.stats.maxDepth, b.stats.maxDepth) << what;
+  EXPECT_EQ(a.stats.largestLeaf, b.stats.largestLeaf) << what;
+  EXPECT_EQ(a.stats.maxLeafSize, b.stats.maxLeafSize) << what;
+}
+
+// The phases around Embree's build, which share their work out among threads, give the same arrays, bit for
+// bit, on one thread and on several (more than this machine may have: how the work is split depends on the
+// count, not on the hardware). Embree's own build is deterministic.
+TEST(Bvh, SameTreeOnAnyThreadCount) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-10.0f, 10.0f);
+  std::vector<Triangle> random(20000);
+  for (Triangle& t : random)
+    for (glm::vec3& v : t.v) v = {u(rng), u(rng), u(rng)};
+  const std::vector<std::pair<std::string, std::vector<Triangle>>> inputs = {
+      {"temple", makeTemple().triangles}, {"random", random}, {"identical", std::vector<Triangle>(3000, random[0])}};
+  for (const auto& [name, tris] : inputs) {
+    for (uint32_t leaf : {1u, 8u}) {
+      const Bvh one = buildBvh(tris, leaf, 1);
+      checkDepthFirstLayout(one);
+      for (uint32_t threads : {2u, 5u, 16u, 0u})
+        expectSameBvh(one, buildBvh(tris, leaf, threads),
+                      name + ", leaf " + std::to_string(leaf) + ", " + std::to_string(threads) + " threads");
+    }
+  }
 }
 
 // Pathological inputs for the depth bound: 100,000 triangles at one place (no split separates them: only

@@ -7,6 +7,7 @@
 #include <bit>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <random>
 
@@ -311,6 +312,44 @@ TEST(BvhWide, OneTriangleAndNone) {
   const CpuHit miss = traverseWideCpu(empty, {}, {0, 0, 0}, {0, 0, 1}, 1e30f, false);
   EXPECT_LT(miss.t, 0.0f);
   EXPECT_EQ(miss.steps, 1u);
+}
+
+void expectSameCollapse(const std::vector<Triangle>& tris, uint32_t maxLeaf, const std::string& what) {
+  const Bvh built = buildBvh(tris, maxLeaf);
+  Bvh one = built;
+  const BvhWide wideOne = collapseBvh(one, 1);
+  for (uint32_t threads : {2u, 5u, 16u, 0u}) {
+    const std::string with = what + ", leaf " + std::to_string(maxLeaf) + ", " + std::to_string(threads) + " threads";
+    Bvh many = built;
+    const BvhWide wideMany = collapseBvh(many, threads);
+    ASSERT_EQ(wideMany.nodes.size(), wideOne.nodes.size()) << with;
+    EXPECT_EQ(std::memcmp(wideMany.nodes.data(), wideOne.nodes.data(), wideOne.nodes.size() * sizeof(gpu::BvhWideNode)), 0)
+        << with;
+    EXPECT_EQ(std::memcmp(many.nodes.data(), one.nodes.data(), one.nodes.size() * sizeof(gpu::BvhNode)), 0) << with;
+    EXPECT_EQ(many.triangleOrder, one.triangleOrder) << with;
+    EXPECT_EQ(wideMany.stats.nodeCount, wideOne.stats.nodeCount) << with;
+    EXPECT_EQ(wideMany.stats.leafCount, wideOne.stats.leafCount) << with;
+    EXPECT_EQ(wideMany.stats.maxDepth, wideOne.stats.maxDepth) << with;
+  }
+}
+
+// The collapse on several threads (subtrees collapsed on their own, then moved into place) gives the same wide
+// nodes, leaf order and stats, bit for bit, as the one recursion on one thread; with leaves up to 32 triangles
+// too (several slots a leaf) and single-triangle leaves (blocks from offset 1).
+TEST(BvhWide, SameTreeOnAnyThreadCount) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> u(-10.0f, 10.0f);
+  std::vector<Triangle> random(20000);
+  for (Triangle& t : random)
+    for (glm::vec3& v : t.v) v = {u(rng), u(rng), u(rng)};
+  const std::vector<Triangle> temple = makeTemple().triangles;
+  for (uint32_t leaf : {1u, 8u, 32u}) {
+    expectSameCollapse(temple, leaf, "temple");
+    expectSameCollapse(random, leaf, "random");
+  }
+  expectSameCollapse(std::vector<Triangle>(3000, random[0]), 8, "identical");
+  expectSameCollapse(std::vector<Triangle>(1, random[0]), 8, "one");
+  expectSameCollapse({}, 8, "none");
 }
 
 TEST(BvhWide, Sponza) {
