@@ -3,6 +3,7 @@
 #include <atomic>
 
 #include "renderer/vk/dispatch_size.h"
+#include "renderer/vk/pipeline_statistics.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
 
@@ -23,9 +24,15 @@ ComputePipeline::ComputePipeline(const VulkanContext& ctx, const std::string& sh
   info.stage.pName = "main";
   info.stage.pSpecializationInfo = spec.info();
   info.layout = handle_.layout;
+  if (ctx.info().shaderStatistics) info.flags |= VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR;
   VkResult r = vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &info, nullptr, &handle_.pipeline);
   vkDestroyShaderModule(ctx.device(), module, nullptr);
   if (r != VK_SUCCESS) throw VulkanError("creating pipeline " + shaderName + " failed: " + vkResultName(r));
+  if (ctx.info().shaderStatistics) {
+    std::string variantName = shaderName;
+    for (const auto& [id, value] : constants) variantName += " " + std::to_string(id) + "=" + std::to_string(value);
+    printShaderStatistics(ctx.device(), handle_.pipeline, variantName);
+  }
 }
 
 void ComputePipeline::dispatchGroups(VkCommandBuffer cmd, const void* push, uint32_t groups) const {

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "renderer/vk/compute_pipeline.h"
+#include "renderer/vk/pipeline_statistics.h"
 #include "renderer/vk/ray_tracing_support.h"
 #include "renderer/vk/vk_check.h"
 
@@ -158,7 +159,9 @@ void VulkanContext::createDevice(const ContextOptions& options) {
   want12.scalarBlockLayout = VK_TRUE;
   want12.hostQueryReset = have12.hostQueryReset;
   want12.shaderSubgroupExtendedTypes = have12.shaderSubgroupExtendedTypes;
-  want12.pNext = rayTracing.features();
+  ShaderStatisticsFeature statistics;
+  want12.pNext = statistics.enable(physical_, extensions, rayTracing.features());
+  info_.shaderStatistics = statistics.enabled;
   VkPhysicalDeviceFeatures2 want{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   want.pNext = &want12;
   want.features.shaderInt64 = VK_TRUE;

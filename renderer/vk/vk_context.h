@@ -38,6 +38,8 @@ struct DeviceInfo {
   uint32_t dispatchRowGroups = 0;
   uint64_t maxMemoryAllocationSize = 0;  // VkPhysicalDeviceMaintenance3Properties (0: not known)
   bool isCpu = false;
+  // VK_KHR_pipeline_executable_properties enabled for RAYLAB_SHADER_STATS (pipeline_statistics.h).
+  bool shaderStatistics = false;
 
   // Hardware-API ray tracing (the rt tracer): VK_KHR_acceleration_structure and VK_KHR_ray_tracing_pipeline
   // with their features, enabled whenever the device has them. rayTracingMissing names what is missing.
