@@ -258,6 +258,7 @@ TEST(Bvh, SameTreeOnAnyThreadCount) {
 // SAH peels off a few at a time. Both must stay below RL_BVH_STACK with every triangle kept.
 TEST(Bvh, DepthBoundOnPathologicalInputs) {
   Triangle t;
+  t.v[0] = {0, 0, 0};  // glm leaves a vec3 uninitialised
   t.v[1] = {1, 0, 0};
   t.v[2] = {0, 1, 0};
   std::vector<Triangle> same(100000, t);
