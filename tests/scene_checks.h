@@ -8,6 +8,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <random>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -15,6 +16,17 @@
 #include "scenes/scene.h"
 
 namespace raylab {
+
+// `count` triangles with vertices uniform in [-10, 10)^3 from an mt19937 seeded with `seed`: a soup with no
+// structure for the BVH builders to exploit.
+inline std::vector<Triangle> randomTriangles(size_t count, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-10.0f, 10.0f);
+  std::vector<Triangle> tris(count);
+  for (Triangle& t : tris)
+    for (glm::vec3& v : t.v) v = {u(rng), u(rng), u(rng)};
+  return tris;
+}
 
 inline constexpr float kMiss = std::numeric_limits<float>::infinity();
 

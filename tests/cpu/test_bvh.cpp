@@ -13,6 +13,7 @@
 
 #include "renderer/bvh.h"
 #include "renderer/bvh_sah.h"
+#include "tests/scene_checks.h"
 #include "scenes/procedural.h"
 
 namespace raylab {
@@ -130,11 +131,7 @@ TEST(Bvh, TempleIsWellFormed) {
 }
 
 TEST(Bvh, RandomTrianglesAndIdenticalTriangles) {
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<float> u(-10.0f, 10.0f);
-  std::vector<Triangle> tris(3000);
-  for (Triangle& t : tris)
-    for (glm::vec3& v : t.v) v = {u(rng), u(rng), u(rng)};
+  const std::vector<Triangle> tris = randomTriangles(3000, 3);
   checkBvh(tris, buildBvh(tris));
   // Many triangles at the same place cannot be split by SAH; the builder must still terminate and
   // stay within the stack depth.
@@ -235,11 +232,7 @@ void expectSameBvh(const Bvh& a, const Bvh& b, const std::string& what) {
 // bit, on one thread and on several (more than this machine may have: how the work is split depends on the
 // count, not on the hardware). Embree's own build is deterministic.
 TEST(Bvh, SameTreeOnAnyThreadCount) {
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<float> u(-10.0f, 10.0f);
-  std::vector<Triangle> random(20000);
-  for (Triangle& t : random)
-    for (glm::vec3& v : t.v) v = {u(rng), u(rng), u(rng)};
+  const std::vector<Triangle> random = randomTriangles(20000, 5);
   const std::vector<std::pair<std::string, std::vector<Triangle>>> inputs = {
       {"temple", makeTemple().triangles}, {"random", random}, {"identical", std::vector<Triangle>(3000, random[0])}};
   for (const auto& [name, tris] : inputs) {

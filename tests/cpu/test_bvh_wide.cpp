@@ -13,6 +13,7 @@
 
 #include "renderer/bvh_traverse_cpu.h"
 #include "renderer/bvh_wide.h"
+#include "tests/scene_checks.h"
 #include "renderer/gpu_scene.h"
 #include "renderer/path_tracer.h"
 #include "scenes/gltf_loader.h"
@@ -269,12 +270,8 @@ TEST(BvhWide, TempleStructureAndTraversal) {
 }
 
 TEST(BvhWide, RandomAndIdenticalTriangles) {
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<float> u(-10.0f, 10.0f);
   Scene random;
-  random.triangles.resize(3000);
-  for (Triangle& t : random.triangles)
-    for (glm::vec3& v : t.v) v = {u(rng), u(rng), u(rng)};
+  random.triangles = randomTriangles(3000, 11);
   random.viewpoints.push_back({"outside", {0, 0, 40}, {0, 0, 0}});
   random.viewpoints.push_back({"inside", {0.5f, 0.2f, 0.1f}, {3, 1, -2}});
   Bvh binary = buildBvh(random.triangles);
@@ -337,11 +334,7 @@ void expectSameCollapse(const std::vector<Triangle>& tris, uint32_t maxLeaf, con
 // nodes, leaf order and stats, bit for bit, as the one recursion on one thread; with leaves up to 32 triangles
 // too (several slots a leaf) and single-triangle leaves (blocks from offset 1).
 TEST(BvhWide, SameTreeOnAnyThreadCount) {
-  std::mt19937 rng(9);
-  std::uniform_real_distribution<float> u(-10.0f, 10.0f);
-  std::vector<Triangle> random(20000);
-  for (Triangle& t : random)
-    for (glm::vec3& v : t.v) v = {u(rng), u(rng), u(rng)};
+  const std::vector<Triangle> random = randomTriangles(20000, 9);
   const std::vector<Triangle> temple = makeTemple().triangles;
   for (uint32_t leaf : {1u, 8u, 32u}) {
     expectSameCollapse(temple, leaf, "temple");
