@@ -23,6 +23,25 @@
 namespace raylab {
 namespace {
 
+// Gives planned node `p` its place, the one step both the recursion and the top's placement take: its interior
+// children at nodeCount onwards, its leaf block at triangleCount onwards (both advanced past them), and
+// onLeaf(binary leaf, its first triangle) for each leaf in block order. A node without children (the empty
+// scene's root) stays all zeros.
+template <typename OnLeaf>
+gpu::BvhWideNode placeNode(const WideNodePlan& p, const Bvh& binary, uint32_t& nodeCount, uint32_t& triangleCount,
+                           const OnLeaf& onLeaf) {
+  gpu::BvhWideNode node = p.node;
+  if (p.empty) return node;
+  node.childBase = nodeCount;
+  nodeCount += uint32_t(p.interiors.size());
+  node.triBase = triangleCount - p.blockStart;
+  for (uint32_t b : p.leaves) {
+    onLeaf(b, triangleCount);
+    triangleCount += binary.nodes[b].triCount;
+  }
+  return node;
+}
+
 // The recursion, on one binary subtree: node 0 of `nodes` is the subtree's root (its place is its parent's to
 // give), the rest are its descendants.
 struct SubtreeCollapse {
@@ -41,23 +60,18 @@ struct SubtreeCollapse {
   void build(uint32_t wideIndex, uint32_t binaryIndex, uint32_t level) {
     if (level >= RL_BVH_STACK) throw std::runtime_error("wide BVH: deeper than the traversal stack");
     maxDepth = std::max(maxDepth, level);
-    WideNodePlan p = planWideNode(*binary, binaryIndex);
+    const WideNodePlan p = planWideNode(*binary, binaryIndex);
     leafCount += p.leafSlots;
-    if (p.empty) {
-      nodes[wideIndex] = p.node;
-      return;
-    }
-    p.node.childBase = uint32_t(nodes.size());
-    nodes.resize(nodes.size() + p.interiors.size());
-    p.node.triBase = uint32_t(order.size()) - p.blockStart;
-    for (uint32_t b : p.leaves) {
+    uint32_t nodeCount = uint32_t(nodes.size()), triangleCount = uint32_t(order.size());
+    const gpu::BvhWideNode node = placeNode(p, *binary, nodeCount, triangleCount, [&](uint32_t b, uint32_t first) {
       const gpu::BvhNode& leaf = binary->nodes[b];
-      movedLeaves.push_back({b, uint32_t(order.size())});
+      movedLeaves.push_back({b, first});
       order.insert(order.end(), binary->triangleOrder.begin() + leaf.leftOrFirst,
                    binary->triangleOrder.begin() + leaf.leftOrFirst + leaf.triCount);
-    }
-    nodes[wideIndex] = p.node;
-    for (uint32_t i = 0; i < p.interiors.size(); ++i) build(p.node.childBase + i, p.interiors[i], level + 1);
+    });
+    nodes.resize(nodeCount);
+    nodes[wideIndex] = node;
+    for (uint32_t i = 0; i < p.interiors.size(); ++i) build(node.childBase + i, p.interiors[i], level + 1);
   }
 };
 
@@ -129,17 +143,8 @@ struct Placement {
   uint32_t nodeCount = 1, triangleCount = 0;
 
   void place(const ParallelCollapse& c, uint32_t topIndex, uint32_t wideIndex) {
-    const WideNodePlan& p = c.top[topIndex].plan;
-    gpu::BvhWideNode node = p.node;
-    if (!p.empty) {
-      node.childBase = nodeCount;
-      nodeCount += uint32_t(p.interiors.size());
-      node.triBase = triangleCount - p.blockStart;
-      for (uint32_t b : p.leaves) {
-        topLeaves.push_back({b, triangleCount});
-        triangleCount += c.binary.nodes[b].triCount;
-      }
-    }
+    const gpu::BvhWideNode node = placeNode(c.top[topIndex].plan, c.binary, nodeCount, triangleCount,
+                                            [&](uint32_t b, uint32_t first) { topLeaves.push_back({b, first}); });
     topNodes.push_back({wideIndex, node});
     for (size_t i = 0; i < c.top[topIndex].children.size(); ++i) {
       const int64_t child = c.top[topIndex].children[i];
