@@ -3,6 +3,7 @@ BVH, the megakernel, the best unsorted frame (split or fused), the best sorted o
 fused) and their ratios, and the wide/binary ratio of the unsorted split trace stage (summed over bounces).
 Usage: python3 table.py results.csv"""
 import csv
+import statistics
 import sys
 
 rows = list(csv.DictReader(open(sys.argv[1])))
@@ -40,6 +41,5 @@ for (case, bounces), by in cells.items():
         trace.append(by["wide"]["trace"] / by["binary"]["trace"])
         frame.append(min(by["wide"]["unsorted"])[0] / min(by["binary"]["unsorted"])[0])
 if trace:
-    trace.sort(), frame.sort()
-    print(f"\nwide/binary, unsorted split trace: {trace[0]:.2f}-{trace[-1]:.2f} (median {trace[len(trace) // 2]:.2f}); "
-          f"best unsorted frame: {frame[0]:.2f}-{frame[-1]:.2f} (median {frame[len(frame) // 2]:.2f}), {len(trace)} cases")
+    print(f"\nwide/binary, unsorted split trace: {min(trace):.2f}-{max(trace):.2f} (median {statistics.median(trace):.2f}); "
+          f"best unsorted frame: {min(frame):.2f}-{max(frame):.2f} (median {statistics.median(frame):.2f}), {len(trace)} cases")
