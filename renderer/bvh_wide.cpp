@@ -12,13 +12,6 @@
 namespace raylab {
 namespace {
 
-bool emptyBox(const gpu::BvhNode& n) { return n.boundsMin.x > n.boundsMax.x; }
-
-float halfArea(const gpu::BvhNode& n) {
-  glm::vec3 d = n.boundsMax - n.boundsMin;
-  return d.x * d.y + d.y * d.z + d.z * d.x;
-}
-
 float scaleOf(uint32_t biasedExponent) { return std::bit_cast<float>(biasedExponent << 23); }
 
 // The decode the shaders do, in float: origin + q * 2^e (the product is exact, so a fused multiply-add on the
@@ -96,100 +89,52 @@ std::array<int, RL_BVH_WIDTH> assignSlots(const std::vector<gpu::BvhNode>& kids,
   return childOfSlot;
 }
 
-uint32_t slotsOfLeaf(uint32_t count) { return (count + kWideLeafSlotTriangles - 1) / kWideLeafSlotTriangles; }
-
 void setMeta(gpu::BvhWideNode& node, uint32_t slot, uint32_t meta) {
   uint32_t& w = node.meta[slot >> 2];
   const uint32_t shift = (slot & 3u) * 8u;
   w = (w & ~(0xFFu << shift)) | (meta << shift);
 }
 
-// One slot's content while a node is built: a binary interior node (or a binary leaf given a wide node of its
-// own, when the node's leaf budget is spent), or up to 8 triangles of a binary leaf.
+// One slot's content while a node is built: a binary node as an interior slot, or up to 8 triangles of a leaf
+// group (the triangles under a binary node: a binary leaf of more than 8 takes several slots).
 struct SlotEntry {
-  uint32_t binary;  // binary node index
+  uint32_t binary;  // binary node index: the interior child or the leaf group's root
   bool leaf;
-  uint32_t first, count;  // leaf: the triangles, at their old BVH positions
+  uint32_t first, count;  // leaf: the slot's triangles, counted from the group's first
 };
 
 struct WidePlanner {
   const Bvh& binary;
+  const WideSlotChooser& slots;
 
-  // Whether kids fit one wide node with every binary leaf among them as leaf slots: 8 slots, a leaf taking one
-  // per 8 triangles, and at most 32 triangles.
-  bool fitsAsLeaves(const std::vector<uint32_t>& kids) const {
-    uint32_t slots = 0, tris = 0;
-    for (uint32_t k : kids) {
-      const gpu::BvhNode& n = binary.nodes[k];
-      slots += n.triCount > 0 ? slotsOfLeaf(n.triCount) : 1u;
-      tris += n.triCount;
-    }
-    return slots <= RL_BVH_WIDTH && tris <= kWideNodeTriangles;
-  }
-
-  // Up to 8 binary subtrees under binary node `index`: open the largest-area interior one (that keeps the
-  // node within its leaf budget) until 8 or none remain. Empty boxes (the empty scene's placeholders) are dropped.
-  std::vector<uint32_t> childrenOf(uint32_t index) const {
-    const gpu::BvhNode& n = binary.nodes.at(index);
-    std::vector<uint32_t> kids;
-    if (n.triCount > 0) {
-      kids.push_back(index);  // a leaf root: one leaf child
-      return kids;
-    }
-    for (uint32_t c : {n.leftOrFirst, n.leftOrFirst + 1})
-      if (!emptyBox(binary.nodes.at(c))) kids.push_back(c);
-    std::vector<uint32_t> unopenable;
-    while (kids.size() < RL_BVH_WIDTH) {
-      int best = -1;
-      float bestArea = -1.0f;
-      for (int i = 0; i < int(kids.size()); ++i) {
-        const gpu::BvhNode& k = binary.nodes[kids[i]];
-        if (k.triCount == 0 && halfArea(k) > bestArea &&
-            std::find(unopenable.begin(), unopenable.end(), kids[i]) == unopenable.end()) {
-          best = i;
-          bestArea = halfArea(k);
-        }
-      }
-      if (best < 0) break;
-      const gpu::BvhNode& open = binary.nodes[kids[best]];
-      std::vector<uint32_t> next = kids;
-      next.erase(next.begin() + best);
-      for (uint32_t c : {open.leftOrFirst, open.leftOrFirst + 1})
-        if (!emptyBox(binary.nodes.at(c))) next.push_back(c);
-      // Opening must not push a leaf out of the node when the current set fits.
-      if (next.size() <= RL_BVH_WIDTH && (fitsAsLeaves(next) || !fitsAsLeaves(kids))) {
-        kids = std::move(next);
-      } else {
-        unopenable.push_back(kids[best]);
-      }
-    }
-    return kids;
-  }
-
-  // The slots' contents: binary leaves as leaf slots while the budget lasts (in order), the rest as interior
-  // children (a binary leaf that does not fit gets a wide node of its own).
-  std::vector<SlotEntry> entriesOf(const std::vector<uint32_t>& kids) const {
-    uint32_t slots = uint32_t(kids.size()), tris = 0;
+  std::vector<SlotEntry> entriesOf(uint32_t binaryIndex) const {
     std::vector<SlotEntry> entries;
-    for (uint32_t k : kids) {
-      const gpu::BvhNode& n = binary.nodes[k];
-      const uint32_t extra = n.triCount > 0 ? slotsOfLeaf(n.triCount) - 1u : 0u;
-      if (n.triCount > 0 && slots + extra <= RL_BVH_WIDTH && tris + n.triCount <= kWideNodeTriangles) {
-        slots += extra;
-        tris += n.triCount;
-        for (uint32_t f = 0; f < n.triCount; f += kWideLeafSlotTriangles)
-          entries.push_back({k, true, n.leftOrFirst + f, std::min(kWideLeafSlotTriangles, n.triCount - f)});
-      } else {
-        entries.push_back({k, false, 0, 0});
+    for (const WideSlotChoice& c : slots.slotsOf(binaryIndex)) {
+      if (!c.leaf) {
+        entries.push_back({c.binary, false, 0, 0});
+        continue;
       }
+      const uint32_t triangles = slots.trianglesUnder(c.binary);
+      for (uint32_t f = 0; f < triangles; f += kWideLeafSlotTriangles)
+        entries.push_back({c.binary, true, f, std::min(kWideLeafSlotTriangles, triangles - f)});
     }
     return entries;
   }
 
+  // The binary leaves under binary node `index`, left to right: a leaf group's triangles in block order.
+  void leavesUnder(uint32_t index, std::vector<uint32_t>& out) const {
+    const gpu::BvhNode& n = binary.nodes[index];
+    if (n.triCount > 0) {
+      out.push_back(index);
+      return;
+    }
+    leavesUnder(n.leftOrFirst, out);
+    leavesUnder(n.leftOrFirst + 1, out);
+  }
+
   WideNodePlan plan(uint32_t binaryIndex) const {
     WideNodePlan p;
-    // A binary leaf reached as a wide node of its own (its parent's budget was spent) is that node's one leaf.
-    const std::vector<SlotEntry> entries = entriesOf(childrenOf(binaryIndex));
+    const std::vector<SlotEntry> entries = entriesOf(binaryIndex);
     std::vector<gpu::BvhNode> kids;
     glm::vec3 lo(1e30f), hi(-1e30f);
     for (const SlotEntry& e : entries) {
@@ -201,6 +146,7 @@ struct WidePlanner {
       p.empty = true;
       return p;
     }
+    if (kids.size() > RL_BVH_WIDTH) throw std::runtime_error("wide BVH: a node planned with more than 8 slots");
     const std::array<int, RL_BVH_WIDTH> childOfSlot = assignSlots(kids, 0.5f * (lo + hi));
     std::vector<std::pair<uint32_t, gpu::BvhNode>> placed;
     uint32_t interiorMask = 0;
@@ -220,36 +166,33 @@ struct WidePlanner {
         p.interiors.push_back(e.binary);
         continue;
       }
-      uint32_t leafOffset = 0;
+      uint32_t groupOffset = 0;
       for (const auto& [b, o] : offsetOf)
-        if (b == e.binary) leafOffset = o;
-      leafOffset += e.first - binary.nodes[e.binary].leftOrFirst;
-      setMeta(p.node, s, ((e.count - 1u) << 5) | leafOffset);
+        if (b == e.binary) groupOffset = o;
+      setMeta(p.node, s, ((e.count - 1u) << 5) | (groupOffset + e.first));
       p.leafSlots++;
     }
     return p;
   }
 
-  // The leaf block: binary leaves by decreasing size (a leaf's slots stay together, in order), so the block
-  // starts with a leaf of 2 or more triangles and no meta byte is 0; all single triangles: from offset 1.
-  // Returns each leaf's offset in the block.
+  // The leaf block: leaf groups by decreasing size (a group's slots stay together, in order), so the block
+  // starts with a group of 2 or more triangles and no meta byte is 0; all single triangles: from offset 1.
+  // Fills p.leaves (the groups' binary leaves in block order) and returns each group's offset in the block.
   std::vector<std::pair<uint32_t, uint32_t>> planLeafBlock(const std::vector<SlotEntry>& entries,
                                                            WideNodePlan& p) const {
-    uint32_t largest = 0;
+    std::vector<uint32_t> groups;
     for (const SlotEntry& e : entries)
-      if (e.leaf && (p.leaves.empty() || p.leaves.back() != e.binary)) {
-        p.leaves.push_back(e.binary);
-        largest = std::max(largest, binary.nodes[e.binary].triCount);
-      }
-    std::stable_sort(p.leaves.begin(), p.leaves.end(), [&](uint32_t a, uint32_t b) {
-      return binary.nodes[a].triCount > binary.nodes[b].triCount;
+      if (e.leaf && (groups.empty() || groups.back() != e.binary)) groups.push_back(e.binary);
+    std::stable_sort(groups.begin(), groups.end(), [&](uint32_t a, uint32_t b) {
+      return slots.trianglesUnder(a) > slots.trianglesUnder(b);
     });
-    p.blockStart = largest == 1 ? 1u : 0u;
-    std::vector<std::pair<uint32_t, uint32_t>> offsetOf;  // (binary leaf, its offset in the block)
+    p.blockStart = !groups.empty() && slots.trianglesUnder(groups.front()) == 1 ? 1u : 0u;
+    std::vector<std::pair<uint32_t, uint32_t>> offsetOf;  // (group, its offset in the block)
     uint32_t offset = p.blockStart;
-    for (uint32_t b : p.leaves) {
-      offsetOf.push_back({b, offset});
-      offset += binary.nodes[b].triCount;
+    for (uint32_t g : groups) {
+      offsetOf.push_back({g, offset});
+      offset += slots.trianglesUnder(g);
+      leavesUnder(g, p.leaves);
     }
     return offsetOf;
   }
@@ -257,7 +200,9 @@ struct WidePlanner {
 
 }  // namespace
 
-WideNodePlan planWideNode(const Bvh& binary, uint32_t binaryIndex) { return WidePlanner{binary}.plan(binaryIndex); }
+WideNodePlan planWideNode(const Bvh& binary, const WideSlotChooser& slots, uint32_t binaryIndex) {
+  return WidePlanner{binary, slots}.plan(binaryIndex);
+}
 
 WideChildBox decodeChildBox(const gpu::BvhWideNode& node, uint32_t slot) {
   WideChildBox b;

@@ -1,16 +1,19 @@
 // The compressed 8-wide BVH (shaders/shared_types.h: BvhWideNode) made by collapsing a binary Bvh, whoever
-// built it: each wide node takes up to 8 subtrees of the binary tree (opening the largest-area interior child
-// until 8 or only leaves remain, within the node's leaf budget), quantizes their boxes outwards and places them
-// in direction slots. Leaves are the binary tree's leaves; the collapse moves each one, whole, so that a wide
-// node's leaves lie in one block of the BVH-order triangles, and rewrites the binary tree's leaf ranges and
+// built it: each wide node takes up to 8 subtrees of the binary tree, chosen greedily (opening the largest-area
+// interior child until 8 or only leaves remain, within the node's leaf budget) or by the SAH (bvh_wide_slots.h),
+// quantizes their boxes outwards and places them in direction slots. A leaf slot holds up to 8 triangles: a
+// binary leaf (greedy), or all the triangles under a binary node (SAH); a binary leaf of more than 8 takes
+// several slots (one per 8), with one box. The collapse moves each binary leaf, whole, so that a wide node's
+// leaves lie in one block of the BVH-order triangles, and rewrites the binary tree's leaf ranges and
 // triangleOrder to match (the binary tree, its traversal and every consumer of the BVH order see the same
-// leaves at their new place). A leaf of more than 8 triangles takes several slots (one per 8), with one box.
+// leaves at their new place).
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "renderer/bvh.h"
+#include "renderer/settings.h"
 #include "shaders/shared_types.h"
 
 namespace raylab {
@@ -18,6 +21,10 @@ namespace raylab {
 // A slot's triangle count fits 3 bits (1..8); a node's leaf block, its triangle mask, 32 triangles.
 constexpr uint32_t kWideLeafSlotTriangles = 8;
 constexpr uint32_t kWideNodeTriangles = 32;
+// The slots a leaf of `triangles` takes: one per 8.
+constexpr uint32_t wideLeafSlots(uint32_t triangles) {
+  return (triangles + kWideLeafSlotTriangles - 1) / kWideLeafSlotTriangles;
+}
 
 struct BvhWideStats {
   uint32_t nodeCount = 0;
@@ -38,7 +45,7 @@ struct BvhWide {
 // would be deeper than the traversal stack (RL_BVH_STACK); a binary tree within that depth never is (a wide
 // level is at least one binary level). `threads`: 0 for the hardware's (fewer for small trees); the result is
 // the same for every count (the tests compare them).
-BvhWide collapseBvh(Bvh& binary, uint32_t threads = 0);
+BvhWide collapseBvh(Bvh& binary, uint32_t threads = 0, WideCollapse how = Settings{}.wideCollapse);
 
 // A child box as the traversal decodes it (origin + q * 2^e, in float): tests use this.
 struct WideChildBox {

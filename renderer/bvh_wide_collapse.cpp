@@ -46,6 +46,7 @@ gpu::BvhWideNode placeNode(const WideNodePlan& p, const Bvh& binary, uint32_t& n
 // give), the rest are its descendants.
 struct SubtreeCollapse {
   const Bvh* binary = nullptr;
+  const WideSlotChooser* slots = nullptr;
   uint32_t binaryRoot = 0, depth = 0;
   std::vector<gpu::BvhWideNode> nodes;
   std::vector<uint32_t> order;                             // its leaves' triangles, in the wide tree's order
@@ -60,7 +61,7 @@ struct SubtreeCollapse {
   void build(uint32_t wideIndex, uint32_t binaryIndex, uint32_t level) {
     if (level >= RL_BVH_STACK) throw std::runtime_error("wide BVH: deeper than the traversal stack");
     maxDepth = std::max(maxDepth, level);
-    const WideNodePlan p = planWideNode(*binary, binaryIndex);
+    const WideNodePlan p = planWideNode(*binary, *slots, binaryIndex);
     leafCount += p.leafSlots;
     uint32_t nodeCount = uint32_t(nodes.size()), triangleCount = uint32_t(order.size());
     const gpu::BvhWideNode node = placeNode(p, *binary, nodeCount, triangleCount, [&](uint32_t b, uint32_t first) {
@@ -75,23 +76,6 @@ struct SubtreeCollapse {
   }
 };
 
-// The leaf reached from binary node `index` by always taking child `side` (0: left, 1: right). The walk stops at
-// the stack's depth: the empty scene's placeholders point back at the root.
-const gpu::BvhNode& outermostLeaf(const Bvh& binary, uint32_t index, uint32_t side) {
-  for (uint32_t d = 0; d < RL_BVH_STACK && binary.nodes.at(index).triCount == 0; ++d)
-    index = binary.nodes[index].leftOrFirst + side;
-  return binary.nodes.at(index);
-}
-
-// The triangles under binary node `index`: in a tree laid out depth first (buildBvh's) they are one range,
-// from its leftmost leaf's first to its rightmost leaf's last. Only for sharing out the work: in another layout
-// the estimate is poorer, the result the same.
-uint64_t trianglesUnder(const Bvh& binary, uint32_t index) {
-  const gpu::BvhNode& first = outermostLeaf(binary, index, 0);
-  const gpu::BvhNode& last = outermostLeaf(binary, index, 1);
-  return uint64_t(std::max<int64_t>(int64_t(last.leftOrFirst) + last.triCount - first.leftOrFirst, 0));
-}
-
 // The top of the tree: planned nodes whose children are top nodes or subtrees collapsed on their own.
 struct TopNode {
   WideNodePlan plan;
@@ -100,27 +84,28 @@ struct TopNode {
 
 struct ParallelCollapse {
   Bvh& binary;
+  const WideSlotChooser& slots;
   uint64_t splitAbove;  // binary subtrees of more triangles than this are split further
   std::vector<TopNode> top;
   std::vector<SubtreeCollapse> subtrees;
-  std::vector<uint64_t> subtreeTriangles;  // the estimate, for running the largest first
+  std::vector<uint64_t> subtreeTriangles;  // for running the largest first
   uint32_t leafCount = 0, maxDepth = 0;
 
   uint32_t plan(uint32_t binaryIndex, uint32_t depth) {
     if (depth >= RL_BVH_STACK) throw std::runtime_error("wide BVH: deeper than the traversal stack");
     maxDepth = std::max(maxDepth, depth);
     const uint32_t index = uint32_t(top.size());
-    top.push_back({planWideNode(binary, binaryIndex), {}});
+    top.push_back({planWideNode(binary, slots, binaryIndex), {}});
     leafCount += top[index].plan.leafSlots;
     const std::vector<uint32_t> interiors = top[index].plan.interiors;
     for (uint32_t b : interiors) {
-      const uint64_t triangles = trianglesUnder(binary, b);
+      const uint64_t triangles = slots.trianglesUnder(b);
       if (triangles > splitAbove) {
         const uint32_t child = plan(b, depth + 1);  // a statement of its own: plan() may move `top`
         top[index].children.push_back(child);
       } else {
         top[index].children.push_back(~int64_t(subtrees.size()));
-        subtrees.push_back({&binary, b, depth + 1});
+        subtrees.push_back({&binary, &slots, b, depth + 1});
         subtreeTriangles.push_back(triangles);
       }
     }
@@ -178,8 +163,8 @@ void moveSubtree(SubtreeCollapse& s, const Placement::SubtreePlace& at, BvhWide&
 
 // The top planned, the subtrees collapsed on the threads, largest first (no thread left with a big one at the
 // end).
-ParallelCollapse collapseParts(Bvh& binary, uint32_t threads) {
-  ParallelCollapse c{binary, binary.triangleOrder.size() / (8 * uint64_t(threads))};
+ParallelCollapse collapseParts(Bvh& binary, const WideSlotChooser& slots, uint32_t threads) {
+  ParallelCollapse c{binary, slots, binary.triangleOrder.size() / (8 * uint64_t(threads))};
   c.plan(0, 0);
   std::vector<size_t> largestFirst(c.subtrees.size());
   for (size_t i = 0; i < largestFirst.size(); ++i) largestFirst[i] = i;
@@ -190,8 +175,8 @@ ParallelCollapse collapseParts(Bvh& binary, uint32_t threads) {
   return c;
 }
 
-void collapseInParallel(Bvh& binary, BvhWide& wide, uint32_t threads) {
-  ParallelCollapse c = collapseParts(binary, threads);
+void collapseInParallel(Bvh& binary, const WideSlotChooser& slots, BvhWide& wide, uint32_t threads) {
+  ParallelCollapse c = collapseParts(binary, slots, threads);
   Placement at;
   at.subtrees.resize(c.subtrees.size());
   at.place(c, 0, 0);
@@ -215,8 +200,8 @@ void collapseInParallel(Bvh& binary, BvhWide& wide, uint32_t threads) {
 }
 
 // The one recursion: the whole tree as one subtree, already at its place.
-void collapseSerially(Bvh& binary, BvhWide& wide) {
-  SubtreeCollapse s{&binary, 0, 0};
+void collapseSerially(Bvh& binary, const WideSlotChooser& slots, BvhWide& wide) {
+  SubtreeCollapse s{&binary, &slots, 0, 0};
   s.order.reserve(binary.triangleOrder.size());
   s.run();
   if (s.order.size() != binary.triangleOrder.size())
@@ -230,16 +215,17 @@ void collapseSerially(Bvh& binary, BvhWide& wide) {
 
 }  // namespace
 
-BvhWide collapseBvh(Bvh& binary, uint32_t threads) {
+BvhWide collapseBvh(Bvh& binary, uint32_t threads, WideCollapse how) {
   const auto start = std::chrono::steady_clock::now();
   BvhWide wide;
   wide.nodes.resize(1);
   if (!binary.nodes.empty()) {
     threads = workerThreads(threads, binary.triangleOrder.size(), 16384);
+    const WideSlotChooser slots(binary, how, threads);
     if (threads == 1 || binary.triangleOrder.empty()) {
-      collapseSerially(binary, wide);
+      collapseSerially(binary, slots, wide);
     } else {
-      collapseInParallel(binary, wide, threads);
+      collapseInParallel(binary, slots, wide, threads);
     }
   }
   wide.stats.nodeCount = uint32_t(wide.nodes.size());

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "renderer/bvh.h"
+#include "renderer/bvh_wide_slots.h"
 #include "shaders/shared_types.h"
 
 namespace raylab {
@@ -21,8 +22,8 @@ struct WideNodePlan {
                                     // childBase, childBase + 1, ...
 };
 
-// The wide node for binary node `binaryIndex`: up to 8 binary subtrees below it (bvh_wide.h), their slots,
-// quantized boxes and leaf meta bytes.
-WideNodePlan planWideNode(const Bvh& binary, uint32_t binaryIndex);
+// The wide node for binary node `binaryIndex`: the slots `slots` chose for it (bvh_wide_slots.h), their direction
+// slots, quantized boxes and leaf meta bytes.
+WideNodePlan planWideNode(const Bvh& binary, const WideSlotChooser& slots, uint32_t binaryIndex);
 
 }  // namespace raylab

@@ -47,12 +47,13 @@ EmitterTable buildEmitterTable(const Scene& scene, const std::vector<uint32_t>& 
   return table;
 }
 
-GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene) {
+GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCollapse collapse)
+    : wideCollapse_(collapse) {
   for (const Triangle& t : scene.triangles)
     if (t.material >= scene.materials.size()) throw SceneLoadError(scene.name + ": triangle material out of range");
   Bvh bvh = buildBvh(scene.triangles);
   bvhStats_ = bvh.stats;
-  const BvhWide wide = collapseBvh(bvh);  // moves the leaves into its leaf order: before anything reads the order
+  const BvhWide wide = collapseBvh(bvh, 0, collapse);  // moves the leaves into its leaf order: before anything reads the order
   wideStats_ = wide.stats;
   bounds_ = scene.bounds();
   triangleCount_ = static_cast<uint32_t>(scene.triangles.size());

@@ -16,12 +16,15 @@ class VulkanContext;
 
 class GpuSceneData {
  public:
-  GpuSceneData(const VulkanContext& ctx, const Scene& scene);
+  // `collapse`: how the wide BVH is made (Settings::wideCollapse), which also decides the BVH order of the
+  // triangles both layouts and the emitter table use.
+  GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCollapse collapse);
 
   const gpu::GpuScene& block() const { return block_; }
   const BvhBuildStats& bvhStats() const { return bvhStats_; }
   // The wide BVH collapsed from the binary one; both are on the GPU (Settings::bvh picks one per frame).
   const BvhWideStats& wideBvhStats() const { return wideStats_; }
+  WideCollapse wideCollapse() const { return wideCollapse_; }
   const Bounds& bounds() const { return bounds_; }
   uint32_t triangleCount() const { return triangleCount_; }
   uint32_t emitterCount() const { return block_.emitterCount; }
@@ -35,6 +38,7 @@ class GpuSceneData {
   gpu::GpuScene block_{};
   BvhBuildStats bvhStats_;
   BvhWideStats wideStats_;
+  WideCollapse wideCollapse_;
   Bounds bounds_;
   uint32_t triangleCount_ = 0;
   std::vector<glm::vec3> bvhOrderVertices_;

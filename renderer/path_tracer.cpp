@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "renderer/reorder/key_functions.h"
 #include "renderer/reorder/path_sorter.h"
@@ -40,7 +41,7 @@ LazyPipeline pathStage(const VulkanContext& ctx, const char* shader, SpecConstan
 }  // namespace
 
 PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera)
-    : PathTracer(ctx, scene, std::make_shared<GpuSceneData>(ctx, scene), settings, camera) {}
+    : PathTracer(ctx, scene, std::make_shared<GpuSceneData>(ctx, scene, settings.wideCollapse), settings, camera) {}
 
 PathTracer::PathTracer(const PathTracer& sameScene, const Scene& scene, const Settings& settings,
                        const Viewpoint& camera)
@@ -90,6 +91,10 @@ void PathTracer::restartAccumulation() {
 // Settings the device cannot run (the rt tracer or SER without their extensions) are refused here too; the
 // commands check first (unsupportedSettings) to exit with a usage error, the window greys them out.
 void PathTracer::checkSupported(const Settings& settings) const {
+  // The scene's wide BVH was collapsed one way: another is another scene (the window builds it again).
+  if (settings.wideCollapse != scene_->wideCollapse())
+    throw std::logic_error("--wide-collapse " + toString(settings.wideCollapse) + " for a scene collapsed " +
+                           toString(scene_->wideCollapse()) + ": build the tracer again");
   if (std::string why = unsupportedSettings(ctx_.info(), settings); !why.empty()) throw VulkanError(why);
 }
 

@@ -28,6 +28,8 @@ const std::pair<SortPolicy, const char*> kPolicyNames[] = {
 const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},
                                                        {Kernel::Megakernel, "megakernel"}};
 const std::pair<BvhLayout, const char*> kBvhLayoutNames[] = {{BvhLayout::Binary, "binary"}, {BvhLayout::Wide, "wide"}};
+const std::pair<WideCollapse, const char*> kWideCollapseNames[] = {{WideCollapse::Greedy, "greedy"},
+                                                                   {WideCollapse::Sah, "sah"}};
 const std::pair<Tracer, const char*> kTracerNames[] = {{Tracer::Compute, "compute"}, {Tracer::Rt, "rt"}};
 const std::pair<Ser, const char*> kSerNames[] = {{Ser::Off, "off"}, {Ser::On, "on"}, {Ser::Hint, "hint"}};
 
@@ -70,6 +72,7 @@ RAYLAB_ALL_VALUES(TraceShade, kTraceShadeNames)
 RAYLAB_ALL_VALUES(SortPolicy, kPolicyNames)
 RAYLAB_ALL_VALUES(Kernel, kKernelNames)
 RAYLAB_ALL_VALUES(BvhLayout, kBvhLayoutNames)
+RAYLAB_ALL_VALUES(WideCollapse, kWideCollapseNames)
 RAYLAB_ALL_VALUES(Tracer, kTracerNames)
 RAYLAB_ALL_VALUES(Ser, kSerNames)
 #undef RAYLAB_ALL_VALUES
@@ -118,6 +121,7 @@ std::string toString(TraceShade t) { return nameOf(kTraceShadeNames, t); }
 std::optional<TraceShade> parseTraceShade(const std::string& n) { return parse(kTraceShadeNames, n); }
 std::string toString(BvhLayout b) { return nameOf(kBvhLayoutNames, b); }
 std::optional<BvhLayout> parseBvhLayout(const std::string& n) { return parse(kBvhLayoutNames, n); }
+std::string toString(WideCollapse c) { return nameOf(kWideCollapseNames, c); }
 
 std::string keyStrategyNames() {
   std::string s;

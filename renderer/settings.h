@@ -115,6 +115,14 @@ enum class TraceShade { Split, Fused };
 // unsorted (Sponza 27.32 against 27.39 ms; the hall 17.20 against 15.82) and faster sorted (Sponza 24.85
 // against 26.16); binary stays the default, the faster unsorted frame on the built-in hall.
 enum class BvhLayout { Binary, Wide };
+// How the wide BVH is collapsed from the binary one (renderer/bvh_wide_slots.h): greedy (open the largest-area
+// subtree until 8) or SAH-optimal (Ylitie et al.'s dynamic program). The collapse moves the triangles into its
+// leaf order, which both layouts and the emitter table read: another collapse is another scene (built again,
+// the image restarts). On an H200 (docs/results/h200-wide-bvh/sah-collapse: 5 cases, 2048x1024 and 4096x2048,
+// 4 and 8 bounces, wide BVH) sah's frames are a median 2% faster than greedy's (the temple's views 2-6%,
+// Sponza sorted 2%), slower only on the cluttered room (2-6%); the binary BVH's frames do not move with the
+// order (within 0.3%). Sah is the default; greedy stays for the room and for comparison.
+enum class WideCollapse { Greedy, Sah };
 
 const std::vector<KeyStrategy>& allKeyStrategies();
 std::string toString(KeyStrategy s);
@@ -138,6 +146,7 @@ std::string toString(TraceShade t);
 std::optional<TraceShade> parseTraceShade(const std::string& name);
 std::string toString(BvhLayout b);
 std::optional<BvhLayout> parseBvhLayout(const std::string& name);
+std::string toString(WideCollapse c);
 std::string keyStrategyNames();  // "none|dead-last|fixed|..."
 std::string toString(HeatmapView v);
 std::string toString(HeatmapKeyColour c);
@@ -148,7 +157,7 @@ std::optional<HeatmapView> parseHeatmapView(const std::string& name);
 const std::vector<HeatmapView>& allHeatmapViews();
 // Every value of a settings enum, in the order the help and the window list them (KeyStrategy, SortAlgorithm,
 // HeatmapView, HeatmapKeyColour, HeatmapScale, Kernel, Tracer, Ser, SortPolicy, Fusion, Compaction,
-// TraceShade, BvhLayout).
+// TraceShade, BvhLayout, WideCollapse).
 template <class E>
 const std::vector<E>& allValues();
 
@@ -197,6 +206,7 @@ struct Settings {
   Kernel kernel = Kernel::Wavefront;
   Tracer tracer = Tracer::Compute;
   BvhLayout bvh = BvhLayout::Binary;  // compute tracer only
+  WideCollapse wideCollapse = WideCollapse::Sah;  // the scene's wide BVH (both tracers see its triangle order)
   Ser ser = Ser::Off;  // rt tracer's megakernel only
 
   // Reordering

@@ -63,6 +63,11 @@ std::vector<SettingRow> tracerRows() {
       RAYLAB_FIELD(bvh, "bvh").jsonAbsent("bvh", "binary").csv("bvh").effects(kAccumulation)
           .help("binary|wide", "compute tracer: the binary BVH (default) or the compressed 8-wide one\n"
                 "collapsed from it (quantized child boxes, as CWBVH)").sample("wide"),
+      RAYLAB_FIELD(wideCollapse, "wide-collapse").jsonAbsent("wide_collapse", "greedy").csv("wide_collapse")
+          .effects(kEffectScene | kAccumulation | kCache)
+          .help("greedy|sah", "how the wide BVH is collapsed from the binary one: open the largest subtree\n"
+                "first, or SAH-optimal (Ylitie et al.) (default {default}); the scene is built again")
+          .sample("greedy"),
       RAYLAB_FIELD(ser, "ser").jsonAbsent("ser", "off").jsonError("unknown ser").csv("ser").effects(kSortCosts)
           .help("off|on|hint", "rt megakernel: Shader Execution Reordering by hit, or by hit with the\n"
                 "top bits of --strategy's key as coherence hint (needs a strategy)").sample("hint"),

@@ -56,7 +56,11 @@ void LabWindow::loadSceneOrThrow(const std::string& nameOrPath) {
   next.view.clear();
   LoadedScene loaded = loadSceneForSettings(next);
   Settings start = tracer_->settings();
-  start.scene = nameOrPath, start.view = loaded.view.name;
+  // What the scene is made of comes from the settings asked for (a script's `set clutter-seed`, `set
+  // wide-collapse`), not from the tracer of the old scene.
+  for (const SettingRow& r : settingRows())
+    if (r.effects & kEffectScene) r.copy(start, next);
+  start.view = loaded.view.name;
   auto tracer = std::make_unique<PathTracer>(*ctx_, loaded.scene, start, loaded.view);
   vkDeviceWaitIdle(ctx_->device());
   tracer_ = std::move(tracer);

@@ -9,10 +9,12 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <random>
 
 #include "renderer/bvh_traverse_cpu.h"
 #include "renderer/bvh_wide.h"
+#include "renderer/bvh_wide_slots.h"
 #include "tests/scene_checks.h"
 #include "renderer/gpu_scene.h"
 #include "renderer/path_tracer.h"
@@ -116,13 +118,18 @@ void checkStructure(const std::vector<Triangle>& tris, const Bvh& binary, const 
   EXPECT_LE(w.maxDepth, binary.stats.maxDepth);
   EXPECT_EQ(wide.stats.nodeCount, wide.nodes.size());
   EXPECT_EQ(wide.stats.leafCount, w.leafSlots);
-  // The binary tree's leaves, each in one slot or more (one per 8 triangles); a wide node replaces at least one
-  // and at most 7 binary interior nodes, or holds one binary leaf that did not fit its parent's leaf budget.
-  EXPECT_GE(w.leafSlots, binary.stats.leafCount);
+  // A leaf slot holds at most 8 triangles, all of one binary leaf or all under one binary node: at least one
+  // slot per 8 triangles, at most as many as the binary leaves' slots of 8. A wide node stands for a binary
+  // interior node or holds a binary leaf; its 8 slots hold the other nodes and the leaf slots.
+  EXPECT_GE(uint64_t(w.leafSlots) * kWideLeafSlotTriangles, uint64_t(tris.size()));
+  uint32_t binaryLeafSlots = 0;
+  for (const gpu::BvhNode& n : binary.nodes)
+    binaryLeafSlots += wideLeafSlots(n.triCount);
+  EXPECT_LE(w.leafSlots, binaryLeafSlots);
   const uint32_t binaryInterior = binary.stats.nodeCount - binary.stats.leafCount;
-  if (binaryInterior > 0) {
-    EXPECT_LE(wide.nodes.size(), binaryInterior + binary.stats.leafCount / 2);
-    EXPECT_GE(wide.nodes.size() * 7, binaryInterior);
+  if (!tris.empty()) {
+    EXPECT_LE(wide.nodes.size(), binaryInterior + binary.stats.leafCount / 2 + 1);
+    EXPECT_GE(wide.nodes.size() * RL_BVH_WIDTH, w.leafSlots + wide.nodes.size() - 1);
   }
 }
 
@@ -258,34 +265,79 @@ void expectAgreement(const Agreement& a, const char* what) {
   EXPECT_LE(a.axisAlignedWideMisses, a.binaryMisses) << what;
 }
 
-TEST(BvhWide, TempleStructureAndTraversal) {
-  const Scene temple = makeTemple();
-  Bvh binary = buildBvh(temple.triangles);
-  const BvhWide wide = collapseBvh(binary);
-  checkStructure(temple.triangles, binary, wide);
-  std::printf("temple: %zu triangles, binary %u nodes, wide %u nodes + %u leaf slots, %.1f tree bytes/triangle\n",
-              temple.triangles.size(), binary.stats.nodeCount, wide.stats.nodeCount, wide.stats.leafCount,
-              double(wide.stats.treeBytes()) / double(temple.triangles.size()));
-  expectAgreement(compare(temple, binary, wide, testRays(temple, 4000, 20000, 7), 10), "temple");
+// Both collapses (Settings::wideCollapse), each test of the tree and its traversal for each.
+std::string named(const char* what, WideCollapse how) { return std::string(what) + " (" + toString(how) + ")"; }
+
+// Both collapses of `scene`: each tree's structure and its traversal against the binary one's, and the SAH
+// collapse's cost, optimal on exact boxes, still no worse than greedy's on the quantized ones.
+void checkBothCollapses(const char* what, const Scene& scene, uint32_t perView, uint32_t secondary, uint32_t seed,
+                        uint32_t allEvery) {
+  std::map<WideCollapse, double> cost;
+  for (WideCollapse how : allValues<WideCollapse>()) {
+    Bvh binary = buildBvh(scene.triangles);
+    const BvhWide wide = collapseBvh(binary, 0, how);
+    checkStructure(scene.triangles, binary, wide);
+    cost[how] = wideSahCost(wide, binary);
+    std::printf("%s (%s): %zu triangles, binary %u nodes, wide %u nodes + %u leaf slots, %.1f tree bytes/triangle, "
+                "collapse %.0f ms, wide SAH cost %.2f\n", what, toString(how).c_str(), scene.triangles.size(),
+                binary.stats.nodeCount, wide.stats.nodeCount, wide.stats.leafCount,
+                double(wide.stats.treeBytes()) / double(scene.triangles.size()), wide.stats.buildMs, cost[how]);
+    expectAgreement(compare(scene, binary, wide, testRays(scene, perView, secondary, seed), allEvery),
+                    named(what, how).c_str());
+  }
+  EXPECT_LE(cost.at(WideCollapse::Sah), cost.at(WideCollapse::Greedy)) << what;
 }
+
+TEST(BvhWide, TempleStructureAndTraversal) { checkBothCollapses("temple", makeTemple(), 4000, 20000, 7, 10); }
 
 TEST(BvhWide, RandomAndIdenticalTriangles) {
   Scene random;
   random.triangles = randomTriangles(3000, 11);
   random.viewpoints.push_back({"outside", {0, 0, 40}, {0, 0, 0}});
   random.viewpoints.push_back({"inside", {0.5f, 0.2f, 0.1f}, {3, 1, -2}});
-  Bvh binary = buildBvh(random.triangles);
-  const BvhWide wide = collapseBvh(binary);
-  checkStructure(random.triangles, binary, wide);
-  expectAgreement(compare(random, binary, wide, testRays(random, 3000, 5000, 5), 10), "random triangles");
   // Many triangles in one place: one big leaf (SAH cannot split them), a root with one leaf child or a few.
   Scene same;
   same.triangles.assign(300, random.triangles[0]);
   same.viewpoints.push_back({"front", 0.5f * (same.triangles[0].v[0] + same.triangles[0].v[1]) + glm::vec3(0, 0, 30),
                              same.triangles[0].v[2]});
-  Bvh sameBinary = buildBvh(same.triangles);
-  const BvhWide sameWide = collapseBvh(sameBinary);
-  checkStructure(same.triangles, sameBinary, sameWide);
+  for (WideCollapse how : allValues<WideCollapse>()) {
+    Bvh binary = buildBvh(random.triangles);
+    const BvhWide wide = collapseBvh(binary, 0, how);
+    checkStructure(random.triangles, binary, wide);
+    expectAgreement(compare(random, binary, wide, testRays(random, 3000, 5000, 5), 10),
+                    named("random triangles", how).c_str());
+    Bvh sameBinary = buildBvh(same.triangles);
+    const BvhWide sameWide = collapseBvh(sameBinary, 0, how);
+    checkStructure(same.triangles, sameBinary, sameWide);
+  }
+}
+
+// The SAH's choice where it is plain: four far clusters of 8 overlapping triangles, 32 in all (a node's leaf
+// budget). As leaf slots of the root they cost 32 * 0.3 * a cluster's area; a wide node for any of them costs
+// its area more, for nothing (its children's boxes overlap, as big). So the whole tree is the root, whatever
+// leaves Embree made: with single-triangle leaves, the collapse that opened the largest subtrees until 8 made
+// 9 nodes of it.
+TEST(BvhWide, SahKeepsOverlappingClustersAsLeaves) {
+  std::vector<Triangle> tris;
+  for (float x : {0.0f, 100.0f, 200.0f, 300.0f})
+    for (int i = 0; i < 8; ++i) {
+      Triangle t;
+      const glm::vec3 o(x + 1e-3f * float(i), 1e-3f * float(i % 3), 0.0f);
+      t.v[0] = o, t.v[1] = o + glm::vec3(1, 0, 0), t.v[2] = o + glm::vec3(0, 1, 0.5f);
+      tris.push_back(t);
+    }
+  for (uint32_t maxLeaf : {1u, 2u, 8u}) {
+    Bvh binary = buildBvh(tris, maxLeaf);
+    Bvh greedyBinary = binary;
+    const BvhWide wide = collapseBvh(binary, 0, WideCollapse::Sah);
+    checkStructure(tris, binary, wide);
+    EXPECT_EQ(wide.nodes.size(), 1u) << "leaf " << maxLeaf;
+    const BvhWide greedy = collapseBvh(greedyBinary, 0, WideCollapse::Greedy);
+    if (maxLeaf == 1) {
+      EXPECT_EQ(greedy.nodes.size(), 9u);
+    }
+    EXPECT_LE(wideSahCost(wide, binary), wideSahCost(greedy, greedyBinary)) << "leaf " << maxLeaf;
+  }
 }
 
 TEST(BvhWide, OneTriangleAndNone) {
@@ -293,40 +345,49 @@ TEST(BvhWide, OneTriangleAndNone) {
   one.triangles.resize(1);
   one.triangles[0].v[1] = {1, 0, 0};
   one.triangles[0].v[2] = {0, 1, 0};
-  Bvh binary = buildBvh(one.triangles);  // a root that is a leaf
-  const BvhWide wide = collapseBvh(binary);
-  checkStructure(one.triangles, binary, wide);
-  ASSERT_EQ(wide.nodes.size(), 1u);
-  ASSERT_EQ(wide.stats.leafCount, 1u);
-  const std::vector<gpu::GpuTriangle> tris = bvhOrderTriangles(one.triangles, binary.triangleOrder);
-  EXPECT_NEAR(traverseWideCpu(wide, tris, {0.2f, 0.2f, 1}, {0, 0, -1}, 1e30f, false).t, 1.0f, 1e-6f);
-  EXPECT_LT(traverseWideCpu(wide, tris, {2, 2, 1}, {0, 0, -1}, 1e30f, false).t, 0.0f);
-  // No triangles: a root without children, every ray misses after one step.
-  Bvh none = buildBvh({});
-  const BvhWide empty = collapseBvh(none);
-  EXPECT_EQ(empty.nodes.size(), 1u);
-  EXPECT_EQ(empty.stats.leafCount, 0u);
-  const CpuHit miss = traverseWideCpu(empty, {}, {0, 0, 0}, {0, 0, 1}, 1e30f, false);
-  EXPECT_LT(miss.t, 0.0f);
-  EXPECT_EQ(miss.steps, 1u);
+  for (WideCollapse how : allValues<WideCollapse>()) {
+    SCOPED_TRACE(toString(how));
+    Bvh binary = buildBvh(one.triangles);  // a root that is a leaf
+    const BvhWide wide = collapseBvh(binary, 0, how);
+    checkStructure(one.triangles, binary, wide);
+    ASSERT_EQ(wide.nodes.size(), 1u);
+    ASSERT_EQ(wide.stats.leafCount, 1u);
+    // The SAH cost: the root (1) and its one triangle in a slot as big as the root, to a quantization step (0.3).
+    EXPECT_NEAR(wideSahCost(wide, binary), 1.3, 0.01);
+    const std::vector<gpu::GpuTriangle> tris = bvhOrderTriangles(one.triangles, binary.triangleOrder);
+    EXPECT_NEAR(traverseWideCpu(wide, tris, {0.2f, 0.2f, 1}, {0, 0, -1}, 1e30f, false).t, 1.0f, 1e-6f);
+    EXPECT_LT(traverseWideCpu(wide, tris, {2, 2, 1}, {0, 0, -1}, 1e30f, false).t, 0.0f);
+    // No triangles: a root without children, every ray misses after one step.
+    Bvh none = buildBvh({});
+    const BvhWide empty = collapseBvh(none, 0, how);
+    EXPECT_EQ(empty.nodes.size(), 1u);
+    EXPECT_EQ(empty.stats.leafCount, 0u);
+    EXPECT_EQ(wideSahCost(empty, none), 0.0);
+    const CpuHit miss = traverseWideCpu(empty, {}, {0, 0, 0}, {0, 0, 1}, 1e30f, false);
+    EXPECT_LT(miss.t, 0.0f);
+    EXPECT_EQ(miss.steps, 1u);
+  }
 }
 
 void expectSameCollapse(const std::vector<Triangle>& tris, uint32_t maxLeaf, const std::string& what) {
   const Bvh built = buildBvh(tris, maxLeaf);
-  Bvh one = built;
-  const BvhWide wideOne = collapseBvh(one, 1);
-  for (uint32_t threads : {2u, 5u, 16u, 0u}) {
-    const std::string with = what + ", leaf " + std::to_string(maxLeaf) + ", " + std::to_string(threads) + " threads";
-    Bvh many = built;
-    const BvhWide wideMany = collapseBvh(many, threads);
-    ASSERT_EQ(wideMany.nodes.size(), wideOne.nodes.size()) << with;
-    EXPECT_EQ(std::memcmp(wideMany.nodes.data(), wideOne.nodes.data(), wideOne.nodes.size() * sizeof(gpu::BvhWideNode)), 0)
-        << with;
-    EXPECT_EQ(std::memcmp(many.nodes.data(), one.nodes.data(), one.nodes.size() * sizeof(gpu::BvhNode)), 0) << with;
-    EXPECT_EQ(many.triangleOrder, one.triangleOrder) << with;
-    EXPECT_EQ(wideMany.stats.nodeCount, wideOne.stats.nodeCount) << with;
-    EXPECT_EQ(wideMany.stats.leafCount, wideOne.stats.leafCount) << with;
-    EXPECT_EQ(wideMany.stats.maxDepth, wideOne.stats.maxDepth) << with;
+  for (WideCollapse how : allValues<WideCollapse>()) {
+    Bvh one = built;
+    const BvhWide wideOne = collapseBvh(one, 1, how);
+    for (uint32_t threads : {2u, 5u, 16u, 0u}) {
+      const std::string with = what + ", " + toString(how) + ", leaf " + std::to_string(maxLeaf) + ", " +
+                               std::to_string(threads) + " threads";
+      Bvh many = built;
+      const BvhWide wideMany = collapseBvh(many, threads, how);
+      ASSERT_EQ(wideMany.nodes.size(), wideOne.nodes.size()) << with;
+      EXPECT_EQ(std::memcmp(wideMany.nodes.data(), wideOne.nodes.data(),
+                            wideOne.nodes.size() * sizeof(gpu::BvhWideNode)), 0) << with;
+      EXPECT_EQ(std::memcmp(many.nodes.data(), one.nodes.data(), one.nodes.size() * sizeof(gpu::BvhNode)), 0) << with;
+      EXPECT_EQ(many.triangleOrder, one.triangleOrder) << with;
+      EXPECT_EQ(wideMany.stats.nodeCount, wideOne.stats.nodeCount) << with;
+      EXPECT_EQ(wideMany.stats.leafCount, wideOne.stats.leafCount) << with;
+      EXPECT_EQ(wideMany.stats.maxDepth, wideOne.stats.maxDepth) << with;
+    }
   }
 }
 
@@ -348,14 +409,7 @@ TEST(BvhWide, SameTreeOnAnyThreadCount) {
 TEST(BvhWide, Sponza) {
   const std::string path = RAYLAB_SOURCE_DIR "/../shared/scenes/Sponza/Sponza.gltf";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "no Sponza at " << path;
-  const Scene sponza = loadGltf(path);
-  Bvh binary = buildBvh(sponza.triangles);
-  const BvhWide wide = collapseBvh(binary);
-  checkStructure(sponza.triangles, binary, wide);
-  std::printf("Sponza: %zu triangles, binary %u nodes, wide %u nodes + %u leaf slots, %.1f tree bytes/triangle, "
-              "collapse %.0f ms\n", sponza.triangles.size(), binary.stats.nodeCount, wide.stats.nodeCount,
-              wide.stats.leafCount, double(wide.stats.treeBytes()) / double(sponza.triangles.size()), wide.stats.buildMs);
-  expectAgreement(compare(sponza, binary, wide, testRays(sponza, 2000, 10000, 3), 100), "Sponza");
+  checkBothCollapses("Sponza", loadGltf(path), 2000, 10000, 3, 100);
 }
 
 }  // namespace

@@ -54,13 +54,17 @@ TEST_F(WideBvhRender, RendersTheBinaryImageUpToTies) {
     for (Kernel kernel : {Kernel::Wavefront, Kernel::Megakernel})
       for (TraceShade traceShade : {TraceShade::Split, TraceShade::Fused}) {
         if (kernel == Kernel::Megakernel && traceShade == TraceShade::Fused) continue;  // nothing to fuse
-        Settings binary = base;
-        binary.kernel = kernel;
-        binary.traceShade = traceShade;
-        Settings wide = binary;
-        wide.bvh = BvhLayout::Wide;
-        expectClose(difference(renderRadiance(ctx(), scene, binary, view), renderRadiance(ctx(), scene, wide, view)),
-                    view.name + " " + toString(kernel) + " " + toString(traceShade));
+        // Each collapse orders the triangles its way: both layouts then see that order.
+        for (WideCollapse collapse : allValues<WideCollapse>()) {
+          Settings binary = base;
+          binary.kernel = kernel;
+          binary.traceShade = traceShade;
+          binary.wideCollapse = collapse;
+          Settings wide = binary;
+          wide.bvh = BvhLayout::Wide;
+          expectClose(difference(renderRadiance(ctx(), scene, binary, view), renderRadiance(ctx(), scene, wide, view)),
+                      view.name + " " + toString(kernel) + " " + toString(traceShade) + " " + toString(collapse));
+        }
       }
   }
 }

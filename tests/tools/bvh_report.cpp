@@ -19,6 +19,7 @@
 
 #include "renderer/bvh.h"
 #include "renderer/bvh_wide.h"
+#include "renderer/bvh_wide_slots.h"
 #include "renderer/checked_write.h"
 #include "scenes/scene_library.h"
 
@@ -59,6 +60,7 @@ int main(int argc, char** argv) {
   uint32_t maxLeaf = 0;  // 0: buildBvh's default
   uint32_t threads = 0;  // 0: the hardware's
   bool hash = false;
+  raylab::WideCollapse collapse = raylab::Settings{}.wideCollapse;
   std::string outPath;
   std::vector<std::string> scenes;
   for (int i = 1; i < argc; ++i) {
@@ -69,6 +71,13 @@ int main(int argc, char** argv) {
       maxLeaf = static_cast<uint32_t>(std::max(1, std::atoi(argv[++i])));
     } else if (a == "--threads" && i + 1 < argc) {
       threads = static_cast<uint32_t>(std::max(1, std::atoi(argv[++i])));
+    } else if (a == "--wide-collapse" && i + 1 < argc) {
+      const std::string how = argv[++i];
+      if (how != "greedy" && how != "sah") {
+        std::fprintf(stderr, "raylab_bvh_report: --wide-collapse takes greedy or sah, not '%s'\n", how.c_str());
+        return 2;
+      }
+      collapse = how == "sah" ? raylab::WideCollapse::Sah : raylab::WideCollapse::Greedy;
     } else if (a == "--hash") {
       hash = true;
     } else if (a == "--out" && i + 1 < argc) {
@@ -79,7 +88,8 @@ int main(int argc, char** argv) {
   }
   if (scenes.empty()) {
     std::fprintf(stderr,
-                 "usage: raylab_bvh_report [--repeats N] [--max-leaf N] [--threads N] [--hash] [--out FILE] SCENE...\n");
+                 "usage: raylab_bvh_report [--repeats N] [--max-leaf N] [--threads N] [--wide-collapse greedy|sah] "
+                 "[--hash] [--out FILE] SCENE...\n");
     return 2;
   }
   std::string lines;
@@ -100,7 +110,7 @@ int main(int argc, char** argv) {
         embreeMs.push_back(bvh.stats.embreeMs);
         flattenMs.push_back(bvh.stats.flattenMs);
         collapsed = bvh;  // the collapse rewrites the binary tree's leaf order
-        wide = raylab::collapseBvh(collapsed, threads);
+        wide = raylab::collapseBvh(collapsed, threads, collapse);
         collapseMs.push_back(wide.stats.buildMs);
       }
       auto median = [](std::vector<double> v) {
@@ -124,6 +134,10 @@ int main(int argc, char** argv) {
                             {"embree_ms_median", median(embreeMs)},
                             {"flatten_ms_median", median(flattenMs)},
                             {"wide_collapse_ms_median", median(collapseMs)},
+                            {"wide_collapse", raylab::toString(collapse)},
+                            {"wide_nodes", wide.stats.nodeCount},
+                            {"wide_leaf_slots", wide.stats.leafCount},
+                            {"wide_sah_cost", raylab::wideSahCost(wide, collapsed)},
                             {"repeats", repeats}};
       if (hash) row["hash_binary"] = binaryHash(bvh), row["hash_wide"] = wideHash(collapsed, wide);
       lines += row.dump() + "\n";
