@@ -6,6 +6,7 @@
 
 #include "renderer/reorder/key_functions.h"
 #include "renderer/reorder/key_strategies.h"
+#include "renderer/settings_table.h"
 #include "renderer/stages.h"
 
 namespace raylab {
@@ -109,8 +110,12 @@ double RecentMean::value() const {
 }
 
 bool SpeedAccuracyBook::comparable(const Settings& a, const Settings& b) {
-  return a.scene == b.scene && a.view == b.view && a.width == b.width && a.height == b.height &&
-         a.bounces == b.bounces && a.sppPerFrame == b.sppPerFrame && a.countSimt == b.countSimt;
+  // Another scene is every setting the scene is made of (settings_table.h: the name, the room's seed, the
+  // wide BVH's collapse, which orders the triangles and so the light samples).
+  for (const SettingRow& r : settingRows())
+    if ((r.effects & kEffectScene) && !r.same(a, b)) return false;
+  return a.view == b.view && a.width == b.width && a.height == b.height && a.bounces == b.bounces &&
+         a.sppPerFrame == b.sppPerFrame && a.countSimt == b.countSimt;
 }
 
 void SpeedAccuracyBook::clear() {

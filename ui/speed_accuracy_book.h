@@ -83,8 +83,9 @@ class SpeedAccuracyBook {
   // a hundred values must not grow the book, or the table, without bound).
   static constexpr size_t kMaxPoints = 40;
 
-  // Adds a finished frame to the point of the settings it was rendered with. A different scene, view,
-  // size, path length, samples per frame or SIMT counting makes earlier points incomparable: they go.
+  // Adds a finished frame to the point of the settings it was rendered with. A different scene (or a setting
+  // it is made of: the room's seed, the wide collapse), view, size, path length, samples per frame or SIMT
+  // counting makes earlier points incomparable: they go.
   void record(const Settings& rendered, const FrameStats& stats);
   void clear();
   const std::vector<SpeedAccuracyPoint>& points() const { return points_; }

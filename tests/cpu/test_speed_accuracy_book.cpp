@@ -202,6 +202,20 @@ TEST(SpeedAccuracyBook, ContextChangeAndClearForgetPoints) {
   EXPECT_EQ(book.current(), nullptr);
   book.record(bigger, frame(2.0, 10.0));
   EXPECT_EQ(book.points()[0].number, 1);
+  // A setting the scene is made of (the room's seed, the wide collapse) is another scene: two methods' points
+  // go, whatever the method of the next frame.
+  Settings unsorted = bigger;
+  unsorted.strategy = KeyStrategy::None;
+  for (auto change : {+[](Settings& t) { t.clutterSeed += 1; },
+                      +[](Settings& t) { t.wideCollapse = WideCollapse::Greedy; }}) {
+    book.record(unsorted, frame(2.0, 10.0));
+    ASSERT_EQ(book.points().size(), 2u);
+    change(bigger);
+    change(unsorted);
+    book.record(bigger, frame(2.0, 10.0));
+    EXPECT_EQ(book.points().size(), 1u);
+    EXPECT_EQ(book.points()[0].number, 1);
+  }
 }
 
 TEST(SpeedAccuracyBook, BoundedKeepingBaselinesAndTheCurrentPoint) {
