@@ -23,7 +23,7 @@ def load(how):
 
 greedy, sah = load("greedy"), load("sah")
 print("| case | size | bounces | greedy: megakernel / unsorted / sorted | sah: megakernel / unsorted / sorted "
-      "| sah/greedy unsorted | sah/greedy sorted | sorted over unsorted (greedy, sah) |")
+      "| sah/greedy unsorted | sah/greedy sorted | speed-up of sorting, unsorted / sorted (greedy, sah) |")
 print("|---|---|---|---|---|---|---|---|")
 ratios = {"unsorted": [], "sorted": [], "mega": []}
 for key in sorted(greedy, key=lambda k: (k[0], k[1], k[2], k[3])):
