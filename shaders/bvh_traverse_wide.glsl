@@ -17,7 +17,9 @@
 //
 // On an H200: 1.4-1.6x the binary frame time before the node's vector loads and the ray's per-node transform,
 // 1.21-1.32x with them, level with it unsorted once leaves lost their records and took no iteration of their
-// own, and faster than it sorted (docs/results/h200-wide-bvh/cwbvh).
+// own, and faster than it sorted (docs/results/h200-wide-bvh/cwbvh). Leaves deferred behind nearer interior
+// children (the node pushed again, its leaves re-tested with the shorter tMax) cost 11-14% of the trace there
+// (docs/results/h200-wide-bvh/deferred-leaves): a node's triangles are tested in its own iteration, as in CWBVH.
 #ifndef RAYLAB_BVH_TRAVERSE_WIDE_GLSL
 #define RAYLAB_BVH_TRAVERSE_WIDE_GLSL
 
