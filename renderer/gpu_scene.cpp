@@ -53,7 +53,8 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCol
     if (t.material >= scene.materials.size()) throw SceneLoadError(scene.name + ": triangle material out of range");
   Bvh bvh = buildBvh(scene.triangles);
   bvhStats_ = bvh.stats;
-  const BvhWide wide = collapseBvh(bvh, 0, collapse);  // moves the leaves into its leaf order: before anything reads the order
+  // The collapse moves the leaves into its leaf order: before anything reads the order.
+  const BvhWide wide = collapseBvh(bvh, 0, collapse);
   wideStats_ = wide.stats;
   bounds_ = scene.bounds();
   triangleCount_ = static_cast<uint32_t>(scene.triangles.size());

@@ -21,6 +21,8 @@
 #include "renderer/bvh_wide.h"
 #include "renderer/bvh_wide_slots.h"
 #include "renderer/checked_write.h"
+#include "renderer/settings_table.h"
+#include "renderer/settings_validation.h"
 #include "scenes/scene_library.h"
 
 namespace {
@@ -72,12 +74,15 @@ int main(int argc, char** argv) {
     } else if (a == "--threads" && i + 1 < argc) {
       threads = static_cast<uint32_t>(std::max(1, std::atoi(argv[++i])));
     } else if (a == "--wide-collapse" && i + 1 < argc) {
-      const std::string how = argv[++i];
-      if (how != "greedy" && how != "sah") {
-        std::fprintf(stderr, "raylab_bvh_report: --wide-collapse takes greedy or sah, not '%s'\n", how.c_str());
+      // The setting's own parser: its names and its message come from the settings table.
+      raylab::Settings s;
+      try {
+        raylab::findSettingRow("wide-collapse")->parse(s, argv[++i]);
+      } catch (const raylab::SettingsError& e) {
+        std::fprintf(stderr, "raylab_bvh_report: %s\n", e.what());
         return 2;
       }
-      collapse = how == "sah" ? raylab::WideCollapse::Sah : raylab::WideCollapse::Greedy;
+      collapse = s.wideCollapse;
     } else if (a == "--hash") {
       hash = true;
     } else if (a == "--out" && i + 1 < argc) {
