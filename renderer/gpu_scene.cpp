@@ -96,7 +96,7 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCol
   };
   block_.nodes = add(bvh.nodes);
   block_.wideNodes = add(wide.nodes);
-  block_.bvhLayout = RL_BVH_BINARY;  // PathTracer sets it per frame from Settings::bvh
+  block_.bvhLayout = RL_BVH_BINARY;  // block(layout) sets it
   block_.triangles = add(tris);
   block_.uvs = add(uvs);
   block_.materials = add(materials);

@@ -20,7 +20,12 @@ class GpuSceneData {
   // triangles both layouts and the emitter table use.
   GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCollapse collapse);
 
-  const gpu::GpuScene& block() const { return block_; }
+  // The block the shaders read, walking the tree `layout` (Settings::bvh: a frame's choice, not the scene's).
+  gpu::GpuScene block(BvhLayout layout) const {
+    gpu::GpuScene b = block_;
+    b.bvhLayout = layout == BvhLayout::Wide ? RL_BVH_WIDE : RL_BVH_BINARY;
+    return b;
+  }
   const BvhBuildStats& bvhStats() const { return bvhStats_; }
   // The wide BVH collapsed from the binary one; both are on the GPU (Settings::bvh picks one per frame).
   const BvhWideStats& wideBvhStats() const { return wideStats_; }

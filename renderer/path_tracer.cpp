@@ -171,9 +171,8 @@ uint32_t PathTracer::recordSteps(VkCommandBuffer cmd, uint32_t count) {
 void PathTracer::recordFrameBlock(VkCommandBuffer cmd) {
   gpu::GpuFrame frame = buffers_->addresses();
   frame.camera = makeGpuCamera(camera_, settings_.width, settings_.height);
-  frame.scene = scene_->block();
+  frame.scene = scene_->block(settings_.bvh);
   frame.scene.tlas = usesRt() ? rt_->tlasAddress() : 0;
-  frame.scene.bvhLayout = settings_.bvh == BvhLayout::Wide ? RL_BVH_WIDE : RL_BVH_BINARY;
   frame.keyParams = settings_.sorts() ? pathSorter_->keys().paramsAddress() : 0;
   frame.width = settings_.width;
   frame.height = settings_.height;

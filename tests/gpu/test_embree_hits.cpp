@@ -1,7 +1,7 @@
-// The GPU's BVH traversal (bvh_traverse.glsl through hit_query.comp: traceClosest and occluded, the
-// functions every trace calls) against Embree's rtcIntersect1 / rtcOccluded1 on the same triangles
-// (renderer/embree_scene.h, itself checked against brute force in tests/cpu/test_embree_scene.cpp), on
-// lavapipe: camera rays of every viewpoint, random rays, and two bounces of diffuse rays from Embree's
+// The GPU's BVH traversals, binary and wide (bvh_traverse.glsl and bvh_traverse_wide.glsl through
+// hit_query.comp: traceClosest and occluded, the functions every trace calls), against Embree's
+// rtcIntersect1 / rtcOccluded1 on the same triangles (renderer/embree_scene.h, itself checked against brute
+// force in tests/cpu/test_embree_scene.cpp), on lavapipe: camera rays of every viewpoint, random rays, and two bounces of diffuse rays from Embree's
 // hits, with a random tMax on half of the non-camera rays.
 //
 // Rules: t agrees within 1e-4 (1 + t). The triangle must be Embree's, except in a tie: the GPU's triangle,
@@ -47,9 +47,10 @@ struct GpuHit {
   bool occluded;
 };
 
-std::vector<GpuHit> traceOnGpu(const VulkanContext& ctx, const GpuSceneData& scene, const RayBatch& rays) {
+std::vector<GpuHit> traceOnGpu(const VulkanContext& ctx, const GpuSceneData& scene, BvhLayout layout,
+                               const RayBatch& rays) {
   const uint32_t n = static_cast<uint32_t>(rays.size());
-  GpuBuffer block = makeBufferFrom(ctx, std::vector<gpu::GpuScene>{scene.block()});
+  GpuBuffer block = makeBufferFrom(ctx, std::vector<gpu::GpuScene>{scene.block(layout)});
   GpuBuffer origins = makeBufferFrom(ctx, rays.origins);
   GpuBuffer directions = makeBufferFrom(ctx, rays.directions);
   GpuBuffer results = makeBufferFrom(ctx, std::vector<glm::uvec4>(n, glm::uvec4(0xDEADu)));
@@ -162,11 +163,9 @@ void compareBatchWithEmbree(const Scene& scene, const EmbreeScene& embree, const
   }
 }
 
-// Camera rays of every viewpoint and random rays, then two bounces.
-Tally checkScene(const VulkanContext& ctx, const Scene& scene, uint32_t randomRays,
-                 WideCollapse collapse = Settings{}.wideCollapse) {
-  GpuSceneData data(ctx, scene, collapse);
-  EmbreeScene embree(scene.triangles);
+// Camera rays of every viewpoint and random rays, then two bounces, through the tree `layout`.
+void checkLayout(const VulkanContext& ctx, const Scene& scene, const GpuSceneData& data, const EmbreeScene& embree,
+                  BvhLayout layout, uint32_t randomRays) {
   std::mt19937 rng(20);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::normal_distribution<float> gauss;
@@ -182,11 +181,12 @@ Tally checkScene(const VulkanContext& ctx, const Scene& scene, uint32_t randomRa
   Tally tally;
   for (int bounce = 0; bounce < 3 && rays.size() > 0; ++bounce) {
     RayBatch next;
-    compareBatchWithEmbree(scene, embree, rays, traceOnGpu(ctx, data, rays), tally, bounce < 2 ? &next : nullptr, rng);
+    compareBatchWithEmbree(scene, embree, rays, traceOnGpu(ctx, data, layout, rays), tally, bounce < 2 ? &next : nullptr,
+                           rng);
     rays = std::move(next);
   }
-  std::printf("%s: %u rays, %u hits both, %u triangle ties, %u one-sided hits at an edge or tMax, %u blocked, "
-              "%u shadow ties\n", scene.name.c_str(), tally.rays, tally.hits, tally.ties, tally.oneSided,
+  std::printf("%s, %s BVH: %u rays, %u hits both, %u triangle ties, %u one-sided hits at an edge or tMax, %u blocked, "
+              "%u shadow ties\n", scene.name.c_str(), toString(layout).c_str(), tally.rays, tally.hits, tally.ties, tally.oneSided,
               tally.blocked, tally.shadowTies);
   EXPECT_EQ(tally.tMismatch, 0u);
   EXPECT_EQ(tally.triangleMismatch, 0u);
@@ -199,7 +199,17 @@ Tally checkScene(const VulkanContext& ctx, const Scene& scene, uint32_t randomRa
   EXPECT_LE(tally.oneSided + tally.shadowTies, tally.rays / 500);
   EXPECT_GT(tally.hits, tally.rays / 3);
   EXPECT_GT(tally.blocked, tally.rays / 10);
-  return tally;
+}
+
+// Both layouts' traversals (bvh_traverse.glsl and bvh_traverse_wide.glsl) against Embree on one scene.
+void checkScene(const VulkanContext& ctx, const Scene& scene, uint32_t randomRays,
+                WideCollapse collapse = Settings{}.wideCollapse) {
+  GpuSceneData data(ctx, scene, collapse);
+  EmbreeScene embree(scene.triangles);
+  for (BvhLayout layout : allValues<BvhLayout>()) {
+    SCOPED_TRACE(toString(layout));
+    checkLayout(ctx, scene, data, embree, layout, randomRays);
+  }
 }
 
 std::string sharedScene(const char* relative) {

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Device session (issue 20, stop 33): wide-node plane bytes to floats by the exponent trick (b2f) against main (base3),
+# two rounds alternating, 4096x2048, 4 bounces; the driver's shader statistics of both.
+set -x
+for f in .gl/*.deb; do dpkg -x $f /; done; ldconfig
+xz -dkf build-device/lib/*.xz
+mkdir -p .dev/lib && cp build-device/lib/* .dev/lib/
+S=.dev/sponza/Sponza.gltf
+for v in base3 b2f; do
+  RAYLAB_SHADER_STATS=1 .dev/bin/raylab-$v render --scene $S --size 256x128 --frames 1 --bvh wide --out /tmp/s.png 2>&1 \
+    | grep -E "shader-stats (trace|shade)" | sed "s/^/$v /" >> $OUT/shader-stats.txt  # shader-stats-b2f.txt here
+done
+for round in 1 2; do for v in base3 b2f; do
+  ( time timeout 120 .dev/bin/raylab-$v bench --cases temple@hall,$S@CameraMain,temple-detail:1000000@hall \
+      --bvhs binary,wide --strategies two-point --sort-policies always --trace-shades split --sizes 4096x2048 \
+      --bounces 4 --timed-frames 8 --warmup 3 --reference-spp 1 --no-detail --no-charts --out-dir /tmp/$v-$round ) \
+      >> $OUT/b2f.log 2>&1
+  sed "s/^/$v,$round,/" /tmp/$v-$round/results.csv >> $OUT/b2f.csv
+done; done
+echo done
