@@ -248,7 +248,7 @@ std::vector<BenchCase> planCases(const SweepFlags& sweep, const Axes& axes) {
   return cases;
 }
 
-// The cells of one case, added in plan order (each group's baselines first); prefix: "rt ", "wide " or "".
+// The cells of one case, added in plan order (each group's baselines first); prefix: "rt ", "binary " or "".
 struct CaseCells {
   BenchPlan& plan;
   const Axes& axes;
@@ -346,9 +346,12 @@ void addCells(BenchPlan& plan, const Axes& axes) {
       caseBase.scene = plan.cases[ci].scene;
       caseBase.view = plan.cases[ci].view;
       caseBase.ser = Ser::Off;
-      // Labels of rt cells start with "rt ", those of the wide BVH with "wide "; the binary compute tracer's
-      // keep their names.
-      CaseCells cells{plan, axes, ci, caseBase.tracer == Tracer::Rt ? "rt " : caseBase.bvh == BvhLayout::Wide ? "wide " : ""};
+      // Labels of rt cells start with "rt ", those of a BVH layout other than the default with its name
+      // ("binary "); the default compute tracer's keep their names.
+      const std::string prefix = caseBase.tracer == Tracer::Rt          ? "rt "
+                                 : caseBase.bvh != Settings{}.bvh ? toString(caseBase.bvh) + " "
+                                                                   : "";
+      CaseCells cells{plan, axes, ci, prefix};
       Settings plain = caseBase;
       plain.kernel = Kernel::Wavefront;
       plain.strategy = KeyStrategy::None;

@@ -205,7 +205,7 @@ struct Settings {
   float exposure = 1.0f;
   Kernel kernel = Kernel::Wavefront;
   Tracer tracer = Tracer::Compute;
-  BvhLayout bvh = BvhLayout::Binary;  // compute tracer only
+  BvhLayout bvh = BvhLayout::Wide;  // compute tracer only (docs/results/h200-wide-bvh/final-study)
   WideCollapse wideCollapse = WideCollapse::Sah;  // the scene's wide BVH (both tracers see its triangle order)
   Ser ser = Ser::Off;  // rt tracer's megakernel only
 

@@ -61,8 +61,8 @@ std::vector<SettingRow> tracerRows() {
           .sample("rt"),
       // Another layout may break ties between equally near triangles otherwise: a new image.
       RAYLAB_FIELD(bvh, "bvh").jsonAbsent("bvh", "binary").csv("bvh").effects(kAccumulation)
-          .help("binary|wide", "compute tracer: the binary BVH (default) or the compressed 8-wide one\n"
-                "collapsed from it (quantized child boxes, as CWBVH)").sample("wide"),
+          .help("binary|wide", "compute tracer: the binary BVH, or the compressed 8-wide one collapsed\n"
+                "from it (quantized child boxes, as CWBVH; the default)").sample("binary"),
       RAYLAB_FIELD(wideCollapse, "wide-collapse").jsonAbsent("wide_collapse", "greedy").csv("wide_collapse")
           .effects(kEffectScene | kAccumulation | kCache)
           .help("greedy|sah", "how the wide BVH is collapsed from the binary one: open the largest subtree\n"

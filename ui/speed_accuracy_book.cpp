@@ -65,7 +65,8 @@ MethodKey methodKeyOf(const Settings& s) {
 }
 
 std::string describe(const MethodKey& k) {
-  std::string tracer = std::string(k.tracer == Tracer::Rt ? " rt" : "") + (k.bvh == BvhLayout::Wide ? " wide" : "");
+  std::string tracer =
+      std::string(k.tracer == Tracer::Rt ? " rt" : "") + (k.bvh != Settings{}.bvh ? " " + toString(k.bvh) : "");
   // The wavefront's own options where they differ from the default (unsorted and sorted alike).
   const std::string wavefront = (k.compaction != Settings{}.compaction ? " compaction " + toString(k.compaction) : "") +
                                 (k.traceShade != Settings{}.traceShade ? " trace-shade " + toString(k.traceShade) : "");

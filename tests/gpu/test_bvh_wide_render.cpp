@@ -57,6 +57,7 @@ TEST_F(WideBvhRender, RendersTheBinaryImageUpToTies) {
         // Each collapse orders the triangles its way: both layouts then see that order.
         for (WideCollapse collapse : allValues<WideCollapse>()) {
           Settings binary = base;
+          binary.bvh = BvhLayout::Binary;
           binary.kernel = kernel;
           binary.traceShade = traceShade;
           binary.wideCollapse = collapse;
@@ -78,6 +79,7 @@ TEST_F(WideBvhRender, CountsItsOwnSteps) {
   for (Kernel kernel : {Kernel::Wavefront, Kernel::Megakernel}) {
     Settings binary = smallFrame(41, 23, 3);
     binary.kernel = kernel;
+    binary.bvh = BvhLayout::Binary;
     Settings wide = binary;
     wide.bvh = BvhLayout::Wide;
     PathTracer b(ctx(), scene, binary, view), w(ctx(), scene, wide, view);

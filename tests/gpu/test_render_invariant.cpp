@@ -259,20 +259,31 @@ TEST_P(SortInvariant, SteppedFramesKeepDetailedStatistics) {
   }
 }
 
-// The invariant on the wide BVH (Settings::bvh wide): every key strategy (the oracle traces the wide tree
-// too) with the radix sort, the bitonic and tile sorts and every sort policy with one strategy, fused
-// trace+shade and the megakernel's own unsorted image aside, render the unsorted wide image bit for bit. One
-// case per strategy, not per sort, so it adds about a third of the parameterised test above, not its double.
-class SortInvariantWide : public GpuTest {};
+// The invariant on the trees the tests above do not walk: every BVH layout but the default one (with the
+// default collapse), and the default layout with every other collapse (each collapse is a scene of its own:
+// its triangle order). Every key strategy (the oracle traces the same tree) with the radix sort, the bitonic
+// and tile sorts and every sort policy with one strategy, and fused trace+shade render that tree's unsorted
+// image bit for bit. One case per strategy, not per sort, so each tree adds about a third of the
+// parameterised test above, not its double.
+class SortInvariantLayouts : public GpuTest {};
 
-TEST_F(SortInvariantWide, EveryStrategySortAndPolicyRendersTheUnsortedWideImage) {
+std::vector<std::pair<BvhLayout, WideCollapse>> treesBesidesTheDefault() {
+  const Settings defaults;
+  std::vector<std::pair<BvhLayout, WideCollapse>> trees;
+  for (BvhLayout layout : allValues<BvhLayout>())
+    if (layout != defaults.bvh) trees.push_back({layout, defaults.wideCollapse});
+  for (WideCollapse collapse : allValues<WideCollapse>())
+    if (collapse != defaults.wideCollapse) trees.push_back({defaults.bvh, collapse});
+  return trees;
+}
+
+TEST_F(SortInvariantLayouts, EveryStrategySortAndPolicyRendersTheUnsortedImageOfEachTree) {
   const VulkanContext& context = ctx();
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
-  // Each collapse is a scene of its own (its triangle order): the invariant holds within each.
-  for (WideCollapse collapse : allValues<WideCollapse>()) {
+  for (const auto& [layout, collapse] : treesBesidesTheDefault()) {
     Settings base = smallFrame(37, 19, 4);
-    base.bvh = BvhLayout::Wide;
+    base.bvh = layout;
     base.wideCollapse = collapse;
     base.sppPerFrame = 2;
     base.frames = 2;  // the second frame uses what adaptive caches learned in the first
@@ -301,7 +312,7 @@ TEST_F(SortInvariantWide, EveryStrategySortAndPolicyRendersTheUnsortedWideImage)
     for (const auto& [what, s] : cases) {
       ASSERT_TRUE(s.sorts()) << what;
       expectSameImage(renderRadiance(context, scene, s, view), unsorted,
-                      what + " on the wide BVH, " + toString(collapse) + " collapse");
+                      what + " on the " + toString(layout) + " BVH, " + toString(collapse) + " collapse");
     }
   }
 }

@@ -97,7 +97,8 @@ TEST_F(SettingsSwitch, BvhLayoutRestartsLikeAFreshTracer) {
   PathTracer live(ctx(), scene_, s, view_);
   live.renderFrame();
   live.renderFrame();
-  for (BvhLayout layout : {BvhLayout::Wide, BvhLayout::Binary}) {
+  const BvhLayout other = s.bvh == BvhLayout::Wide ? BvhLayout::Binary : BvhLayout::Wide;
+  for (BvhLayout layout : {other, s.bvh}) {
     s.bvh = layout;
     live.applySettings(s);
     EXPECT_EQ(live.accumulatedFrames(), 0u) << toString(layout);

@@ -74,13 +74,17 @@ TEST_F(ValidationSubset, CompactionFusionsAndTraceShade) {
   Settings megakernel = tiny();
   megakernel.kernel = Kernel::Megakernel;
   render(megakernel, "megakernel");
-  // The wide BVH's traversal in the trace stage, shadow rays, the oracle key and the megakernel.
-  Settings wide = tiny();
-  wide.bvh = BvhLayout::Wide;
-  wide.strategy = KeyStrategy::Oracle;
-  render(wide, "wide BVH, oracle key");
-  wide.kernel = Kernel::Megakernel;
-  render(wide, "wide BVH megakernel");
+  // The other BVH layout's traversal (the default's is above) in the trace stage, shadow rays, the oracle key
+  // and the megakernel.
+  for (BvhLayout layout : allValues<BvhLayout>()) {
+    if (layout == Settings{}.bvh) continue;
+    Settings other = tiny();
+    other.bvh = layout;
+    other.strategy = KeyStrategy::Oracle;
+    render(other, toString(layout) + " BVH, oracle key");
+    other.kernel = Kernel::Megakernel;
+    render(other, toString(layout) + " BVH megakernel");
+  }
 }
 
 TEST_F(ValidationSubset, EveryHeatmapView) {
