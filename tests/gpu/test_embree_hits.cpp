@@ -1,8 +1,8 @@
 // The GPU's BVH traversals, binary and wide (bvh_traverse.glsl and bvh_traverse_wide.glsl through
 // hit_query.comp: traceClosest and occluded, the functions every trace calls), against Embree's
 // rtcIntersect1 / rtcOccluded1 on the same triangles (renderer/embree_scene.h, itself checked against brute
-// force in tests/cpu/test_embree_scene.cpp), on lavapipe: camera rays of every viewpoint, random rays, and two bounces of diffuse rays from Embree's
-// hits, with a random tMax on half of the non-camera rays.
+// force in tests/cpu/test_embree_scene.cpp), on lavapipe: camera rays of every viewpoint, random rays, and
+// two bounces of diffuse rays from Embree's hits, with a random tMax on half of the non-camera rays.
 //
 // Rules: t agrees within 1e-4 (1 + t). The triangle must be Embree's, except in a tie: the GPU's triangle,
 // intersected exactly (double precision), is hit within the tolerance of Embree's t (an edge or coplanar
@@ -165,7 +165,7 @@ void compareBatchWithEmbree(const Scene& scene, const EmbreeScene& embree, const
 
 // Camera rays of every viewpoint and random rays, then two bounces, through the tree `layout`.
 void checkLayout(const VulkanContext& ctx, const Scene& scene, const GpuSceneData& data, const EmbreeScene& embree,
-                  BvhLayout layout, uint32_t randomRays) {
+                 BvhLayout layout, uint32_t randomRays) {
   std::mt19937 rng(20);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::normal_distribution<float> gauss;
@@ -181,13 +181,13 @@ void checkLayout(const VulkanContext& ctx, const Scene& scene, const GpuSceneDat
   Tally tally;
   for (int bounce = 0; bounce < 3 && rays.size() > 0; ++bounce) {
     RayBatch next;
-    compareBatchWithEmbree(scene, embree, rays, traceOnGpu(ctx, data, layout, rays), tally, bounce < 2 ? &next : nullptr,
-                           rng);
+    const std::vector<GpuHit> hits = traceOnGpu(ctx, data, layout, rays);
+    compareBatchWithEmbree(scene, embree, rays, hits, tally, bounce < 2 ? &next : nullptr, rng);
     rays = std::move(next);
   }
-  std::printf("%s, %s BVH: %u rays, %u hits both, %u triangle ties, %u one-sided hits at an edge or tMax, %u blocked, "
-              "%u shadow ties\n", scene.name.c_str(), toString(layout).c_str(), tally.rays, tally.hits, tally.ties, tally.oneSided,
-              tally.blocked, tally.shadowTies);
+  std::printf("%s, %s BVH: %u rays, %u hits both, %u triangle ties, %u one-sided hits at an edge or tMax, "
+              "%u blocked, %u shadow ties\n", scene.name.c_str(), toString(layout).c_str(), tally.rays, tally.hits,
+              tally.ties, tally.oneSided, tally.blocked, tally.shadowTies);
   EXPECT_EQ(tally.tMismatch, 0u);
   EXPECT_EQ(tally.triangleMismatch, 0u);
   EXPECT_EQ(tally.hitMismatch, 0u);
