@@ -5,6 +5,8 @@
 // commands of one.
 #include "renderer/path_tracer.h"
 
+#include "renderer/detail_stats.h"
+#include "renderer/detail_sums.h"
 #include "renderer/heatmap_pass.h"
 #include "renderer/heatmap_rules.h"
 #include "renderer/reorder/key_functions.h"
@@ -33,8 +35,10 @@ void PathTracer::buildSteps() {
       buffers_->counters.recordFill(cmd, 0);
       computeBarrier(cmd);
       heatmap_->recordClear(cmd);
-      pathSorter_->beginFrame();  // no readback of an abandoned frame is taken for this one's
     });
+    // A frame's details start from zero sums: none of an earlier (possibly abandoned) frame counts for it.
+    if (detailedStats_)
+      recordStage(cmd, &timer_, "counters", [&] { details_->recordClear(cmd, countedBounces()); });
   });
   const gpu::PathStagePush push{buffers_->frameBlock.address(), 0, 0};
   if (settings_.kernel == Kernel::Megakernel)
@@ -63,7 +67,10 @@ void PathTracer::buildMegakernelSteps(const gpu::PathStagePush& push) {
       }
     });
   });
-  if (detailedStats_ && !usesRt()) addStep("counters", -1, [this](VkCommandBuffer cmd) { recordStepsReadback(cmd, 0); });
+  if (detailedStats_ && !usesRt())
+    addStep("counters", -1, [this](VkCommandBuffer cmd) {
+      details_->recordWarps(cmd, buffers_->hitSteps.address(), buffers_->pathCount, 0, &timer_);
+    });
   if (heatmapShown(settings_) != HeatmapView::None)
     addStep("heatmap", -1, [this](VkCommandBuffer cmd) { heatmap_->afterMegakernel(cmd, *buffers_, &timer_); });
 }
@@ -136,12 +143,20 @@ void PathTracer::buildBounceSteps(uint32_t b, gpu::PathStagePush& push, bool& fu
     buildTraceStep(b, push, fusesGather);
     if (fusesGather) push.stateSet = 1u - push.stateSet, fusesGather = false;
     if (detailedStats_ && !usesRt())
-      addStep("counters", bounce, [this, b](VkCommandBuffer cmd) { recordStepsReadback(cmd, b); });
-    // Learning and the accuracy readbacks are for rays that were keyed and sorted: other bounces have no
-    // prediction to learn from or measure.
-    if (plan.sortedBefore && (plan.learns || detailedStats_))
+      addStep("counters", bounce, [this, b](VkCommandBuffer cmd) {
+        details_->recordWarps(cmd, buffers_->hitSteps.address(), buffers_->pathCount, b, &timer_);
+      });
+    // Learning and the prediction figures are for rays that were keyed and sorted: other bounces have no
+    // prediction to learn from or measure (their figures stay "not measured").
+    if (plan.learns)
       addStep("learn", bounce, [this, push, b](VkCommandBuffer cmd) {
-        pathSorter_->recordAfterTrace(cmd, *buffers_, push.stateSet, b, true, detailedStats_, &timer_);
+        pathSorter_->recordLearn(cmd, *buffers_, push.stateSet, b, &timer_);
+      });
+    if (plan.sortedBefore && detailedStats_)
+      addStep("counters", bounce, [this, push, b](VkCommandBuffer cmd) {
+        const KeyStage& keys = pathSorter_->keys();
+        details_->recordPrediction(cmd, buffers_->frameBlock.address(), keys.paramsAddress(), push.stateSet,
+                                   buffers_->pathCount, inverseDiagonal(keys.grid()), b, &timer_);
       });
     if (heatmap_->readsAfterTrace(b))
       addStep("heatmap", bounce, [this, push, b](VkCommandBuffer cmd) {
@@ -176,8 +191,14 @@ void PathTracer::buildSortSteps(uint32_t b, bool keysInShade, gpu::PathStagePush
   const int bounce = static_cast<int>(b);
   const bool heatmap = heatmapShown(settings_) != HeatmapView::None;
   addStep("keys", bounce, [this, push, b, keysInShade](VkCommandBuffer cmd) {
-    pathSorter_->recordKeys(cmd, *buffers_, push.stateSet, b, keysInShade, detailedStats_, &timer_);
+    pathSorter_->recordKeys(cmd, *buffers_, push.stateSet, b, keysInShade, &timer_);
   });
+  // The keys made now sort the rays of the next bounce: their figures are that bounce's.
+  if (detailedStats_)
+    addStep("counters", bounce, [this, b](VkCommandBuffer cmd) {
+      details_->recordDistinctKeys(cmd, buffers_->keys.address(), buffers_->pathCount,
+                                   pathSorter_->keys().keyBits() - 1, b + 1, &timer_);
+    });
   if (heatmap)
     addStep("heatmap", bounce, [this, push, b](VkCommandBuffer cmd) {
       heatmap_->afterKeys(cmd, *buffers_, push.stateSet, b, &timer_);
@@ -204,7 +225,12 @@ void PathTracer::buildEndSteps(const gpu::PathStagePush& push) {
     if (!heatmap_->colorize(cmd, *buffers_, &timer_))
       recordStage(cmd, &timer_, "tonemap", [&] { tonemap_.dispatchThreads(cmd, push, buffers_->pixelCount); });
   });
-  addStep("counters", -1, [this](VkCommandBuffer cmd) { recordCountersToHost(cmd); });
+  addStep("counters", -1, [this](VkCommandBuffer cmd) {
+    const KeyStage& keys = pathSorter_->keys();
+    if (detailedStats_ && settings_.sorts() && keys.hasCache())
+      details_->recordCacheUsed(cmd, keys.paramsAddress(), keys.cacheEntryCount(), &timer_);
+    recordCountersToHost(cmd);
+  });
 }
 
 }  // namespace raylab

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "renderer/detail_stats.h"
 #include "renderer/reorder/key_functions.h"
 #include "renderer/reorder/path_sorter.h"
 #include "renderer/rt_tracer.h"
@@ -71,6 +72,7 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared
   allocate();
   if (usesRt()) rt_ = std::make_unique<RtTracer>(ctx_, *scene_);
   pathSorter_ = std::make_unique<PathSorter>(ctx, scene, settings_, camera_.position, buffers_->pathCount);
+  details_ = std::make_unique<DetailStats>(ctx);
   restartAccumulation();
 }
 
@@ -193,19 +195,6 @@ void PathTracer::recordFrameBlock(VkCommandBuffer cmd) {
   computeBarrier(cmd);
 }
 
-// Detailed mode: keeps this trace's per-path traversal steps (the next trace overwrites them) for the
-// virtual warp efficiency, in dispatch order. Released again by gatherCounters(): only the frame that asked
-// holds them.
-void PathTracer::recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce) {
-  ScopedStage s(&timer_, cmd, "counters");
-  if (stepsReadback_.size() <= bounce) stepsReadback_.resize(bounce + 1);
-  if (stepsReadback_[bounce].size() != buffers_->hitSteps.size())
-    stepsReadback_[bounce] = GpuBuffer(ctx_, buffers_->hitSteps.size(), MemoryKind::HostVisible);
-  VkBufferCopy steps{0, 0, VkDeviceSize(buffers_->pathCount) * 4};
-  vkCmdCopyBuffer(cmd, buffers_->hitSteps.handle(), stepsReadback_[bounce].handle(), 1, &steps);
-  computeBarrier(cmd);
-}
-
 uint32_t PathTracer::countedBounces() const { return settings_.kernel == Kernel::Megakernel ? 1 : settings_.bounces; }
 
 // This frame's counters, one slot set per bounce, in one copy; then everything the host reads after the
@@ -214,6 +203,7 @@ void PathTracer::recordCountersToHost(VkCommandBuffer cmd) {
   ScopedStage s(&timer_, cmd, "counters");
   VkBufferCopy counters{0, 0, PathBuffers::counterBytes(countedBounces())};
   vkCmdCopyBuffer(cmd, buffers_->counters.handle(), buffers_->counterHistory.handle(), 1, &counters);
+  if (detailedStats_) details_->recordToHost(cmd);
   VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
   toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;

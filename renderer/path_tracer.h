@@ -25,6 +25,7 @@ class PathSorter;
 class KeyStage;
 class HeatmapPass;
 class RtTracer;
+class DetailStats;
 
 class PathTracer {
  public:
@@ -67,8 +68,10 @@ class PathTracer {
   const std::vector<StepTime>& lastStepTimes() const { return lastStepTimes_; }
   uint32_t framePaths() const { return buffers_->pathCount; }
 
-  // Detailed statistics (per-path steps, prediction accuracy) cost readbacks; off for timed runs.
+  // Detailed statistics (warp efficiency, prediction accuracy, distinct keys, cache occupancy): GPU
+  // reductions timed as the "counters" stage (DetailStats), outside the frame's work; off for timed runs.
   void setDetailedStats(bool on);
+  bool detailedStats() const { return detailedStats_; }
 
   const FrameStats& stats() const { return stats_; }
   // The sort policy's model (stage times it learned) and the plan of the last recorded frame.
@@ -123,9 +126,9 @@ class PathTracer {
   void abandonFrame();
   void addStepStages(const std::vector<StageTime>& stages);
   const FrameStats& completeFrame();
-  void recordStepsReadback(VkCommandBuffer cmd, uint32_t bounce);
   void recordCountersToHost(VkCommandBuffer cmd);
   void gatherCounters();
+  void gatherDetails();
   uint32_t countedBounces() const;
 
   const VulkanContext& ctx_;
@@ -136,6 +139,7 @@ class PathTracer {
   std::unique_ptr<PathSorter> pathSorter_;
   std::unique_ptr<HeatmapPass> heatmap_;
   std::unique_ptr<RtTracer> rt_;  // acceleration structures and rt pipelines, made when the rt tracer is first used
+  std::unique_ptr<DetailStats> details_;
   ComputePipeline generate_, accumulate_, tonemap_;  // every frame records them
   // The variants the settings pick, each built on first use: trace.comp by [countSimt][fusesGather],
   // shade.comp by [compact][fusesTraceShade] (Settings::compaction, Settings::traceShade), megakernel.comp by
@@ -159,8 +163,6 @@ class PathTracer {
   std::vector<StageTime> frameStages_;
   double frameGpuMs_ = 0.0, frameWallMs_ = 0.0;
   bool detailedStats_ = false;
-  std::vector<std::vector<uint32_t>> stepsPerBounce_;
-  std::vector<GpuBuffer> stepsReadback_;
 };
 
 gpu::GpuCamera makeGpuCamera(const Viewpoint& v, uint32_t width, uint32_t height);

@@ -5,12 +5,13 @@
 #include <algorithm>
 #include <chrono>
 
+#include "renderer/detail_stats.h"
+#include "renderer/detail_sums.h"
 #include "renderer/reorder/path_sorter.h"
 #include "renderer/rt_tracer.h"
 #include "renderer/heatmap_pass.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
-#include "renderer/warp_efficiency.h"
 
 namespace raylab {
 
@@ -68,13 +69,15 @@ const FrameStats& PathTracer::completeFrame() {
   stats_.frameMs = frameGpuMs_;
   gatherCounters();
   if (settings_.sorts()) {
-    pathSorter_->finishFrame(stats_, detailedStats_);
+    pathSorter_->finishFrame(stats_);
+    if (detailedStats_) gatherDetails();
     for (size_t b = 0; b < framePlan_.sortAfter.size() && b < stats_.bounces.size(); ++b) {
       stats_.bounces[b].sortedAfter = framePlan_.sortAfter[b];
       stats_.bounces[b].sortReason = framePlan_.reasons[b];
     }
-    // Counting frames run a slower trace: they would teach the policy wrong costs. Detailed frames' readbacks
-    // lie outside the timed stages, so they teach it (a render with --stats is detailed in every frame).
+    // Counting frames run a slower trace: they would teach the policy wrong costs. Detailed frames' passes are
+    // the "counters" stage, which the policy does not read, so they teach it (a render with --stats is
+    // detailed in every frame).
     if (!settings_.countSimt) sortPolicy_.record(framePlan_, stats_.stages);
   }
   heatmap_->finishFrame(stats_);
@@ -104,16 +107,33 @@ void PathTracer::gatherCounters() {
     if (settings_.countSimt && !usesRt() && c[RL_COUNTER_SIMT_SLOTS] > 0)
       bs.simtEfficiency = static_cast<double>(c[RL_COUNTER_SIMT_ACTIVE]) /
                           (static_cast<double>(c[RL_COUNTER_SIMT_SLOTS]) * ctx_.info().subgroupSize);
-    if (detailedStats_ && b < stepsReadback_.size()) {
-      const auto* steps = static_cast<const uint32_t*>(stepsReadback_[b].mapped());
-      WarpEfficiency w = virtualWarpEfficiency(steps, buffers_->pathCount, 32);
+    if (detailedStats_ && details_->measuredWarps(b)) {
+      const WarpFigures w = warpFigures(details_->sums(b), buffers_->pathCount);
       bs.virtualWarpEfficiency = w.efficiency;
       bs.meanTraversalSteps = w.meanSteps;
     }
     stats_.raysTraced += bs.rays;
     stats_.bounces.push_back(bs);
   }
-  stepsReadback_.clear();  // host-visible copies are only kept for the frame that asked for them
+}
+
+// The key figures of a detailed frame, from its sums: prediction accuracy and distinct keys for the bounces
+// whose rays were keyed and sorted (the others keep "not measured"), and the cache's occupancy.
+void PathTracer::gatherDetails() {
+  for (uint32_t b = 1; b < stats_.bounces.size(); ++b) {
+    if (!details_->measuredPrediction(b)) continue;
+    const PredictionFigures p = predictionFigures(details_->sums(b));
+    BounceStats& bs = stats_.bounces[b];
+    if (p.evaluated > 0) {
+      bs.predictionErrorMean = p.meanError;
+      bs.predictionErrorMedian = p.medianError;
+      bs.cellHitRate = p.cellHitRate;
+    }
+    bs.distinctKeys = details_->sums(b).distinctKeys;
+  }
+  const uint32_t entries = pathSorter_->keys().cacheEntryCount();
+  if (details_->measuredCache() && entries > 0)
+    stats_.lengthCacheOccupancy = double(details_->sums(0).cacheUsed) / double(entries);
 }
 
 std::vector<uint32_t> PathTracer::readImage() const {

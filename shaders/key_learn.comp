@@ -27,22 +27,11 @@
 #include "keys.glsl"
 #include "path_state.glsl"
 #include "dispatch_index.glsl"
+#include "atomic_add_64.glsl"
 
 layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 layout(constant_id = RL_SPEC_KEY_STRATEGY) const uint kStrategy = RL_KEY_AVERAGE;
 layout(push_constant, scalar) uniform Push { KeyLearnPush pc; };
-
-// Adds a 64-bit two's-complement value to a (lo, hi) pair of buffer words with a software carry. A macro:
-// GLSL atomics take only buffer members, which cannot be passed to functions.
-#define ATOMIC_ADD_64(LO_WORD, HI_WORD, VALUE)   \
-  {                                              \
-    uint64_t v_ = (VALUE);                       \
-    uint lo_ = uint(v_);                         \
-    uint hi_ = uint(v_ >> 32);                   \
-    uint old_ = atomicAdd(LO_WORD, lo_);         \
-    if (old_ + lo_ < old_) hi_ += 1u;            \
-    if (hi_ != 0u) atomicAdd(HI_WORD, hi_);      \
-  }
 
 void main() {
   uint i = flatInvocationIndex();

@@ -141,6 +141,8 @@ uint64_t KeyStage::cacheMemoryBytes() const { return cache_ ? cache_->memoryByte
 
 double KeyStage::cacheOccupancy() const { return cache_ ? cache_->occupancy() : 0.0; }
 
+uint32_t KeyStage::cacheEntryCount() const { return cache_ ? cache_->entryCount() : 0; }
+
 uint32_t KeyStage::cacheOutliersRejected() const { return cache_ ? cache_->outliersRejected() : 0; }
 
 LengthCache::Contents KeyStage::downloadCache() const { return cache_ ? cache_->download() : LengthCache::Contents{}; }

@@ -72,8 +72,10 @@ class KeyStage {
   // Whether the strategy keeps a length cache (average, ema, gaussian); its addresses are zero otherwise.
   bool hasCache() const { return cache_ != nullptr; }
   uint64_t cacheMemoryBytes() const;
-  // Entries with samples / entries; downloads the cache (stats only). 0 without a cache.
+  // Entries with samples / entries; downloads the cache (tests; frames measure it on the GPU, DetailStats).
+  // 0 without a cache.
   double cacheOccupancy() const;
+  uint32_t cacheEntryCount() const;  // 0 without a cache
   uint32_t cacheOutliersRejected() const;
 
   // For tests and stats: the parameters the shaders see, the cache contents, the oracle's distances.

@@ -1,7 +1,7 @@
 // Sorts the paths between bounces when a key strategy is on: sort keys (KeyStage), the GPU sort, the
 // live-prefix count and the gather of the path state into the other ping-pong set (timed together as the
-// "reorder" stage). Also the length-cache learning after a trace, and, in the detailed mode, the readbacks
-// that measure prediction accuracy.
+// "reorder" stage). Also the length-cache learning after a trace. (Detailed statistics of the keys and
+// their predictions are GPU reductions of their own: renderer/detail_stats.h.)
 #pragma once
 
 #include <cstdint>
@@ -37,17 +37,14 @@ class PathSorter {
   void apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths, const SettingsChange& change);
 
   // Every call works on all the frame's paths (buffers.pathCount).
-  // A frame starts: no readback of an earlier (possibly abandoned) frame counts for it.
-  void beginFrame();
-  // After the trace of `bounce` whose rays were keyed and sorted (`keyed`; a call without does nothing):
-  // the learn stage, and in detailed mode the accuracy readbacks. Bounces without keys have no prediction,
-  // so they have no accuracy figures (null in the stats, never stale readbacks).
-  void recordAfterTrace(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
-                        uint32_t bounce, bool keyed, bool detailed, StageTimer* timer);
+  // After the trace of `bounce` (>= 1) whose rays were keyed and sorted: the learn stage (strategies that
+  // learn lengths; nothing for the others).
+  void recordLearn(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
+                   StageTimer* timer);
   // After shading `bounce`: the keys of the next rays (in buffers.keys, current set order), unless shade made
-  // them (`madeInShade`, Settings::fusesKeys); the detailed readback of the keys either way.
+  // them (`madeInShade`, Settings::fusesKeys).
   void recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet,
-                  uint32_t bounce, bool madeInShade, bool detailed, StageTimer* timer);
+                  uint32_t bounce, bool madeInShade, StageTimer* timer);
   // Sorts the live prefix's pairs in place (buffers.keys, buffers.values).
   void recordSort(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t paths, StageTimer* timer);
   // The reorder after recordSort: live count and gather into the other set, which it returns. With
@@ -56,16 +53,13 @@ class PathSorter {
                         StageTimer* timer);
   // Shade that also makes the keys of the rays it writes (shade.comp with the strategy's key function).
   const ComputePipeline& shadeWithKeys() { return keys_.shadeWithKeys(); }
-  // Adds key width, cache and sort memory and, in detailed mode, prediction accuracy to the stats.
-  void finishFrame(FrameStats& stats, bool detailed);
+  // Adds key width, cache and sort memory to the stats.
+  void finishFrame(FrameStats& stats) const;
 
   const KeyStage& keys() const { return keys_; }
 
  private:
-  struct Capture;  // host-visible copies of one bounce's rays, predictions, hits and keys
-
   void makeSorter(const Settings& settings);
-  Capture& captureOf(uint32_t bounce, uint32_t framePaths);
 
   const VulkanContext& ctx_;
   KeyStage keys_;
@@ -73,7 +67,6 @@ class PathSorter {
   uint32_t maxPaths_;
   uint32_t sortBits_ = 0;  // Settings::sortBits
   ComputePipeline gather_;
-  std::vector<std::unique_ptr<Capture>> captures_;
 };
 
 }  // namespace raylab

@@ -7,7 +7,6 @@
 
 #include <gtest/gtest.h>
 
-#include "renderer/reorder/key_accuracy.h"
 #include "renderer/reorder/key_functions.h"
 #include "renderer/reorder/key_grid.h"
 #include "renderer/reorder/key_strategies.h"
@@ -129,34 +128,6 @@ TEST(KeyFunctions, KeysStayInRangeOnHostileInputs) {
             }
     }
   }
-}
-
-TEST(KeyAccuracy, FiguresOnHandMadeArrays) {
-  Bounds b;
-  b.min = glm::vec3(0);
-  b.max = glm::vec3(6, 8, 0);  // diagonal 10 (z flat)
-  Settings s;
-  s.grid.automatic = false;
-  s.grid.cells = {6, 8, 1};
-  KeyGrid grid = makeKeyGrid(b, {}, s);
-  ASSERT_NEAR(grid.sceneDiagonal, 10.0f, 1e-5f);
-  std::vector<glm::vec4> origin(5, glm::vec4(0.5f, 0.5f, 0, 0));
-  std::vector<glm::vec4> dir(5, glm::vec4(1, 0, 0, 0));
-  std::vector<float> predicted = {2.0f, 3.0f, 1.0f, -1.0f, 2.0f};
-  std::vector<float> hit = {2.0f, 2.0f, 4.0f, 3.0f, -1.0f};  // errors 0, 0.1, 0.3; no estimate; a miss
-  std::vector<uint32_t> alive = {1, 1, 1, 1, 1};
-  std::vector<uint32_t> keys = {4, 4, 9, RL_DEAD_KEY, 1};
-  KeyAccuracy a = measureKeyAccuracy(grid, {origin, dir, predicted, hit, alive, keys}, 2, 9, 1234, 0.5);
-  EXPECT_EQ(a.livePaths, 5u);
-  EXPECT_EQ(a.evaluated, 3u);
-  EXPECT_EQ(a.misses, 1u);
-  EXPECT_NEAR(a.meanError, 0.4 / 3.0, 1e-6);
-  EXPECT_NEAR(a.medianError, 0.1, 1e-6);
-  EXPECT_NEAR(a.cellHitRate, 1.0 / 3.0, 1e-6);  // only the exact prediction lands in the actual cell
-  EXPECT_EQ(a.distinctKeys, 3u);
-  EXPECT_EQ(toJson(a)["cache_bytes"], 1234);
-  alive = {0, 0, 0, 0, 0};
-  EXPECT_EQ(measureKeyAccuracy(grid, {origin, dir, predicted, hit, alive, {}}, 2, 9, 0, 0).evaluated, 0u);
 }
 
 // The strategy table's "reads the fixed length" and "uses the grid" are what the key functions do: with an
