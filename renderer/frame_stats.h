@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "renderer/heatmap_stats.h"
+#include "renderer/stages.h"
 
 namespace raylab {
 
@@ -20,7 +21,7 @@ struct BounceStats {
   uint32_t rays = 0;                    // live paths traced
   double simtEfficiency = -1.0;         // device subgroups, counting mode only (-1: not measured)
   double virtualWarpEfficiency = -1.0;  // W = 32 from per-path traversal iterations (-1: not measured)
-  double meanTraversalSteps = 0.0;
+  double meanTraversalSteps = -1.0;     // with the virtual warp efficiency (-1: not measured)
   // Key prediction (filled when stats are requested for a bounce whose rays were keyed and sorted; -1, null
   // in JSON, on the others: there is no prediction to measure there)
   double predictionErrorMean = -1.0;    // |estimated - actual end point| / scene diagonal
@@ -54,7 +55,7 @@ struct FrameStats {
   double raysPerSecond = 0.0;
   uint32_t keyBits = 0;
   uint64_t lengthCacheBytes = 0;
-  double lengthCacheOccupancy = 0.0;
+  double lengthCacheOccupancy = -1.0;  // detailed frames of strategies with a cache (-1, null in JSON: not measured)
   uint64_t sortScratchBytes = 0;
   uint64_t pathStateBytes = 0;
   uint64_t sceneBytes = 0;
@@ -72,6 +73,17 @@ struct FrameStats {
     return ms;
   }
   double unattributedMs() const { return frameMs > stageSumMs() ? frameMs - stageSumMs() : 0.0; }
+
+  // GPU time of what only measuring costs (StageRole::Instrument: the detailed statistics' passes and
+  // readbacks, heatmaps), and of the frame's own work without it: a detailed frame's work time is
+  // comparable with an undetailed frame's.
+  double instrumentMs() const {
+    double ms = 0.0;
+    for (const StageTime& s : stages)
+      if (const StageInfo* info = findStage(s.stage); info && info->role == StageRole::Instrument) ms += s.ms;
+    return ms;
+  }
+  double workMs() const { return frameMs > instrumentMs() ? frameMs - instrumentMs() : 0.0; }
 
   double stageTotal(const std::string& stage) const {
     double ms = 0.0;

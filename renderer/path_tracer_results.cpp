@@ -90,7 +90,8 @@ const FrameStats& PathTracer::completeFrame() {
     if (settings_.heatmap == HeatmapView::TraversalSteps || settings_.heatmap == HeatmapView::WarpEfficiency)
       stats_.heatmap.emptyReason = "traversal steps: not available with the rt tracer";
   }
-  double seconds = (stats_.frameMs > 0.0 ? stats_.frameMs : stats_.wallMs) * 1e-3;
+  // The frame's own work: a detailed frame's measuring passes would lower its rate.
+  double seconds = (stats_.frameMs > 0.0 ? stats_.workMs() : stats_.wallMs) * 1e-3;
   stats_.raysPerSecond = seconds > 0.0 ? static_cast<double>(stats_.raysTraced) / seconds : 0.0;
   ++frameIndex_;
   stats_.samplesPerPixel = frameIndex_ * settings_.sppPerFrame;

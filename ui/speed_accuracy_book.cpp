@@ -164,7 +164,7 @@ void SpeedAccuracyBook::record(const Settings& rendered, const FrameStats& stats
   for (const StageInfo& st : kStages)
     if (isSortingCost(st.name)) reorderMs += stats.stageTotal(st.name);
   p.reorderMs.add(reorderMs);
-  p.frameMs.add(stats.frameMs);
+  p.frameMs.add(stats.workMs());  // without the detailed statistics' own passes (on by default in the window)
   p.predictionError.add(meanOverBounces(stats.bounces, &BounceStats::predictionErrorMean, true));
   p.cellHitRate.add(meanOverBounces(stats.bounces, &BounceStats::cellHitRate, true));
   if (stats.traversalStatsUnavailable.empty())

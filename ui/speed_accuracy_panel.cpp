@@ -37,7 +37,7 @@ double yOf(const SpeedAccuracyPoint& p, int axis) {
 
 void cell(double v, const char* format, double scale = 1.0) {
   ImGui::TableNextColumn();
-  if (v < 0.0) ImGui::TextDisabled("-");
+  if (v < 0.0) ImGui::TextDisabled("n/a");
   else ImGui::Text(format, v * scale);
 }
 

@@ -21,7 +21,7 @@ std::string formatBytes(uint64_t bytes) {
 }
 
 std::string percent(double v) {
-  if (v < 0.0) return "-";
+  if (v < 0.0) return "n/a";  // not measured: the one way the screen says so
   char text[16];
   std::snprintf(text, sizeof(text), "%.1f%%", 100.0 * v);
   return text;
@@ -117,7 +117,8 @@ void drawBounceTable(const FrameStats& stats) {
     ImGui::TableNextColumn(), ImGui::Text("%u", s.rays);
     ImGui::TableNextColumn(), ImGui::TextUnformatted(percent(s.simtEfficiency).c_str());
     ImGui::TableNextColumn(), ImGui::TextUnformatted(percent(s.virtualWarpEfficiency).c_str());
-    ImGui::TableNextColumn(), ImGui::Text("%.1f", s.meanTraversalSteps);
+    ImGui::TableNextColumn();
+    if (s.meanTraversalSteps >= 0.0) ImGui::Text("%.1f", s.meanTraversalSteps); else ImGui::TextDisabled("n/a");
     ImGui::TableNextColumn();
     if (!s.sortReason.empty()) ImGui::Text("%s (%s)", s.sortedAfter ? "yes" : "no", s.sortReason.c_str());
   }
@@ -125,7 +126,10 @@ void drawBounceTable(const FrameStats& stats) {
 }
 
 void drawMemory(const FrameStats& s) {
-  ImGui::Text("length cache %s (%.1f%% occupied)", formatBytes(s.lengthCacheBytes).c_str(), 100.0 * s.lengthCacheOccupancy);
+  if (s.lengthCacheOccupancy >= 0.0)
+    ImGui::Text("length cache %s (%.1f%% occupied)", formatBytes(s.lengthCacheBytes).c_str(), 100.0 * s.lengthCacheOccupancy);
+  else
+    ImGui::Text("length cache %s (occupancy n/a)", formatBytes(s.lengthCacheBytes).c_str());
   ImGui::Text("sort scratch %s, path state %s", formatBytes(s.sortScratchBytes).c_str(), formatBytes(s.pathStateBytes).c_str());
   ImGui::Text("scene %s, key bits %u", formatBytes(s.sceneBytes).c_str(), s.keyBits);
 }
