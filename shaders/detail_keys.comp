@@ -21,6 +21,10 @@ void main() {
     if (key == RL_DEAD_KEY) continue;
     const uint bit = key >> pc.keyShift;
     const uint mask = 1u << (bit & 31u);
+    // A plain read first: most keys repeat (an 18-bit average key has 27k values among 8.4M paths), and an
+    // atomic on a word every thread hits serializes them (H200, Sponza 4096x2048: 1.4 ms a pass). A stale read
+    // only costs the atomic; the atomic alone decides what is counted.
+    if ((pc.bitmap.v[bit >> 5u] & mask) != 0u) continue;
     if ((atomicOr(pc.bitmap.v[bit >> 5u], mask) & mask) == 0u) ++fresh;
   }
   fresh = subgroupAdd(fresh);
