@@ -28,6 +28,9 @@ struct BounceStats {
   double predictionErrorMedian = -1.0;
   double cellHitRate = -1.0;            // estimated cell == actual cell
   int64_t distinctKeys = -1;
+  // The trace stage's speed: rays / its GPU time (-1: no trace stage of its own, as under the megakernel or
+  // a fused trace and shade). A trace that also gathers the last sort's reorder (fusion gather) includes it.
+  double traceRaysPerSecond = -1.0;
   // Sort policy (wavefront with a strategy): whether the paths were sorted after this bounce, and why.
   bool sortedAfter = false;
   std::string sortReason;

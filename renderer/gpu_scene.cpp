@@ -1,5 +1,6 @@
 #include "renderer/gpu_scene.h"
 
+#include "renderer/bvh_pairs.h"
 #include "renderer/vk/vk_context.h"
 
 namespace raylab {
@@ -94,7 +95,7 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCol
     buffers_.push_back(makeBufferFrom(ctx, vec));
     return buffers_.back().address();
   };
-  block_.nodes = add(bvh.nodes);
+  block_.nodes = add(pairNodes(bvh));
   block_.wideNodes = add(wide.nodes);
   block_.bvhLayout = RL_BVH_BINARY;  // block(layout) sets it
   block_.triangles = add(tris);

@@ -113,6 +113,12 @@ void PathTracer::gatherCounters() {
       bs.virtualWarpEfficiency = w.efficiency;
       bs.meanTraversalSteps = w.meanSteps;
     }
+    if (settings_.kernel == Kernel::Wavefront) {
+      double traceMs = 0.0;
+      for (const StageTime& t : stats_.stages)
+        if (t.stage == "trace" && t.bounce == int(b)) traceMs += t.ms;
+      if (traceMs > 0.0) bs.traceRaysPerSecond = bs.rays / (traceMs * 1e-3);
+    }
     stats_.raysTraced += bs.rays;
     stats_.bounces.push_back(bs);
   }

@@ -37,6 +37,7 @@ json toJson(const FrameStats& s) {
                        {"simt_efficiency", loop(opt(x.simtEfficiency))},
                        {"virtual_warp_efficiency", loop(opt(x.virtualWarpEfficiency))},
                        {"mean_traversal_steps", loop(opt(x.meanTraversalSteps))},
+                       {"trace_rays_per_second", opt(x.traceRaysPerSecond)},
                        {"prediction_error_mean", opt(x.predictionErrorMean)},
                        {"prediction_error_median", opt(x.predictionErrorMedian)},
                        {"cell_hit_rate", opt(x.cellHitRate)},

@@ -1,7 +1,7 @@
 // Closest-hit and any-hit BVH traversal shared by the trace stage, the megakernel, shadow rays and the
 // oracle key: the binary tree here, the wide one in bvh_traverse_wide.glsl, chosen by GpuScene::bvhLayout.
-// Stack-based, nearer child first. `steps` counts loop iterations, one node visited each (a binary node here;
-// a wide node or a leaf in the wide traversal): the per-path work whose spread within a warp is what ray
+// Stack-based, nearer child first. `steps` counts loop iterations, one node visited each (a pair node here:
+// both children of a binary node; a wide node or a leaf in the wide traversal): the per-path work whose spread within a warp is what ray
 // reordering tries to shrink.
 #ifndef RAYLAB_BVH_TRAVERSE_GLSL
 #define RAYLAB_BVH_TRAVERSE_GLSL
@@ -74,46 +74,63 @@ vec3 safeInverse(vec3 d) {
                     abs(d.z) > eps ? d.z : (d.z >= 0.0 ? eps : -eps));
 }
 
-// anyHit: stop at the first hit (shadow rays).
+// Entry distances of a pair node's two child boxes (x: child 0, y: child 1), 1e30 where a box is missed or
+// lies beyond tMax. The slabs as bounds * invDir - origin * invDir: one multiply-add a plane.
+vec2 intersectPair(vec4 bx, vec4 by, vec4 bz, vec3 invDir, vec3 originInv, float tMax) {
+  vec4 tx = bx * invDir.x - originInv.x;
+  vec4 ty = by * invDir.y - originInv.y;
+  vec4 tz = bz * invDir.z - originInv.z;
+  vec2 enter = max(max(min(tx.xz, tx.yw), min(ty.xz, ty.yw)), max(min(tz.xz, tz.yw), vec2(0.0)));
+  vec2 leave = min(min(max(tx.xz, tx.yw), max(ty.xz, ty.yw)), min(max(tz.xz, tz.yw), vec2(tMax)));
+  return vec2(enter.x <= leave.x ? enter.x : 1e30, enter.y <= leave.y ? enter.y : 1e30);
+}
+
+// The triangles first .. first + count - 1 of a leaf; true when anyHit may stop.
+bool intersectLeaf(TriangleQuads tris, uint first, uint count, vec3 origin, vec3 dir, inout HitRecord hit,
+                   inout float tMax, bool anyHit) {
+  for (uint index = first; index < first + count; ++index)
+    intersectTriangleEdges(tris.v[3u * index].xyz, tris.v[3u * index + 1u].xyz, tris.v[3u * index + 2u].xyz, index,
+                           origin, dir, hit, tMax);
+  return anyHit && hit.t > 0.0;
+}
+
+// The binary tree as pair nodes (BvhPairNode): each iteration fetches one node, four 16-byte words, and tests
+// both children's boxes; leaf children are intersected there and then, interior ones visited nearer first (the
+// farther pushed). anyHit: stop at the first hit (shadow rays). `steps` counts the pair nodes visited.
 HitRecord traverseBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool anyHit) {
   HitRecord hit = noHit();
-  vec3 invDir = safeInverse(dir);
+  const vec3 invDir = safeInverse(dir);
+  const vec3 originInv = origin * invDir;
+  BvhPairQuads nodes = BvhPairQuads(scene.nodes);
+  TriangleQuads tris = TriangleQuads(scene.triangles);
   uint stack[RL_BVH_STACK];
   uint sp = 0u;
   uint node = 0u;
-  if (intersectBox(scene.nodes.v[0].boundsMin, scene.nodes.v[0].boundsMax, origin, invDir, tMax) >= 1e30)
-    return hit;
   while (true) {
     hit.steps++;
     RL_TRAVERSAL_STEP();
-    BvhNode n = scene.nodes.v[node];
-    if (n.triCount > 0u) {
-      for (uint i = 0u; i < n.triCount; ++i) {
-        uint index = n.leftOrFirst + i;
-        intersectTriangle(scene.triangles.v[index], index, origin, dir, hit, tMax);
-      }
-      if (anyHit && hit.t > 0.0) return hit;
+    const uvec4 children = floatBitsToUint(nodes.v[4u * node + 3u]);
+    vec2 d = intersectPair(nodes.v[4u * node], nodes.v[4u * node + 1u], nodes.v[4u * node + 2u], invDir, originInv,
+                           tMax);
+    bool hit0 = d.x < 1e30 && children.x != RL_BVH_NO_CHILD, hit1 = d.y < 1e30 && children.y != RL_BVH_NO_CHILD;
+    if (hit0 && children.z > 0u) {
+      if (intersectLeaf(tris, children.x, children.z, origin, dir, hit, tMax, anyHit)) return hit;
+      hit0 = false;
+    }
+    if (hit1 && children.w > 0u) {
+      if (intersectLeaf(tris, children.y, children.w, origin, dir, hit, tMax, anyHit)) return hit;
+      hit1 = false;
+    }
+    if (hit0 && hit1) {
+      const bool firstNearer = d.x <= d.y;
+      if (sp < RL_BVH_STACK) stack[sp++] = firstNearer ? children.y : children.x;
+      node = firstNearer ? children.x : children.y;
+    } else if (hit0 || hit1) {
+      node = hit0 ? children.x : children.y;
+    } else {
       if (sp == 0u) break;
       node = stack[--sp];
-      continue;
     }
-    uint left = n.leftOrFirst;
-    uint right = left + 1u;
-    BvhNode ln = scene.nodes.v[left];
-    BvhNode rn = scene.nodes.v[right];
-    float dl = intersectBox(ln.boundsMin, ln.boundsMax, origin, invDir, tMax);
-    float dr = intersectBox(rn.boundsMin, rn.boundsMax, origin, invDir, tMax);
-    if (dl > dr) {
-      float td = dl; dl = dr; dr = td;
-      uint tn = left; left = right; right = tn;
-    }
-    if (dl >= 1e30) {
-      if (sp == 0u) break;
-      node = stack[--sp];
-      continue;
-    }
-    node = left;
-    if (dr < 1e30 && sp < RL_BVH_STACK) stack[sp++] = right;
   }
   return hit;
 }

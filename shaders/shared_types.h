@@ -78,6 +78,20 @@ struct BvhNode {
   uint triCount;
 };
 
+// The binary BVH as the GPU walks it: each interior node stored as its two children's boxes, the layout of Aila
+// and Laine (HPG 2009), so one 64-byte fetch of four aligned 16-byte words tests both children, and a leaf child
+// is its triangle range in the parent's slot (no fetch of its own). Built from the BvhNode tree on the host
+// (renderer/bvh_pairs.h); the same leaves and BVH-order triangles, so every consumer of the order is unchanged.
+struct BvhPairNode {
+  vec4 xBounds;   // child 0 lo.x, hi.x, child 1 lo.x, hi.x
+  vec4 yBounds;
+  vec4 zBounds;
+  uint child[2];  // interior child: its pair-node index; leaf child: its first BVH-order triangle;
+                  // RL_BVH_NO_CHILD: none (an empty scene)
+  uint count[2];  // leaf child: its triangle count (>= 1); interior child: 0
+};
+#define RL_BVH_NO_CHILD 0xFFFFFFFFu
+
 // Compressed 8-wide BVH node (renderer/bvh_wide.h collapses the binary tree into these; traversal in
 // shaders/bvh_traverse_wide.glsl), after Ylitie, Karras and Laine (HPG 2017): up to 8 children whose boxes are
 // quantized to 8 bits per plane against the node's `origin` and a power-of-two scale per axis, so a child's box
@@ -158,7 +172,8 @@ struct GpuCamera {
 };
 
 #ifndef __cplusplus
-layout(buffer_reference, scalar) buffer BvhNodeBuf { BvhNode v[]; };
+// BvhPairNode as four aligned 16-byte words each, for the traversal's vector loads.
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer BvhPairQuads { vec4 v[]; };
 layout(buffer_reference, scalar) buffer BvhWideNodeBuf { BvhWideNode v[]; };
 // The same nodes as five aligned 16-byte words each (80 bytes, in BvhWideNode's order), for the traversal's
 // vector loads: a struct of scalars is read field by field.
@@ -180,7 +195,7 @@ layout(buffer_reference, scalar) buffer UVec4Buf { uvec4 v[]; };
 
 // Everything a traversal or shading function needs to know about the scene.
 struct GpuScene {
-  RL_REF(BvhNodeBuf) nodes;
+  RL_REF(BvhPairQuads) nodes;  // the binary BVH's pair nodes (BvhPairNode), the root's children first
   RL_REF(TriangleBuf) triangles;
   RL_REF(TriangleUvBuf) uvs;
   RL_REF(MaterialBuf) materials;
