@@ -26,12 +26,13 @@ namespace raylab {
 namespace {
 
 const char* const kRenderHelp =
+    "  --camera \"X Y Z TX TY TZ [fov D]\"  where the camera stands and looks at (scene units; the window's\n"
+    "                         Scene panel shows and copies the current camera in this form); replaces --view\n"
     "  --time-budget S        accumulate frames for up to S seconds (wall clock), at most --frames of them\n"
     "                         (--frames defaults to unlimited then)\n";
 
 void printRenderUsage(const std::string& error) {
-  std::fprintf(stderr, "raylab render: %s\n\nusage: raylab render [options]\n%s%s", error.c_str(),
-               commonOptionsHelp().c_str(), kRenderHelp);
+  printUsageError("raylab render", error);
 }
 
 // Takes `--time-budget S` out of `args` (the other flags are common ones); 0 when absent.
@@ -47,11 +48,25 @@ double takeTimeBudget(std::vector<std::string>& args) {
   return budget;
 }
 
+// Takes `--camera TEXT` out of `args`; empty when absent.
+std::string takeCamera(std::vector<std::string>& args) {
+  std::string text;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] != "--camera") continue;
+    if (i + 1 >= args.size()) throw UsageError("--camera needs a value: \"X Y Z TX TY TZ [fov D]\"");
+    text = args[i + 1];
+    args.erase(args.begin() + static_cast<std::ptrdiff_t>(i), args.begin() + static_cast<std::ptrdiff_t>(i) + 2);
+    --i;
+  }
+  return text;
+}
+
 // What a render was asked for, parsed and loaded.
 struct RenderRequest {
   CommonOptions options;
   LoadedScene loaded;
   double budgetSeconds = 0.0;  // --time-budget; 0: none
+  std::string learnedNote;     // --settings FILE.json whose length cache learned over more than its frames
 };
 
 // Parses the arguments and loads the scene; any error is reported as the command's exit code.
@@ -60,7 +75,8 @@ int parseRenderRequest(const std::vector<std::string>& givenArgs, RenderRequest&
   std::optional<Viewpoint> sidecarCamera;  // --settings FILE.json: a screenshot sidecar's settings and camera
   const int parsed = withCommandErrors(printRenderUsage, [&] {
     r.budgetSeconds = takeTimeBudget(args);
-    r.options = parseOptionsWithSettingsFile(args, &sidecarCamera);
+    const std::string cameraText = takeCamera(args);
+    r.options = parseOptionsWithSettingsFile(args, &sidecarCamera, nullptr, &r.learnedNote);
     // With a time budget the frame count is only a ceiling: without --frames there is none.
     bool framesGiven = std::find(args.begin(), args.end(), "--frames") != args.end();
     bool sidecar = std::find(args.begin(), args.end(), "--settings") != args.end();  // its frames are the ceiling
@@ -69,6 +85,12 @@ int parseRenderRequest(const std::vector<std::string>& givenArgs, RenderRequest&
     if (auto why = heatmapUnavailable(r.options.settings)) throw UsageError("--heatmap " + *why);
     r.loaded = loadSceneForSettings(r.options.settings);
     if (sidecarCamera) r.loaded.view = *sidecarCamera;
+    if (!cameraText.empty()) {
+      std::string error;
+      std::optional<Viewpoint> v = cameraFromText(cameraText, r.loaded.view, &error);
+      if (!v) throw UsageError("--camera: " + error);
+      r.loaded.view = *v;
+    }
     return int(kExitOk);
   });
   if (parsed == kExitOk && r.options.out.empty()) r.options.out = "raylab-render.png";
@@ -92,7 +114,9 @@ RenderTotals accumulate(PathTracer& tracer, const RenderRequest& r) {
   RenderTotals t;
   const auto started = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
-  if (r.budgetSeconds > 0.0)
+  if (r.budgetSeconds > 0.0 && s.frames >= SettingLimits::kMaxFrames)
+    std::fprintf(stderr, "raylab: accumulating for %.3g s\n", r.budgetSeconds);
+  else if (r.budgetSeconds > 0.0)
     std::fprintf(stderr, "raylab: accumulating for %.3g s (at most %u frames)\n", r.budgetSeconds, s.frames);
   for (uint32_t f = 0; f < s.frames && !(r.budgetSeconds > 0.0 && f > 0 && elapsed() >= r.budgetSeconds); ++f) {
     const FrameStats& st = tracer.renderFrame();
@@ -154,6 +178,7 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
                where.c_str(), tracer.scene().triangleCount(), tracer.scene().bvhStats().nodeCount,
                tracer.scene().bvhStats().buildMs, tracer.scene().wideBvhStats().nodeCount, toString(s.bvh).c_str());
 
+  if (!r.learnedNote.empty()) std::fprintf(stderr, "raylab render: note from the sidecar: %s\n", r.learnedNote.c_str());
   const RenderTotals totals = accumulate(tracer, r);
   // A heatmap carries its legend, and says headless what it shows (or why it shows nothing).
   const HeatmapStats& heat = tracer.stats().heatmap;

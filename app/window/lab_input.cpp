@@ -53,6 +53,9 @@ void LabInput::onKey(GLFWwindow* window, int key, int, int action, int mods) {
     case GLFW_KEY_R:  // back to the viewpoint after flying out of the scene
       if (!typing) in->hotkeys_.push_back(Hotkey::ResetView);
       break;
+    case GLFW_KEY_L:  // a fresh length cache and accumulation: what a re-render of a screenshot learns
+      if (!typing) in->hotkeys_.push_back(Hotkey::RestartLearning);
+      break;
     default: break;
   }
 }
