@@ -185,7 +185,7 @@ size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanCont
 
 int runBenchCommand(const std::vector<std::string>& args) {
   if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
-    std::printf("usage: raylab bench [options]\n%s", benchHelp().c_str());
+    std::printf("%s", benchHelp().c_str());  // it starts with its usage line
     return kExitOk;
   }
   if (std::find(args.begin(), args.end(), "--merge") != args.end()) return runBenchMerge(args);
@@ -196,7 +196,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
   try {
     plan = planFor(args, &resumeDir, &recordArgs, &shard);
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "raylab bench: %s\n\n%s", e.what(), benchHelp().c_str());
+    printUsageError("raylab bench", e.what());
     return kExitUsage;
   }
   VulkanContext ctx(contextOptionsFor(plan.common));

@@ -1,5 +1,6 @@
 #include "app/bench_sweep.h"
 
+#include "app/case_views.h"
 #include "app/setting_flags.h"
 #include "renderer/reorder/key_strategies.h"
 #include "renderer/settings_table.h"
@@ -245,6 +246,7 @@ std::vector<BenchCase> planCases(const SweepFlags& sweep, const Axes& axes) {
   }
   std::vector<BenchCase> cases = scaleCases(named, axes.scaleTris);
   for (const BenchCase& c : cases) checkCaseScene(c.scene);
+  for (const BenchCase& c : named) checkCaseView(c.scene, c.view);  // after every name: scenes load here
   return cases;
 }
 

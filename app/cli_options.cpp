@@ -1,5 +1,7 @@
 #include "app/cli_options.h"
 
+#include "app/command_errors.h"
+
 #include "renderer/settings_table.h"
 #include "renderer/settings_validation.h"
 
@@ -58,12 +60,18 @@ CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vect
       rest->push_back(a);
       if (i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) rest->push_back(args[++i]);
     } else {
-      throw UsageError("unknown option '" + a + "'");
+      throw UsageError(unknownOptionMessage(a, commonOptionNames()));
     }
   }
   // What no single flag can check (paths per frame) and every range once more, as for any other source.
   if (std::optional<std::string> error = settingsError(o.settings)) throw UsageError(*error);
   return o;
+}
+
+std::vector<std::string> commonOptionNames() {
+  std::vector<std::string> names = {"--device", "--validate", "--settings", "--out", "--stats"};
+  for (const SettingRow& row : settingRows()) names.push_back(std::string("--") + row.flag);
+  return names;
 }
 
 std::string commonOptionsHelp() {

@@ -27,6 +27,9 @@ struct CommonOptions {
 // their values) for the mode to handle, or rejected when `rest` is null.
 CommonOptions parseCommonOptions(const std::vector<std::string>& args, std::vector<std::string>* rest = nullptr);
 
+// The flags parseCommonOptions accepts ("--bounces", ...), for "did you mean".
+std::vector<std::string> commonOptionNames();
+
 // Text of the flags parseCommonOptions accepts, for usage messages.
 std::string commonOptionsHelp();
 

@@ -58,7 +58,14 @@ void drawBar(Canvas& c, const LegendLayout& l, uint32_t top, const HeatmapStats&
     const float t = float(x - l.barLeft) / float(span);
     glm::vec3 colour;
     if (h.view == "cell-hit") colour = cellHitColour(t >= 0.5f);
-    else if (h.keyColour == "cell") colour = cellColour(glm::uvec3(uint32_t(t * 255.0f)), glm::uvec3(256));
+    else if (h.keyColour == "cell") {
+      // Three ramps, one per axis (x red, y green, z blue): one ramp along the diagonal was a grey
+      // gradient that meant nothing for colours made of three positions.
+      const int axis = std::min(2, int(t * 3.0f));
+      glm::vec3 c(0.0f);
+      c[axis] = std::clamp(t * 3.0f - float(axis), 0.0f, 1.0f);
+      colour = c;
+    }
     else if (usesRamp(h)) colour = heatmapRamp(t);
     else return;  // hashed keys have no order to show
     c.fill(int(x), y0, int(x) + 1, y1, packColour(colour));
@@ -95,7 +102,9 @@ LegendImage withHeatmapLegend(const std::vector<uint32_t>& image, uint32_t width
     c.text(int(l.barLeft), textY, "hit", l.scale);
     c.text(int(l.barRight) - Canvas::textWidth("miss", l.scale), textY, "miss", l.scale);
   } else if (h.keyColour == "cell") {
-    middle = "key cell: x red, y green, z blue";
+    const int third = int(l.barRight - l.barLeft) / 3;
+    for (int a = 0; a < 3; ++a) c.text(int(l.barLeft) + a * third + 2 * s, textY, a == 0 ? "x" : a == 1 ? "y" : "z", l.scale);
+    middle = "key cell: x red, y green, z blue (low to high)";
   } else if (h.keyColour == "hash") {
     middle = "hashed keys: equal keys alike";
   } else {

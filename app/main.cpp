@@ -54,8 +54,9 @@ int main(int argc, char** argv) {
       return raylab::kExitOk;
     }
     if (mode.empty()) return raylab::runWindowCommand(rest);
-    std::fprintf(stderr, "raylab: unknown mode '%s'\n\n", mode.c_str());
-    printHelp();
+    // The error and where the help is: the whole help after it scrolled the error away.
+    const std::string near = raylab::nearestName(mode, {"render", "sortbench", "bench", "study", "devices", "help"});
+    raylab::printUsageError("raylab", "unknown mode '" + mode + "'" + (near.empty() ? "" : " (did you mean " + near + "?)"));
     return raylab::kExitUsage;
   } catch (const raylab::UnknownDeviceError& e) {  // any mode's --device
     std::fprintf(stderr, "raylab: %s\n", e.what());

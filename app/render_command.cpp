@@ -26,6 +26,8 @@ namespace raylab {
 namespace {
 
 const char* const kRenderHelp =
+    "  --camera \"X Y Z TX TY TZ [fov D]\"  where the camera stands and looks at (scene units; the window's\n"
+    "                         Scene panel shows and copies the current camera in this form); replaces --view\n"
     "  --time-budget S        accumulate frames for up to S seconds (wall clock), at most --frames of them\n"
     "                         (--frames defaults to unlimited then)\n"
     "  --detail-every N       with --stats: the detailed figures (warp efficiency, prediction error, keys) on\n"
@@ -34,8 +36,7 @@ const char* const kRenderHelp =
     "                         what they cost\n";
 
 void printRenderUsage(const std::string& error) {
-  std::fprintf(stderr, "raylab render: %s\n\nusage: raylab render [options]\n%s%s", error.c_str(),
-               commonOptionsHelp().c_str(), kRenderHelp);
+  printUsageError("raylab render", error);
 }
 
 // Takes `flag VALUE` out of `args` (render's own flags; the others are common ones): the last value given.
@@ -57,6 +58,7 @@ struct RenderRequest {
   LoadedScene loaded;
   double budgetSeconds = 0.0;  // --time-budget; 0: none
   uint32_t detailEvery = 1;    // --detail-every; 0: no detailed frame
+  std::string learnedNote;     // --settings FILE.json whose length cache learned over more than its frames
 };
 
 // Parses the arguments and loads the scene; any error is reported as the command's exit code.
@@ -67,7 +69,8 @@ int parseRenderRequest(const std::vector<std::string>& givenArgs, RenderRequest&
     if (auto budget = takeFlag(args, "--time-budget")) r.budgetSeconds = parseFloat("--time-budget", *budget, 0.001f, 86400.0f);
     const auto detailEvery = takeFlag(args, "--detail-every");
     if (detailEvery) r.detailEvery = parseUint("--detail-every", *detailEvery, 0, SettingLimits::kMaxFrames);
-    r.options = parseOptionsWithSettingsFile(args, &sidecarCamera);
+    const std::string cameraText = takeFlag(args, "--camera").value_or("");
+    r.options = parseOptionsWithSettingsFile(args, &sidecarCamera, nullptr, &r.learnedNote);
     // With a time budget the frame count is only a ceiling: without --frames there is none.
     bool framesGiven = std::find(args.begin(), args.end(), "--frames") != args.end();
     bool sidecar = std::find(args.begin(), args.end(), "--settings") != args.end();  // its frames are the ceiling
@@ -78,6 +81,12 @@ int parseRenderRequest(const std::vector<std::string>& givenArgs, RenderRequest&
       throw UsageError("--detail-every needs --stats FILE.json: the detailed figures go there");
     r.loaded = loadSceneForSettings(r.options.settings);
     if (sidecarCamera) r.loaded.view = *sidecarCamera;
+    if (!cameraText.empty()) {
+      std::string error;
+      std::optional<Viewpoint> v = cameraFromText(cameraText, r.loaded.view, &error);
+      if (!v) throw UsageError("--camera: " + error);
+      r.loaded.view = *v;
+    }
     return int(kExitOk);
   });
   if (parsed == kExitOk && r.options.out.empty()) r.options.out = "raylab-render.png";
@@ -108,7 +117,9 @@ RenderTotals accumulate(PathTracer& tracer, const RenderRequest& r) {
   RenderTotals t;
   const auto started = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
-  if (r.budgetSeconds > 0.0)
+  if (r.budgetSeconds > 0.0 && s.frames >= SettingLimits::kMaxFrames)
+    std::fprintf(stderr, "raylab: accumulating for %.3g s\n", r.budgetSeconds);
+  else if (r.budgetSeconds > 0.0)
     std::fprintf(stderr, "raylab: accumulating for %.3g s (at most %u frames)\n", r.budgetSeconds, s.frames);
   const bool stats = !r.options.statsPath.empty();
   for (uint32_t f = 0; f < s.frames; ++f) {
@@ -185,6 +196,7 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
                where.c_str(), tracer.scene().triangleCount(), tracer.scene().bvhStats().nodeCount,
                tracer.scene().bvhStats().buildMs, tracer.scene().wideBvhStats().nodeCount, toString(s.bvh).c_str());
 
+  if (!r.learnedNote.empty()) std::fprintf(stderr, "raylab render: note from the sidecar: %s\n", r.learnedNote.c_str());
   const RenderTotals totals = accumulate(tracer, r);
   // A heatmap carries its legend, and says headless what it shows (or why it shows nothing).
   const HeatmapStats& heat = tracer.stats().heatmap;

@@ -8,6 +8,7 @@
 
 #include "app/fly_camera.h"
 #include "app/setting_flags.h"
+#include "renderer/heatmap_rules.h"
 #include "renderer/stats_json.h"
 #include "renderer/git_revision.h"
 
@@ -57,6 +58,12 @@ Viewpoint cameraFrom(const json& j) {
 
 }  // namespace
 
+Settings settingsShownIn(const Settings& settings) {
+  Settings shown = settings;
+  shown.heatmap = heatmapShown(settings);
+  return shown;
+}
+
 nlohmann::json makeSidecar(const SidecarContent& c) {
   json sidecar = {{"kind", c.kind},
                   {"image", c.image},
@@ -64,11 +71,16 @@ nlohmann::json makeSidecar(const SidecarContent& c) {
                   {"image_height", c.imageHeight},
                   {"git_revision", gitRevision()},
                   {"device", toJson(c.device)},
-                  {"settings", toJson(c.settings)},
+                  {"settings", toJson(settingsShownIn(c.settings))},
                   {"camera", cameraJson(c.camera)},
                   {"heatmap", toJson(c.stats.heatmap)},  // the legend of a heatmap image: range, unit, scale
                   {"stats", toJson(c.stats)}};
   if (!c.panels.is_null()) sidecar["panels"] = c.panels;
+  // What was asked for and not shown, for the reader: a re-render reads only "settings".
+  if (std::optional<std::string> why = heatmapUnavailable(c.settings))
+    sidecar["heatmap_not_shown"] = {{"asked", toString(c.settings.heatmap)}, {"why", *why}};
+  if (!c.learned.note.empty())
+    sidecar["learned_state"] = {{"reproducible", c.learned.reproducible}, {"note", c.learned.note}};
   return sidecar;
 }
 
@@ -81,6 +93,8 @@ Sidecar readSidecar(const std::string& path) {
     const json& settings = j.contains("settings") ? j.at("settings") : j;
     out.settings = settingsFromJson(settings);
     if (j.contains("camera")) out.camera = cameraFrom(j.at("camera"));
+    if (j.contains("learned_state") && !j.at("learned_state").value("reproducible", true))
+      out.learnedNote = j.at("learned_state").value("note", std::string("the learned state differs"));
   } catch (const json::exception& e) {
     throw UsageError("--settings " + path + ": " + e.what());
   } catch (const std::invalid_argument& e) {
@@ -90,7 +104,7 @@ Sidecar readSidecar(const std::string& path) {
 }
 
 CommonOptions parseOptionsWithSettingsFile(const std::vector<std::string>& args, std::optional<Viewpoint>* camera,
-                                           std::vector<std::string>* rest) {
+                                           std::vector<std::string>* rest, std::string* learnedNote) {
   std::vector<std::string> others;
   std::string file;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -107,6 +121,7 @@ CommonOptions parseOptionsWithSettingsFile(const std::vector<std::string>& args,
   if (file.empty()) return options;
 
   Sidecar sidecar = readSidecar(file);
+  if (learnedNote) *learnedNote = sidecar.learnedNote;
   options.settings = overlaySettingFlags(sidecar.settings, others, /*skipUnknown=*/rest != nullptr);
   bool viewGiven = std::find(others.begin(), others.end(), "--view") != others.end();
   if (camera && sidecar.camera && !viewGiven) *camera = sidecar.camera;

@@ -294,8 +294,7 @@ int runSortBenchCommand(const std::vector<std::string>& args) {
     std::fputs(kUsage, stdout);
     return kExitOk;
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "raylab sortbench: %s\n\n", e.what());
-    std::fputs(kUsage, stderr);
+    printUsageError("raylab sortbench", e.what());
     return kExitUsage;
   }
   try {

@@ -14,6 +14,7 @@
 #include "app/bench_sweep.h"
 #include "app/bench_charts_run.h"
 #include "app/cli_options.h"
+#include "app/case_views.h"
 #include "app/command_errors.h"
 #include "app/scene_setup.h"
 #include "app/study_plan.h"
@@ -30,6 +31,7 @@ const char* kStudyHelp =
     "                    [--strategies a,b,...] [--device NAME|N] [--validate[=sync|gpu-av]] [--shard i/K]\n"
     "       raylab study temple --thesis [--out-dir DIR] [--device NAME|N]\n"
     "       raylab study --merge DIR... [--out-dir OUT]\n"
+    "  --out-dir DIR       where the study goes (default study-out, in the current folder)\n"
     "Where sorting pays on one scene: one `raylab bench` sweep per image size (paths per frame from 131k to\n"
     "8.4M), 4 and 8 bounces, the strategies dead-last, fixed, two-point and average with the always and auto\n"
     "policies, the megakernel and the unsorted wavefront (split and fused) as baselines; then one HTML report\n"
@@ -69,13 +71,17 @@ StudyOptions parseStudyOptions(const std::vector<std::string>& args) {
     else if (a == "--device") o.device = value();
     else if (a == "--shard") o.shard = parseShard(value());
     else if (a == "--validate" || a.rfind("--validate=", 0) == 0) o.passOn.push_back(a);
-    else if (a.rfind("--", 0) == 0) throw UsageError("unknown option '" + a + "'");
+    else if (a.rfind("--", 0) == 0)
+      throw UsageError(unknownOptionMessage(a, {"--quick", "--thesis", "--out-dir", "--sizes", "--bounces", "--strategies",
+                                                "--device", "--shard", "--validate", "--merge"}));
     else if (o.target.empty()) o.target = a;
     else throw UsageError("one scene per study, got '" + o.target + "' and '" + a + "'");
   }
   if (o.target.empty()) throw UsageError("which scene? raylab study SCENE[@VIEW]");
   if (o.outDir.empty()) throw UsageError("--out-dir needs a folder");
   for (const std::string& size : o.sizes) parseCommonOptions({"--size", size});  // --size's rules, said at once
+  if (const size_t at = o.target.rfind('@'); at != std::string::npos)  // a bad view is exit 2 before any sweep
+    checkCaseView(o.target.substr(0, at), o.target.substr(at + 1));
   return o;
 }
 
@@ -238,7 +244,7 @@ int runStudyCommand(const std::vector<std::string>& args) {
       note = "Measured on a CPU device: the sizes are ones it renders in minutes (up to " + plan.back().size +
              "), far below where sorting pays on a GPU.";
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "raylab study: %s\n\n%s", e.what(), kStudyHelp);
+    printUsageError("raylab study", e.what());
     return kExitUsage;
   }
   if (!note.empty()) std::fprintf(stderr, "raylab study: %s\n", note.c_str());

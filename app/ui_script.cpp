@@ -59,6 +59,9 @@ ScriptAction parseLine(const std::vector<std::string>& w) {
   } else if (verb == "screenshot" || verb == "screenshot-window") {
     expectArgs(1, "screenshot NAME");
     a.kind = verb == "screenshot" ? K::Screenshot : K::ScreenshotWindow, a.value = checkedName("screenshot name", w[1]);
+  } else if (verb == "restart-learning") {
+    expectArgs(0, "restart-learning");
+    a.kind = K::RestartLearning;
   } else if (verb == "reset-layout") {
     expectArgs(0, "reset-layout");
     a.kind = K::ResetLayout;
@@ -69,7 +72,7 @@ ScriptAction parseLine(const std::vector<std::string>& w) {
     expectArgs(0, "quit");
     a.kind = K::Quit;
   } else {
-    throw ScriptError("unknown action '" + verb + "' (set, camera, view, wait, screenshot, screenshot-window, reset-layout, memory, quit)");
+    throw ScriptError("unknown action '" + verb + "' (set, camera, view, wait, screenshot, screenshot-window, reset-layout, restart-learning, memory, quit)");
   }
   return a;
 }

@@ -9,6 +9,7 @@
 //   screenshot NAME          save the render as NAME.png + NAME.json in the screenshot folder
 //   screenshot-window NAME   the same with the panels
 //   reset-layout             put the panels back where they open by default (the "Reset layout" button)
+//   restart-learning         a fresh length cache and accumulation (the L key): what a re-render learns
 //   memory LABEL             print the process's resident memory as one JSON line on stdout:
 //                            {"memory":LABEL,"frame":N,"vm_rss_kib":K,"vm_hwm_kib":K} (the soak reads it)
 //   quit                     close the window (the end of the file does too)
@@ -29,7 +30,7 @@ struct ScriptError : std::runtime_error {
 };
 
 struct ScriptAction {
-  enum class Kind { Set, Camera, View, Wait, Screenshot, ScreenshotWindow, ResetLayout, Memory, Quit };
+  enum class Kind { Set, Camera, View, Wait, Screenshot, ScreenshotWindow, ResetLayout, RestartLearning, Memory, Quit };
   Kind kind = Kind::Quit;
   int line = 0;
   std::string key;    // Set: the flag name

@@ -26,7 +26,11 @@ const char* const kWindowHelp =
     "                         size times --scale (--size, the resolution, only where raylab renders headless\n"
     "                         for want of a display)\n"
     "  --scale S              render resolution / window resolution, 0.05..2 (default 1; 0.25 on CPU devices)\n"
-    "  --script FILE          run UI actions from FILE, then quit (see app/ui_script.h)\n"
+    "  --script FILE          run UI actions from FILE, one a line, then quit:\n"
+    "                           set KEY VALUE (any render flag without dashes: set heatmap sort-key),\n"
+    "                           camera X Y Z TX TY TZ [fov D], view NAME, wait N (frames),\n"
+    "                           screenshot NAME, screenshot-window NAME, reset-layout,\n"
+    "                           restart-learning, memory LABEL, quit; # starts a comment\n"
     "  --screenshot-dir DIR   where F12 / Shift+F12 and scripts save (default CONFIG/screenshots)\n"
     "  --ini FILE             layout and last settings (default CONFIG/imgui.ini; none for scripts)\n"
     "  CONFIG is $XDG_CONFIG_HOME/raylab or ~/.config/raylab\n"
@@ -63,8 +67,7 @@ void parseWindowSize(const std::string& text, WindowOptions& o) {
 }
 
 void printWindowUsage(const std::string& error) {
-  std::fprintf(stderr, "raylab: %s\n\nusage: raylab [options]\n%s%s", error.c_str(), kWindowHelp,
-               commonOptionsHelp().c_str());
+  printUsageError("raylab", error);
 }
 
 std::string valueOf(const std::vector<std::string>& rest, size_t& i) {
@@ -92,7 +95,13 @@ WindowOptions parseWindowOptions(const std::vector<std::string>& args) {
     else if (a == "--scale") o.scale = parseFloat("--scale", valueOf(rest, i), 0.05f, 2.0f);
     else if (a == "--frame-log") o.frameLog = checkedFrameLog(valueOf(rest, i));
     else if (a == "--render-budget-ms") o.renderBudgetMs = parseFloat("--render-budget-ms", valueOf(rest, i), 1.0f, 1000.0f);
-    else throw UsageError("unknown option '" + a + "'");
+    else {
+      std::vector<std::string> known = commonOptionNames();
+      for (const char* f : {"--script", "--screenshot-dir", "--ini", "--reset", "--window-size", "--scale", "--frame-log",
+                            "--render-budget-ms"})
+        known.push_back(f);
+      throw UsageError(unknownOptionMessage(a, known));
+    }
   }
   for (size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--settings" && i + 1 < args.size()) {

@@ -41,6 +41,13 @@ class PathTracer {
   void setCamera(const Viewpoint& camera);
   // Starts accumulating from zero (the frame index too, so a restarted run repeats its samples).
   void restartAccumulation();
+  // Starts the accumulation and the length cache from nothing, as a headless render of these settings starts:
+  // the window's "restart learning" (a heatmap of learned lengths then re-renders from its sidecar).
+  void restartLearning() {
+    SettingsChange change;
+    change.resetCache = change.keyParameters = change.resetAccumulation = true;
+    apply(change);
+  }
   const Settings& settings() const { return settings_; }
   const Viewpoint& camera() const { return camera_; }
 

@@ -29,8 +29,9 @@ std::vector<SettingRow> sceneAndImageRows() {
   return {
       RAYLAB_FIELD(scene, "scene").json("scene").csv("scene", /*quoted=*/true)
           .effects(kEffectScene | kAccumulation | kCache)
-          .help("temple|cornell|furnace|temple-detail:N|FILE.gltf|FILE.glb", " scene (default {default};\n"
-                "temple-detail:N is the temple with N triangles, 1e4 to 3e7)").sample("cornell"),
+          .help("temple|cornell|furnace|temple-detail:N|clutter:N|FILE.gltf|FILE.glb", " scene (default {default};\n"
+                "temple-detail:N is the temple with N triangles, 1e4 to 3e7; clutter:N a storeroom\n"
+                "of small objects with about N triangles, 5e4 to 3e6)").sample("cornell"),
       // The CSV's view column is the viewpoint the bench resolved (bench_results.cpp): empty is the first.
       RAYLAB_FIELD(view, "view").json("view").effects(kAccumulation)
           .help("NAME", "viewpoint (default: the scene's first)").sample("front"),

@@ -1,5 +1,7 @@
 #include "ui/camera_scene_panel.h"
 
+#include <algorithm>
+
 #include <cstring>
 
 #include <imgui.h>
@@ -23,7 +25,10 @@ void drawScene(const CameraModel& m, UiRequests& r) {
     ImGui::EndCombo();
   }
   static char path[512] = "";
-  bool enter = ImGui::InputTextWithHint("##gltf", "path/to/scene.gltf", path, sizeof(path),
+  // The field takes what the button leaves of the row, so the hint shows whole at any panel width.
+  ImGui::SetNextItemWidth(std::max(60.0f, ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Open glTF").x -
+                                               2.0f * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().ItemSpacing.x));
+  bool enter = ImGui::InputTextWithHint("##gltf", "scene.gltf or .glb path", path, sizeof(path),
                                         ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
   if ((ImGui::Button("Open glTF") || enter) && std::strlen(path) > 0) r.loadScene = std::string(path);
@@ -75,17 +80,21 @@ void drawCamera(const CameraModel& m, UiRequests& r) {
     r.cameraText = clip ? std::string(clip) : std::string();
   }
   static char typed[256] = "";
-  if (ImGui::InputTextWithHint("##camera", "camera x y z tx ty tz [fov deg]", typed, sizeof(typed),
+  ImGui::SetNextItemWidth(-1.0f);  // the whole row: the hint is the format to type
+  if (ImGui::InputTextWithHint("##camera", "x y z tx ty tz [fov deg]", typed, sizeof(typed),
                                ImGuiInputTextFlags_EnterReturnsTrue))
     r.cameraText = std::string(typed);
   errorText(m.cameraError);
 }
 
 void drawCapture(const CameraModel& m, UiRequests& r) {
-  ImGui::Text("folder: %s", m.screenshotDir.c_str());
+  ImGui::TextWrapped("folder: %s", m.screenshotDir.c_str());
   if (ImGui::Button("Save render (F12)")) r.screenshotRender = true;
-  ImGui::SameLine();
-  if (ImGui::Button("Save window (Shift+F12)")) r.screenshotWindow = true;
+  // Beside it where the row has room, else below (a narrow panel cut the second button).
+  const char* window = "Save window (Shift+F12)";
+  const float need = ImGui::CalcTextSize(window).x + 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetStyle().ItemSpacing.x;
+  if (ImGui::GetContentRegionAvail().x - ImGui::GetItemRectSize().x >= need) ImGui::SameLine();
+  if (ImGui::Button(window)) r.screenshotWindow = true;
   if (!m.lastScreenshot.empty()) ImGui::TextWrapped("%s", m.lastScreenshot.c_str());
 }
 
@@ -102,12 +111,15 @@ UiRequests drawCameraScenePanel(const CameraModel& m) {
     ImGui::End();
     return r;
   }
-  ImGui::TextDisabled("%s", m.deviceName.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("%s", m.deviceName.c_str());  // long names (llvmpipe's) wrap rather than run out
+  ImGui::PopStyleColor();
   drawWriteFailures(m);
+  // Screenshots first: at 1280x720 they sat below the fold, under the scene and camera sections.
+  if (ImGui::CollapsingHeader("Screenshots", ImGuiTreeNodeFlags_DefaultOpen)) drawCapture(m, r);
   if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) drawScene(m, r);
   if (ImGui::CollapsingHeader("Viewpoints", ImGuiTreeNodeFlags_DefaultOpen)) drawViewpoints(m, r);
   if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) drawCamera(m, r);
-  if (ImGui::CollapsingHeader("Screenshots", ImGuiTreeNodeFlags_DefaultOpen)) drawCapture(m, r);
   if (ImGui::CollapsingHeader("Window", ImGuiTreeNodeFlags_DefaultOpen)) drawWindowSection(r);
   ImGui::End();
   return r;

@@ -27,12 +27,9 @@ void swatch(const glm::vec3& colour, const char* text) {
   ImGui::TextUnformatted(text);
 }
 
-// Greyed text that wraps at the legend's edge rather than running out of it.
-void disabledWrapped(const char* text) {
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  ImGui::TextWrapped("%s", text);
-  ImGui::PopStyleColor();
-}
+// Text that wraps at the legend's edge rather than running out of it, at full contrast: dim grey over a
+// noisy heatmap could not be read.
+void wrapped(const char* text) { ImGui::TextWrapped("%s", text); }
 
 void drawRamp(const HeatmapStats& h) {
   const float width = std::min(260.0f, ImGui::GetContentRegionAvail().x), height = 14.0f;
@@ -76,14 +73,14 @@ void drawRangeControls(HeatmapRange& range, const HeatmapStats& h) {
 
 void drawProbe(const HeatmapProbe& q, const HeatmapStats& h) {
   if (!q.valid) {
-    disabledWrapped("hover the image for a pixel's value, key, cell and path");
+    wrapped("hover the image for a pixel's value, key, cell and path");
     return;
   }
-  ImGui::Text("pixel (%u, %u): %s", q.x, q.y, q.state.c_str());
-  if (q.state == "value") {
-    if (h.keyColour == "cell" || h.keyColour == "hash") ImGui::Text("  key %u (0x%08x)", uint32_t(q.value), uint32_t(q.value));
-    else ImGui::Text("  %s %.6g", h.unit.c_str(), q.value);
-  }
+  // The number itself on the pixel's line ("value" stood where a number belongs); the reason where none.
+  if (q.state != "value") ImGui::Text("pixel (%u, %u): %s", q.x, q.y, q.state.c_str());
+  else if (h.keyColour == "cell" || h.keyColour == "hash")
+    ImGui::Text("pixel (%u, %u): key %u (0x%08x)", q.x, q.y, uint32_t(q.value), uint32_t(q.value));
+  else ImGui::Text("pixel (%u, %u): %.6g %s", q.x, q.y, q.value, h.unit.c_str());
   if (q.hasPath) ImGui::Text("  path id %u", q.pathId);
   if (q.hasKey && h.keyColour == "rank") ImGui::Text("  key %u (0x%08x)", q.key, q.key);
   if (q.hasCell) ImGui::Text("  %s (%u, %u, %u), direction octant %u", q.cellKind.c_str(), q.cell.x, q.cell.y, q.cell.z, q.octant);
@@ -127,22 +124,24 @@ bool drawHeatmapLegend(Settings& settings, const FrameStats& stats, const Box& b
   if (settings.heatmap == HeatmapView::None) return false;
   ImGui::SetNextWindowPos(ImVec2(box.x0, box.y0), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(box.x1 - box.x0, box.y1 - box.y0), ImGuiCond_Always);
-  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::SetNextWindowBgAlpha(0.92f);  // text over a noisy heatmap must stay readable
   // No title bar, move or resize: a fixed place (panel_layout.h) that never covers the panels.
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
   if (ImGui::Begin(kHeatmapLegendTitle, nullptr, flags)) {
+    ImGui::PushTextWrapPos(0.0f);
     if (std::optional<std::string> why = heatmapUnavailable(settings)) {
       // The renderer draws the render instead (heatmapShown); say why rather than show an empty view.
       ImGui::Text("%s is not available", toString(settings.heatmap).c_str());
       ImGui::TextWrapped("%s", why->c_str());
+      ImGui::PopTextWrapPos();
       ImGui::End();
       return true;
     }
     const HeatmapStats& h = stats.heatmap;
     ImGui::Text("%s, bounce %u", toString(settings.heatmap).c_str(), heatmapBounceShown(settings));
-    disabledWrapped(heatmapDescription(settings.heatmap, settings.heatmapKeyColour));
+    wrapped(heatmapDescription(settings.heatmap, settings.heatmapKeyColour));
     if (!h.emptyReason.empty()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "nothing to show: %s", h.emptyReason.c_str());
     if (settings.heatmap == HeatmapView::CellHit) {
       swatch(cellHitColour(true), "hit: estimated cell is the actual cell");
@@ -156,6 +155,7 @@ bool drawHeatmapLegend(Settings& settings, const FrameStats& stats, const Box& b
     drawCounts(h);
     ImGui::Separator();
     drawProbe(h.probe, h);
+    ImGui::PopTextWrapPos();
   }
   ImGui::End();
   return true;

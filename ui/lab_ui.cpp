@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include "ui/camera_scene_panel.h"
+#include "ui/clip_check.h"
 #include "ui/heatmap_legend.h"
 #include "ui/help_overlay.h"
 #include "ui/method_panel.h"
@@ -24,8 +25,11 @@ UiRequests LabUi::draw(Settings& settings, ViewOptions& view, const CameraModel&
   if (view.showPanels) {
     auto panel = [&](Panel p, auto&& drawPanel) {
       placeNextPanel(p, reset);
+      startClipReport();
       drawPanel();
       corrected = keepPanelInside(p, layout_) || corrected;
+      ClipReport clipped = finishClipReport(panelTitle(p));
+      layout_.setClipping(clipped.hiddenWidth, std::move(clipped.items));
     };
     panel(Panel::Method, [&] { drawMethodPanel(settings, view); });
     panel(Panel::Timing, [&] { drawTimingPanel(timing_, last_, settings, view); });
@@ -34,7 +38,12 @@ UiRequests LabUi::draw(Settings& settings, ViewOptions& view, const CameraModel&
   }
   requests.redrawPanels = corrected;
   if (requests.resetLayout) view.resetLayout = true;
-  if (drawHeatmapLegend(settings, last_, heatmapLegendBox(display.x, display.y))) recordWindow(kHeatmapLegendTitle, layout_);
+  startClipReport();
+  if (drawHeatmapLegend(settings, last_, heatmapLegendBox(display.x, display.y))) {
+    recordWindow(kHeatmapLegendTitle, layout_);
+    ClipReport clipped = finishClipReport(kHeatmapLegendTitle);
+    layout_.setClipping(clipped.hiddenWidth, std::move(clipped.items));
+  }
   drawHelpOverlay(&view.showHelp);
   return requests;
 }

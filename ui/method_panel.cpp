@@ -9,6 +9,7 @@
 #include "renderer/heatmap_rules.h"
 #include "renderer/reorder/key_strategies.h"
 #include "renderer/settings_table.h"
+#include "ui/clip_check.h"
 #include "ui/panel_layout.h"
 
 namespace raylab {
@@ -20,6 +21,7 @@ constexpr ImGuiSliderFlags kLog = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlag
 template <class E>
 bool comboEnum(const char* label, E& value, const std::vector<E>& all) {
   bool changed = false;
+  fitsCombo(toString(value).c_str());
   if (ImGui::BeginCombo(label, toString(value).c_str())) {
     for (E e : all) {
       if (ImGui::Selectable(toString(e).c_str(), e == value)) value = e, changed = true;
@@ -34,6 +36,7 @@ bool comboEnum(const char* label, E& value, const std::vector<E>& all) {
 // out, with the reason as tooltip.
 template <class E>
 void comboSetting(const char* label, Settings& s, E Settings::*field, const std::vector<E>& all) {
+  fitsCombo(toString(s.*field).c_str());
   if (!ImGui::BeginCombo(label, toString(s.*field).c_str())) return;
   for (E e : all) {
     Settings candidate = s;
@@ -79,9 +82,12 @@ void sectionTitle(const char* title) {
 
 void drawSortSection(Settings& s) {
   comboSetting("strategy", s, &Settings::strategy, allKeyStrategies());
+  // Strategy none makes no keys: the sort and its parameters apply to nothing, so they are dimmed.
+  ImGui::BeginDisabled(s.strategy == KeyStrategy::None);
   comboSetting("sort", s, &Settings::sort, allValues<SortAlgorithm>());
   comboEnum("sort policy", s.sortPolicy, allValues<SortPolicy>());
   sliderSetting("sorted key bits", s.sortBits, "sort-bits");
+  ImGui::EndDisabled();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("order only the key's top bits (0: all); 8 fewer is one radix pass less");
 }
 

@@ -7,17 +7,21 @@ namespace raylab {
 namespace {
 
 constexpr float kMargin = 10.0f;
-constexpr float kLegendMinWidth = 280.0f, kLegendMaxWidth = 480.0f;
+constexpr float kLegendMinWidth = 280.0f, kLegendMaxWidth = 420.0f;
+// The legend covers at most this share of the display (issue 38: at 1280x720 a 480x300 box hid most of the
+// image between the panels).
+constexpr float kLegendMaxShare = 0.095f;
 
-// The default widths of the left and right columns. The gap between them shows the image and, at its
-// bottom, the heatmap legend: where the columns would leave less than the legend needs, both give way in
-// proportion (down to 120 px each).
+// The default widths of the left and right columns: a share of the display, so a larger window gives the
+// panels room too (at 1600x900 they kept their 1280x720 widths and cut their text the same way). The gap
+// between them shows the image and, at its bottom, the heatmap legend: where the columns would leave less
+// than the legend needs, both give way in proportion (down to 120 px each).
 struct Columns {
   float left, right;
 };
 Columns columnsFor(float w) {
-  float left = std::min(330.0f, std::max(120.0f, 0.42f * w - 1.5f * kMargin));
-  float right = std::min(360.0f, std::max(120.0f, w - left - 3.0f * kMargin));
+  float left = std::min(0.27f * w, std::max(120.0f, 0.42f * w - 1.5f * kMargin));
+  float right = std::min(0.31f * w, std::max(120.0f, w - left - 3.0f * kMargin));
   const float short_ = kLegendMinWidth - (w - left - right - 4.0f * kMargin);
   if (short_ > 0.0f) {
     const float keep = std::max(0.0f, 1.0f - short_ / (left + right));
@@ -65,7 +69,7 @@ Box heatmapLegendBox(float w, float h) {
   const auto [left, right] = columnsFor(w);
   const float gapX0 = 2.0f * kMargin + left, gapX1 = w - 2.0f * kMargin - right;
   const float width = std::min(kLegendMaxWidth, gapX1 - gapX0);
-  const float height = std::min(300.0f, 0.45f * std::max(60.0f, h - 3.0f * kMargin));
+  const float height = std::min({210.0f, 0.45f * std::max(60.0f, h - 3.0f * kMargin), kLegendMaxShare * w * h / width});
   const float x0 = std::floor(0.5f * (gapX0 + gapX1 - width));
   return clampToDisplay({x0, h - kMargin - height, x0 + width, h - kMargin}, w, h);
 }
@@ -132,7 +136,8 @@ nlohmann::json panelRectsJson(const std::vector<PanelRect>& rects, float w, floa
   for (const PanelRect& r : rects)
     list.push_back({{"title", r.title}, {"x", r.box.x0}, {"y", r.box.y0}, {"width", r.box.x1 - r.box.x0},
                     {"height", r.box.y1 - r.box.y0}, {"collapsed", r.collapsed},
-                    {"hidden_height", r.hiddenHeight}});
+                    {"hidden_height", r.hiddenHeight}, {"clipped_width", r.clippedWidth},
+                    {"clipped_items", r.clippedItems}});
   return {{"display", {w, h}}, {"rects", list}};
 }
 

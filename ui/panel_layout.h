@@ -37,6 +37,8 @@ struct PanelRect {
   Box box;
   bool collapsed = false;
   float hiddenHeight = 0.0f;  // content below the panel's bottom edge (ImGui's scroll range): 0 when it all shows
+  float clippedWidth = 0.0f;  // content cut off at its right edge (ui/clip_check.h): 0 when nothing is
+  std::vector<std::string> clippedItems;  // combo values cut inside their box
 };
 
 class PanelLayout {
@@ -53,6 +55,12 @@ class PanelLayout {
   // A window placed by other means (the heatmap legend), listed with the panels.
   void record(const std::string& title, const Box& drawn, bool collapsed = false, float hiddenHeight = 0.0f);
   void startFrame() { rects_.clear(); }
+  // What the panel recorded last (by keepInside or record) cut off at its right edge.
+  void setClipping(float clippedWidth, std::vector<std::string> items) {
+    if (rects_.empty()) return;
+    rects_.back().clippedWidth = clippedWidth;
+    rects_.back().clippedItems = std::move(items);
+  }
 
  private:
   struct Anchored {
@@ -72,7 +80,8 @@ class PanelLayout {
   std::vector<PanelRect> rects_;
 };
 
-// {"display": [w, h], "rects": [{"title", "x", "y", "width", "height", "collapsed", "hidden_height"}, ...]}: in
+// {"display": [w, h], "rects": [{"title", "x", "y", "width", "height", "collapsed", "hidden_height",
+// "clipped_width", "clipped_items"}, ...]}: in
 // the window screenshot's sidecar, so tests can check that every panel is inside the window and which panels
 // must be scrolled to reach their controls.
 nlohmann::json panelRectsJson(const std::vector<PanelRect>& rects, float displayWidth, float displayHeight);

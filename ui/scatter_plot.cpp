@@ -43,7 +43,7 @@ void dashedVertical(ImDrawList* draw, float x, float y0, float y1, ImU32 color) 
 }  // namespace
 
 void drawScatter(const char* id, const std::vector<ScatterPoint>& points, const std::vector<ReferenceLine>& lines,
-                 const ScatterAxes& axes, float height) {
+                 const ScatterAxes& axes, float height, const std::string& empty) {
   ImGui::PushID(id);
   const float width = std::max(80.0f, ImGui::GetContentRegionAvail().x);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
@@ -126,6 +126,12 @@ void drawScatter(const char* id, const std::vector<ScatterPoint>& points, const 
       else draw->AddCircleFilled(anchors[i], p->highlight ? kMarker + 1.5f : kMarker, color);
     }
     draw->AddText(ImVec2(b.x0, b.y0), color, isLine ? lines[i].tag.c_str() : p->tag.c_str());
+  }
+  if (!empty.empty()) {  // wrapped inside the plot area, so the reader sees why it is empty
+    const float wrap = right - left - 12.0f;
+    const ImVec2 size = ImGui::CalcTextSize(empty.c_str(), nullptr, false, wrap);
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(left + 6.0f, std::max(top + 4.0f, 0.5f * (top + bottom - size.y))),
+                  IM_COL32(235, 200, 120, 255), empty.c_str(), nullptr, wrap);
   }
   draw->PopClipRect();
   if (under) ImGui::SetTooltip("%s", under->tooltip.c_str());

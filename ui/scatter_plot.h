@@ -27,7 +27,8 @@ struct ScatterAxes {
   std::string noValue;  // what the strip under the plot ("n/a") means, on hover: "no prediction"
 };
 
+// `empty`: a sentence drawn over the plot (wrapped), e.g. why no point has a value on the y axis; "" for none.
 void drawScatter(const char* id, const std::vector<ScatterPoint>& points, const std::vector<ReferenceLine>& lines,
-                 const ScatterAxes& axes, float height);
+                 const ScatterAxes& axes, float height, const std::string& empty = "");
 
 }  // namespace raylab

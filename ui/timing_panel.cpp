@@ -61,7 +61,9 @@ void drawStackedBars(const FrameStats& stats) {
   }
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float labelWidth = 70.0f, height = ImGui::GetTextLineHeight();
-  const float barWidth = std::max(50.0f, ImGui::GetContentRegionAvail().x - labelWidth - 60.0f);
+  // The bar leaves room for its time after it ("1234.56 ms"): a fixed 60 px ran 2 px past the panel.
+  const float timeWidth = ImGui::CalcTextSize("0000.00 ms").x + ImGui::GetStyle().ItemSpacing.x;
+  const float barWidth = std::max(50.0f, ImGui::GetContentRegionAvail().x - labelWidth - timeWidth);
   for (const auto& [bounce, stages] : rows) {
     ImGui::Text("%s", bounce < 0 ? "frame" : ("bounce " + std::to_string(bounce)).c_str());
     ImGui::SameLine(labelWidth);
@@ -90,6 +92,29 @@ void drawStackedBars(const FrameStats& stats) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("GPU frame time outside every stage (barriers, driver work)");
   ImGui::SameLine();
   ImGui::Text("%.2f ms", rest);
+}
+
+// What each colour of the bars is: the stages of this frame in their order, wrapped to the panel's width.
+void drawStageLegend(const FrameStats& stats) {
+  std::vector<std::string> seen;
+  for (const StageTime& t : stats.stages)
+    if (std::find(seen.begin(), seen.end(), t.stage) == seen.end()) seen.push_back(t.stage);
+  if (seen.empty()) return;
+  seen.push_back("unattributed");
+  const float box = ImGui::GetTextLineHeight(), spacing = ImGui::GetStyle().ItemSpacing.x;
+  float right = ImGui::GetContentRegionAvail().x;
+  float used = 0.0f;
+  for (size_t i = 0; i < seen.size(); ++i) {
+    const float width = box + 4.0f + ImGui::CalcTextSize(seen[i].c_str()).x;
+    if (i > 0 && used + spacing + width <= right) ImGui::SameLine(), used += spacing;
+    else used = 0.0f;
+    used += width;
+    ImVec2 p = ImGui::GetCursorScreenPos();
+    ImGui::GetWindowDrawList()->AddRectFilled(p, ImVec2(p.x + box, p.y + box), stageColor(seen[i]));
+    ImGui::Dummy(ImVec2(box, box));
+    ImGui::SameLine(0.0f, 4.0f);
+    ImGui::TextUnformatted(seen[i].c_str());
+  }
 }
 
 // Mean, min and max of the last frames (one frame's number jumps too much to read on a CPU device).
@@ -144,20 +169,28 @@ void drawTimingPanel(const TimingHistory& history, const FrameStats& stats, Sett
   constexpr size_t kAveraged = 30;
   const Window gpu = lastFrames(history.frameMs(), kAveraged), wall = lastFrames(history.wallMs(), kAveraged);
   const size_t n = std::min(history.size(), kAveraged);
-  ImGui::Text("GPU %.2f ms (%.2f..%.2f), wall %.2f ms", gpu.mean, gpu.lo, gpu.hi, wall.mean);
+  ImGui::TextWrapped("GPU %.2f ms (%.2f..%.2f), wall %.2f ms", gpu.mean, gpu.lo, gpu.hi, wall.mean);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("mean (min..max) of the last %zu frames", n);
-  // Rays and time of the same (last) frame.
-  ImGui::Text("last frame %.2f ms GPU: %.3g rays/s; %u spp", stats.frameMs, stats.raysPerSecond, stats.samplesPerPixel);
+  // Rays and time of the same (last) frame; wrapped, as a narrow panel cut "...rays/s; 53 sp".
+  ImGui::TextWrapped("last frame %.2f ms GPU: %.3g rays/s; %u spp", stats.frameMs, stats.raysPerSecond, stats.samplesPerPixel);
+  // One line whether or not a stage is over the render budget, the whole note on hover: the note came and
+  // went frame by frame and moved everything under it by two lines.
+  const float fps = view.uiFrameMs > 0.0f ? 1000.0f / view.uiFrameMs : 0.0f;
   if (!view.slowStageNote.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 190, 80, 255));
-    ImGui::TextWrapped("%s", view.slowStageNote.c_str());
-    ImGui::PopStyleColor();
+    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "UI %.1f fps: a stage is over budget (hover)", fps);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", view.slowStageNote.c_str());
+  } else {
+    ImGui::Text("UI %.1f fps: every stage fits the budget", fps);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the window's own frame rate; render work is split to fit --render-budget-ms");
   }
   ImGui::Checkbox("detailed stats", &view.detailedStats);
   ImGui::SameLine();
   ImGui::Checkbox("count SIMT lanes", &settings.countSimt);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("subgroup ballots in traversal: slower, not for timing");
-  if (ImGui::CollapsingHeader("Stages per bounce", ImGuiTreeNodeFlags_DefaultOpen)) drawStackedBars(stats);
+  if (ImGui::CollapsingHeader("Stages per bounce", ImGuiTreeNodeFlags_DefaultOpen)) {
+    drawStackedBars(stats);
+    drawStageLegend(stats);
+  }
   if (ImGui::CollapsingHeader("History (ms per frame)", ImGuiTreeNodeFlags_DefaultOpen)) drawHistory(history);
   if (ImGui::CollapsingHeader("Coherence", ImGuiTreeNodeFlags_DefaultOpen)) drawBounceTable(stats);
   if (ImGui::CollapsingHeader("Memory")) drawMemory(stats);

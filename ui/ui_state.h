@@ -22,6 +22,9 @@ struct ViewOptions {
   // Set by the window where one stage of a frame is dearer than its render budget (the Timing panel says
   // so: the UI cannot turn faster than that stage); empty where every stage fits.
   std::string slowStageNote;
+  // The window's own frame time (each UI frame: input, panels, the render work it runs), a running mean the
+  // window keeps; 0 before the first. The Timing panel shows it as the UI's frame rate.
+  float uiFrameMs = 0.0f;
   std::string serUnavailable;
   static constexpr float kMinScale = 0.05f;
   static constexpr float kMaxScale = 2.0f;

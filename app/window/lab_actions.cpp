@@ -12,6 +12,7 @@
 #include "app/window/screenshot.h"
 #include "app/window/swapchain.h"
 #include "renderer/path_tracer.h"
+#include "renderer/reorder/key_stage.h"
 #include "renderer/settings_table.h"
 #include "renderer/vk/vk_context.h"
 
@@ -31,6 +32,7 @@ void LabWindow::handleHotkeys() {
       }
       case Hotkey::ScreenshotRender: pendingRenderShot_ = freshScreenshotName(options_.screenshotDir, "render"); break;
       case Hotkey::ScreenshotWindow: pendingWindowShot_ = freshScreenshotName(options_.screenshotDir, "window"); break;
+      case Hotkey::RestartLearning: tracer_->restartLearning(); break;
     }
   }
 }
@@ -154,6 +156,7 @@ void LabWindow::runAction(const ScriptAction& a) {
       pendingWindowShot_ = a.value;
       break;
     case K::ResetLayout: view_.resetLayout = true; break;
+    case K::RestartLearning: tracer_->restartLearning(); break;
     case K::Memory:
       std::printf("%s\n", memoryReportLine(a.value, frames_, readProcessMemory()).c_str());
       std::fflush(stdout);
@@ -171,6 +174,7 @@ void LabWindow::saveScreenshots(const PresentedFrame& frame) {
   content.camera.name = settings_.view;
   content.stats = tracer_->stats();
   content.device = ctx_->info();
+  content.learned = learned_.state(tracer_->keyStage().hasCache(), content.settings.frames, tracer_->keyStage().cacheEpoch());
   auto save = [&](std::string& name, const char* kind, const std::vector<uint32_t>& pixels, uint32_t w, uint32_t h) {
     if (name.empty()) return;
     content.kind = kind, content.imageWidth = w, content.imageHeight = h;

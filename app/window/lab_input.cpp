@@ -2,11 +2,24 @@
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 namespace raylab {
 namespace {
 
 LabInput* self(GLFWwindow* window) { return static_cast<LabInput*>(glfwGetWindowUserPointer(window)); }
+
+// Whether the pointer is over a window ImGui drew last: its WantCaptureMouse is a frame old, so a wheel turned
+// as the pointer reached a panel dollied the camera (and restarted accumulation) instead of scrolling it.
+bool overPanel(GLFWwindow* window) {
+  if (!ImGui::GetCurrentContext()) return false;
+  double x = 0.0, y = 0.0;
+  glfwGetCursorPos(window, &x, &y);
+  const ImVec2 p{float(x), float(y)};
+  for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
+    if (w->WasActive && !w->Hidden && !(w->Flags & ImGuiWindowFlags_ChildWindow) && w->Rect().Contains(p)) return true;
+  return false;
+}
 
 }  // namespace
 
@@ -53,13 +66,16 @@ void LabInput::onKey(GLFWwindow* window, int key, int, int action, int mods) {
     case GLFW_KEY_R:  // back to the viewpoint after flying out of the scene
       if (!typing) in->hotkeys_.push_back(Hotkey::ResetView);
       break;
+    case GLFW_KEY_L:  // a fresh length cache and accumulation: what a re-render of a screenshot learns
+      if (!typing) in->hotkeys_.push_back(Hotkey::RestartLearning);
+      break;
     default: break;
   }
 }
 
 void LabInput::onScroll(GLFWwindow* window, double, double dy) {
   self(window)->activity_ = true;
-  if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) return;
+  if ((ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) || overPanel(window)) return;
   self(window)->scroll_ += static_cast<float>(dy);
 }
 

@@ -11,7 +11,7 @@ struct GLFWwindow;
 
 namespace raylab {
 
-enum class Hotkey { Help, ScreenshotRender, ScreenshotWindow, TogglePanels, ToggleOrbit, CloseHelp, ResetView };
+enum class Hotkey { Help, ScreenshotRender, ScreenshotWindow, TogglePanels, ToggleOrbit, CloseHelp, ResetView, RestartLearning };
 
 class LabInput {
  public:

@@ -217,11 +217,15 @@ bool LabWindow::frame() {
   imagePending_ = imagePending_ || turn.frameDone;
   const PresentedFrame shown = presentIfDue(drawPanels, turn, now);
   ++uiFrames_;
+  // A running mean (one UI frame's time jumps with the render steps it ran) for the Timing panel.
+  const float uiMs = float(msSince(start));
+  view_.uiFrameMs = view_.uiFrameMs > 0.0f ? 0.9f * view_.uiFrameMs + 0.1f * uiMs : uiMs;
   if (frameLog_) logUiFrame(msSince(start), drawPanels, shown, changed, restarted, turn);
   if (!turn.frameDone) return true;
   noteSlowStep();
   // Statistics, screenshots and the script's frame count follow whole render frames only.
   ui_.onFrame(tracer_->settings(), *turn.frameDone);
+  learned_.onFrame(tracer_.get(), tracer_->accumulatedFrames(), tracer_->keyStage().cacheEpoch());
   ++frames_;
   wallMsTotal_ += turn.frameDone->wallMs;
   saveScreenshots(shown);

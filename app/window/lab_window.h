@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/fly_camera.h"
+#include "app/learned_history.h"
 #include "app/scene_setup.h"
 #include "app/ui_script.h"
 #include "app/window/glfw_window.h"
@@ -107,6 +108,7 @@ class LabWindow {
   bool imagePending_ = false;
   double presentMs_ = 0.0;  // what presenting the window took, smoothed (LiveRender leaves it room)
   uint64_t frames_ = 0;
+  LearnedHistory learned_;  // whether a screenshot's length cache learned over its frames only
   uint64_t uiFrames_ = 0;
   double wallMsTotal_ = 0.0, loopMsTotal_ = 0.0;
 };

@@ -48,11 +48,14 @@ void KeyStage::apply(const Settings& settings, glm::vec3 cameraPos, uint32_t max
   grid_ = grid;
 
   if (!strategyInfo(settings.strategy).learnsLengths) {
+    if (cache_) ++cacheEpoch_;
     cache_.reset();  // nothing to remember: give the memory back
   } else if (!cache_ || gridChanged) {
     cache_ = std::make_unique<LengthCache>(*ctx_, buildLengthCacheLayout(grid_, triangles_, cameraPos));
+    ++cacheEpoch_;
   } else if (reset) {
     cache_->clear();
+    ++cacheEpoch_;
   }
   if (settings.strategy == KeyStrategy::Oracle && oracleT_.size() < uint64_t(maxPaths_) * sizeof(float))
     oracleT_ = GpuBuffer(*ctx_, uint64_t(maxPaths_) * sizeof(float));

@@ -77,6 +77,10 @@ class KeyStage {
   double cacheOccupancy() const;
   uint32_t cacheEntryCount() const;  // 0 without a cache
   uint32_t cacheOutliersRejected() const;
+  // Counts the times the cache started from nothing (made, cleared or dropped): a window screenshot compares
+  // it across its accumulated frames to tell whether the cache learned only over them, as a headless
+  // re-render's does (app/window/learned_history.h).
+  uint64_t cacheEpoch() const { return cacheEpoch_; }
 
   // For tests and stats: the parameters the shaders see, the cache contents, the oracle's distances.
   const gpu::GpuKeyParams& params() const { return params_; }
@@ -100,6 +104,7 @@ class KeyStage {
   glm::vec3 camera_{0.0f};
   KeyGrid grid_;
   std::unique_ptr<LengthCache> cache_;
+  uint64_t cacheEpoch_ = 0;
   GpuBuffer oracleT_;
   GpuBuffer paramsBuffer_;
   gpu::GpuKeyParams params_{};

@@ -31,7 +31,11 @@ TEST(PanelLayout, HeatmapLegendOverlapsNoDefaultPanel) {
     Box legend = heatmapLegendBox(w, h);
     EXPECT_TRUE(legend.inside(display(w, h))) << w << "x" << h;
     EXPECT_GE(legend.x1 - legend.x0, 260.0f) << w << "x" << h;
-    EXPECT_GE(legend.y1 - legend.y0, 150.0f) << w << "x" << h;
+    // Tall enough for its lines where the display allows, and never more than a tenth of it (issue 38: a
+    // 480x300 legend hid most of the image between the panels at 1280x720).
+    const float area = (legend.x1 - legend.x0) * (legend.y1 - legend.y0);
+    EXPECT_LE(area, 0.1f * w * h) << w << "x" << h;
+    EXPECT_GE(legend.y1 - legend.y0, std::min(150.0f, 0.09f * w * h / (legend.x1 - legend.x0))) << w << "x" << h;
     for (Panel p : kAllPanels)
       EXPECT_FALSE(legend.overlaps(defaultPanelBox(p, w, h))) << panelTitle(p) << " at " << w << "x" << h;
   }

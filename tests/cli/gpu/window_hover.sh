@@ -3,8 +3,8 @@
 # the frame log's `hover` (the pixel the readout shows) must follow it, scaled from window to render pixels.
 # A 1280x720 window renders 320x180 (--scale 0.25); Xvfb starts the pointer at the screen's centre, so the
 # readout shows the image centre (160, 90) until the pointer moves. That is where the pointer is, not a
-# stale value: moved to (600, 300) and (900, 300) of the window, both over the image and clear of the
-# panels, it must read (150, 75) and (225, 75). Over a panel (400, 500) the readout has no pixel (null).
+# stale value: moved to (600, 300) and (840, 300) of the window, both over the image and clear of the
+# panels (wider since issue 38), it must read (150, 75) and (210, 75). Over the heatmap legend (600, 650) the readout has no pixel (null).
 set -eu
 raylab="$1"
 source "$(dirname "$0")/../window_test_setup.sh"  # skips without a window; temporary folder; validation on
@@ -36,7 +36,7 @@ PY
 touch log.jsonl
 wait_for 160 90 || exit 1  # the pointer where Xvfb put it: the screen's centre, the window's
 window=$(xdotool search --sync --name raylab | head -1)
-for point in "600 300 150 75" "900 300 225 75" "400 500 null"; do
+for point in "600 300 150 75" "840 300 210 75" "600 650 null"; do
   set -- $point
   xdotool mousemove --sync --window "$window" "$1" "$2"
   shift 2

@@ -1,0 +1,15 @@
+// A sweep's cases (bench --cases, study SCENE@VIEW) checked whole before anything renders: every named
+// viewpoint must exist in its scene. A bad one is a usage error (exit 2), as the help promises, not a sweep
+// whose every cell fails (exit 1, empty results).
+#pragma once
+
+#include <string>
+
+namespace raylab {
+
+// Throws UsageError ("temple@hal: no viewpoint 'hal' in temple (did you mean hall?); it has: ...") when
+// `view` is not empty and not a viewpoint of `scene`, or SceneLoadError for an unusable file. Loads the
+// scene to read its viewpoints (a family's smallest member: its viewpoints do not depend on the size).
+void checkCaseView(const std::string& scene, const std::string& view);
+
+}  // namespace raylab
