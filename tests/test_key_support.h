@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "renderer/bvh_pairs.h"
 #include "renderer/vk/gpu_buffer.h"
 #include "renderer/reorder/key_functions.h"
 #include "renderer/reorder/key_stage.h"
@@ -105,8 +106,9 @@ class FakeFrame {
     Bounds b = scene.bounds();
     for (const Triangle& t : scene.triangles)
       tris.push_back({t.v[0], 0u, t.v[1] - t.v[0], 0u, t.v[2] - t.v[0], 1.0f});
-    std::vector<gpu::BvhNode> nodes = {{b.min, 0u, b.max, static_cast<uint32_t>(tris.size())}};  // one leaf
-    nodes_ = makeBufferFrom(ctx, nodes);
+    Bvh oneLeaf;  // the whole scene one leaf, in the layout the traversal reads
+    oneLeaf.nodes = {{b.min, 0u, b.max, static_cast<uint32_t>(tris.size())}};
+    nodes_ = makeBufferFrom(ctx, pairNodes(oneLeaf));
     triangles_ = makeBufferFrom(ctx, tris);
     origin_ = GpuBuffer(ctx, capacity * sizeof(glm::vec4));
     direction_ = GpuBuffer(ctx, capacity * sizeof(glm::vec4));
