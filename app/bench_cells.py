@@ -38,6 +38,10 @@ def load_cells(folder):
                 cells.append(json.loads(line))
             except json.JSONDecodeError as e:
                 raise ValueError(f"{path}:{number}: not a JSON line ({e.msg})")
+    if path.endswith("results.jsonl") and any(c.get("round", 0) > 0 for c in cells):
+        # Rounds of one cell are not cells: only the bench makes them one, when the sweep ends.
+        raise NotABenchFolder(f"{folder} has no cells.jsonl: its sweep did not finish "
+                              f"(raylab bench --resume {folder} finishes it)")
     return cells
 
 

@@ -10,7 +10,7 @@ source_dir="$2"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 RAYLAB_VALIDATE=1 "$raylab" bench --cases cornell@front --strategies dead-last,gaussian --sorts radix,bitonic \
-  --gauss-resets 20,inf --sort-bits-list 0,8 --size 24x16 --timed-frames 2 --warmup 0 --reference-spp 2 --out-dir "$dir" > "$dir/log" 2>&1
+  --gauss-resets 20,inf --sort-bits-list 0,8 --size 24x16 --timed-frames 2 --warmup 0 --reference-spp 2 --rounds 1 --out-dir "$dir" > "$dir/log" 2>&1
 python3 - "$dir" <<'PY'
 import csv, json, sys
 rows = list(csv.DictReader(open(sys.argv[1] + '/results.csv')))
