@@ -100,6 +100,7 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
   tracer.applySettings(counting);
   tracer.setDetailedStats(true);
   r.detailed = tracer.renderFrame();
+  r.detailMeasured = true;
   tracer.setDetailedStats(false);
   tracer.applySettings(settings);
   return r;
@@ -146,7 +147,7 @@ nlohmann::json toJson(const CellResult& r) {
           {"policy_frames_before_timing",
            r.policyFramesBeforeTiming ? nlohmann::json(*r.policyFramesBeforeTiming) : nlohmann::json(nullptr)},
           {"policy_settled", r.policySettled},
-          {"detailed_frame", toJson(r.detailed)}};
+          {"detailed_frame", r.detailMeasured ? toJson(r.detailed) : nlohmann::json(nullptr)}};
 }
 
 }  // namespace raylab

@@ -28,6 +28,7 @@ struct CellResult {
   std::optional<double> finalRelMse;      // this cell's own image after its timed frames (none: no reference)
   double raysPerSecond = 0.0;
   FrameStats detailed;                    // the counting/detailed frame
+  bool detailMeasured = false;            // whether it was rendered (else `detailed` is empty: null in JSON)
   // The sort policy's decided plan after the timed frames (empty: no sort): auto's first plan after them that
   // does not measure (SortPlan::measuring), the one its counting frame renders.
   std::vector<bool> sortedAfter;

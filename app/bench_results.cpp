@@ -68,7 +68,8 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   row.add("prediction_error_mean", csvNumber(measuredOrNone(meanOverBounces(b, &BounceStats::predictionErrorMean, true))));
   row.add("prediction_error_median", csvNumber(measuredOrNone(meanOverBounces(b, &BounceStats::predictionErrorMedian, true))));
   row.add("cell_hit_rate", csvNumber(measuredOrNone(meanOverBounces(b, &BounceStats::cellHitRate, true))));
-  row.add("key_bits", r.detailed.keyBits).add("length_cache_bytes", r.detailed.lengthCacheBytes);
+  auto detail = [&](double v) { return csvNumber(r.detailMeasured ? std::optional(v) : std::nullopt); };
+  row.add("key_bits", detail(r.detailed.keyBits)).add("length_cache_bytes", detail(double(r.detailed.lengthCacheBytes)));
   row.add("final_rel_mse", csvNumber(r.finalRelMse));
   // Which bounces the policy's decided plan sorts after, e.g. "YNY-" (- : the last bounce).
   std::string sortedAfter;

@@ -54,7 +54,10 @@ python3 - "$dir/whole" "$dir/part" <<'PY'
 import csv, json, sys
 whole, part = sys.argv[1], sys.argv[2]
 records = [json.loads(line) for line in open(part + '/results.jsonl')]
-XX
+assert sorted((r['cell'], r['round']) for r in records) == [(c, r) for c in range(5) for r in range(2)], records
+def timing(column):
+    return (column.endswith('_ms') or column.startswith('frame_ms') or column.startswith('trace_after_first_ms')
+            or column == 'rays_per_second')
 a = list(csv.DictReader(open(whole + '/results.csv')))
 b = list(csv.DictReader(open(part + '/results.csv')))
 assert [r['label'] for r in a] == [r['label'] for r in b], ([r['label'] for r in a], [r['label'] for r in b])
