@@ -40,12 +40,12 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
   tracer.setDetailedStats(false);
   tracer.applySettings(settings);
   auto start = std::chrono::steady_clock::now();
-  uint32_t f = 0;
-  for (; f < warmup || std::chrono::steady_clock::now() - start < std::chrono::milliseconds(500); ++f)
+  for (uint32_t f = 0; f < warmup || std::chrono::steady_clock::now() - start < std::chrono::milliseconds(500); ++f)
     tracer.renderFrame();
   // auto is timed from the frame its plan stops exploring: timed while it explores, a cell of 8.4M paths read
   // the unsorted arm's time while its plan sorted every bounce (H200, issue 34).
-  for (; nextPlanMeasures(tracer, settings) && f < kMaxSettleFrames; ++f) tracer.renderFrame();
+  // (A probe frame measures too: timing then starts after it.)
+  for (uint32_t settle = 0; nextPlanMeasures(tracer, settings) && settle < kMaxSettleFrames; ++settle) tracer.renderFrame();
   if (settings.sorts() && settings.sortPolicy == SortPolicy::Auto) {
     r.policyFramesBeforeTiming = tracer.sortPolicy().framesSeen();
     r.policySettled = !nextPlanMeasures(tracer, settings);

@@ -38,8 +38,8 @@ struct CellResult {
   bool policySettled = true;
 };
 
-// The most warm-up frames a cell of the auto policy runs waiting for its plan to stop exploring (it needs
-// SortPolicyModel::kColdFrames + 2 * kMinSamples = 6 frames from a reset).
+// The most frames a cell of the auto policy runs after its warm-up waiting for its plan to stop exploring (it
+// needs SortPolicyModel::kColdFrames + 2 * kMinSamples = 6 frames from a reset).
 inline constexpr uint32_t kMaxSettleFrames = 256;
 
 // What a case's scene costs before any frame: its size, its BVH (what the trace stage reads: nodes and the

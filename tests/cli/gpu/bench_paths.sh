@@ -38,7 +38,7 @@ assert all(len(e) == 1 for e in errors.values()), errors
 assert errors[('24', '1')] != errors[('48', '1')], errors
 print('ok: %d cells over %d path counts' % (len(rows), len({r['paths_per_frame'] for r in rows})))
 PY
-grep -q '^\[1/12 .*\] cornell@front 24x16 spp=1 b=2 megakernel' "$dir/whole.log" ||
+grep -q '^\[1/12 .*\] round 1/1 cornell@front 24x16 spp=1 b=2 megakernel' "$dir/whole.log" ||
   { echo "FAIL: the progress line does not name the size and spp"; cat "$dir/whole.log"; exit 1; }
 
 if [ $have_matplotlib -eq 1 ]; then

@@ -29,7 +29,7 @@ for sweep in ("thesis-keys", "thesis-gaussian"):
     for r in csv.DictReader(open(f"{out}/{sweep}/results.csv")):
         if r["kernel"] != "wavefront":
             continue
-        pt = sum(max(0.0, float(r[k])) for k in ("trace_ms", "shade_ms", "trace+shade_ms"))
+        pt = sum(float(r[k]) for k in ("trace_ms", "shade_ms", "trace+shade_ms") if r[k])  # empty: not run
         rows[(r["view"].strip('"'), r["strategy"], "-" if r["strategy"] == "none" else r["sort"])] = pt
 sections = md.split("\n## ")
 ok = True
