@@ -1,5 +1,8 @@
 #!/usr/bin/python3
-"""Draws the benchmark charts from a `raylab bench` output folder (results.csv + results.jsonl).
+"""Draws the benchmark charts from a `raylab bench` output folder (results.csv + cells.jsonl).
+
+Times are medians over the sweep's rounds (--rounds); the frame times carry error bars from the fastest to the
+slowest round (none with one round, which shows no spread). A cell not measured (an empty CSV cell) is left out.
 
 usage: /usr/bin/python3 app/bench_charts.py BENCH_OUT_DIR [TITLE]
 Writes, per (scene, view) case, into BENCH_OUT_DIR:
@@ -26,7 +29,6 @@ Uses Debian's python3-matplotlib (run with /usr/bin/python3). Exit status: 0 cha
 not be written (named), 2 usage, 3 matplotlib is missing.
 """
 import csv
-import json
 import math
 import os
 import sys
@@ -51,6 +53,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
 from checked_write import write_with  # noqa: E402  (app/checked_write.py, beside this script)
+from bench_cells import load_cells  # noqa: E402  (app/bench_cells.py)
 
 def stage_columns(header, measured):
     """The stages a CSV header has a NAME_ms column for and some cell timed, in the header's order (that of
@@ -66,13 +69,11 @@ def load(folder):
         header = reader.fieldnames or []
     curves = {}
     measured = set()
-    with open(os.path.join(folder, "results.jsonl")) as f:
-        for line in f:
-            j = json.loads(line)
-            measured.update(j["result"].get("stage_ms", {}).keys())
-            st = j["settings"]
-            key = (st["scene"], j["view"], j["label"], paths_group_of(st["width"], st["height"], st["spp_per_frame"]))
-            curves[key] = (j["result"]["error_curve_ms"], j["result"]["error_curve_rel_mse"])
+    for j in load_cells(folder):  # one record per cell, its rounds made one
+        measured.update(j["result"].get("stage_ms", {}).keys())
+        st = j["settings"]
+        key = (st["scene"], j["view"], j["label"], paths_group_of(st["width"], st["height"], st["spp_per_frame"]))
+        curves[key] = (j["result"]["error_curve_ms"], j["result"]["error_curve_rel_mse"])
     return rows, curves, stage_columns(header, measured)
 
 
@@ -117,10 +118,29 @@ def case_name(row, with_bounces=False, with_paths=False):
 
 
 def num(row, key):
+    """A CSV cell as a number; nan where not measured (an empty cell)."""
     try:
         return float(row[key])
-    except (KeyError, ValueError):
+    except (KeyError, ValueError, TypeError):
         return float("nan")
+
+
+def frame_error(rows):
+    """matplotlib's yerr/xerr of the rows' median frame times: down to the fastest and up to the slowest round
+    (frame_ms_min, frame_ms_max: the spread over the rounds); 0 where one round measured no spread."""
+    low, high = [], []
+    for r in rows:
+        median, lo, hi = num(r, "frame_ms_median"), num(r, "frame_ms_min"), num(r, "frame_ms_max")
+        low.append(median - lo if lo == lo else 0.0)
+        high.append(hi - median if hi == hi else 0.0)
+    return [low, high]
+
+
+def rounds_note(rows):
+    """The title's note of how many rounds the medians and error bars come from."""
+    counts = sorted({r.get("rounds") or "1" for r in rows})
+    n = "/".join(counts)
+    return f"median of {n} round{'s' if counts != ['1'] else ''}" + (", bars: min-max over rounds" if counts != ["1"] else ", no spread")
 
 
 def stacked_stages(rows, stages, title, path):
@@ -133,8 +153,10 @@ def stacked_stages(rows, stages, title, path):
             continue
         ax.bar(labels, values, bottom=bottom, label=stage)
         bottom = [b + v for b, v in zip(bottom, values)]
+    ax.errorbar(labels, [num(r, "frame_ms_median") for r in rows], yerr=frame_error(rows), fmt="k_", capsize=3,
+                label="frame (GPU)")
     ax.set_ylabel("GPU time per frame (ms, median)")
-    ax.set_title(f"Stage breakdown — {title}")
+    ax.set_title(f"Stage breakdown — {title}\n{rounds_note(rows)}", fontsize=9)
     ax.legend(fontsize=7, ncol=2)
     plt.setp(ax.get_xticklabels(), rotation=45, ha="right", fontsize=7)
     fig.tight_layout()
@@ -144,11 +166,15 @@ def stacked_stages(rows, stages, title, path):
 
 def speed_accuracy(rows, title, path):
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    # Every cell with a prediction error: the auto policy's too (its counting frame is one it sorted as planned).
     pts = [r for r in rows if num(r, "prediction_error_mean") >= 0]
     for ax, key, name in ((axes[0], "trace_ms", "trace time (ms)"), (axes[1], "frame_ms_median", "frame time (ms)")):
         for r in pts:
-            ax.scatter(num(r, key), num(r, "prediction_error_mean"))
-            ax.annotate(r["label"].split(" ")[0], (num(r, key), num(r, "prediction_error_mean")), fontsize=7)
+            xerr = frame_error([r]) if key == "frame_ms_median" else None
+            ax.errorbar(num(r, key), num(r, "prediction_error_mean"), xerr=xerr, fmt="o", capsize=3)
+            policy = r.get("sort_policy", "always")
+            ax.annotate(r["label"].split(" ")[0] + ("" if policy == "always" else f" {policy}"),
+                        (num(r, key), num(r, "prediction_error_mean")), fontsize=7)
         for r in rows:
             # Baselines as vertical lines; the megakernel has no separate trace stage to place.
             if r["strategy"] == "none" and not (key == "trace_ms" and r["kernel"] == "megakernel"):
@@ -156,7 +182,7 @@ def speed_accuracy(rows, title, path):
                 ax.text(num(r, key), ax.get_ylim()[1] if pts else 0, r["label"], fontsize=7, rotation=90, va="top")
         ax.set_xlabel(name)
         ax.set_ylabel("prediction error / scene diagonal (mean)")
-    fig.suptitle(f"Speed against accuracy — {title}")
+    fig.suptitle(f"Speed against accuracy — {title} ({rounds_note(rows)})", fontsize=9)
     fig.tight_layout()
     save(fig, path)
     plt.close(fig)
@@ -206,7 +232,7 @@ def tracers(rows, title, path):
     hatches = ["//" if r.get("ser", "off") != "off" else "" for r in rows]
     for i, r in enumerate(rows):
         ax.bar(i - 0.2, num(r, "frame_ms_median"), width=0.4, color=colours[i], hatch=hatches[i],
-               label="frame" if i == 0 else None)
+               yerr=frame_error([r]), capsize=2, label="frame" if i == 0 else None)
         ax.bar(i + 0.2, num(r, "trace_after_first_ms"), width=0.4, color=colours[i], alpha=0.45,
                label="trace, bounces >= 1" if i == 0 else None)
     ax.set_xticks(list(x))

@@ -21,7 +21,9 @@ std::vector<std::string> benchCsvColumns() {
                         "cell_hit_rate", "key_bits", "length_cache_bytes", "final_rel_mse", "sort_policy", "sorted_after",
                         "triangles", "bvh_nodes", "bvh_bytes", "scene_bytes", "bvh_build_ms", "scene_load_ms",
                         "tracer_setup_ms", "sort_bits", "learn_every", "fusion", "compaction", "trace_shade", "bvh",
-                        "wide_bvh_nodes", "wide_bvh_bytes", "paths_per_frame"})
+                        "wide_bvh_nodes", "wide_bvh_bytes", "paths_per_frame",
+                        // the spread over a sweep's rounds (app/bench_rounds.h); empty with one round
+                        "rounds", "frame_ms_q1", "frame_ms_q3", "trace_after_first_ms_min", "trace_after_first_ms_max"})
     columns.push_back(c);
   for (const SettingRow& r : settingRows())
     for (const std::string& c : r.csvColumns)

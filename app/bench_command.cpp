@@ -5,8 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
+#include <optional>
 #include <set>
+#include <tuple>
 
 #include "app/bench_charts_run.h"
 #include "app/bench_measure.h"
@@ -14,6 +17,8 @@
 #include "app/bench_shard.h"
 #include "app/bench_results.h"
 #include "app/bench_resume.h"
+#include "app/bench_rounds.h"
+#include "app/bench_spread.h"
 #include "app/bench_sweep.h"
 #include "app/scene_setup.h"
 #include "renderer/checked_write.h"
@@ -116,20 +121,49 @@ BenchPlan planFor(std::vector<std::string> args, std::string* resumeDir, std::ve
   return plan;
 }
 
-// Runs every cell not in `finished`, case by case, appending each result durably to `jsonl` as it ends;
-// returns how many cells failed. A case that fails (a scene that does not load, a device error) fails its
-// cells and the sweep goes on; a result that cannot be stored (WriteError) ends the sweep.
-size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanContext& ctx, const std::set<size_t>& finished,
+// A cell's round: what results.jsonl records once, and a resume skips.
+using CellRound = std::pair<size_t, uint32_t>;
+
+// A case's reference images and error curves, one per group of cells (bounces, size, spp), made when a cell of
+// the group first needs them: the rounds run a case's cells in mixed order, and a reference made again at
+// every change of group would cost more than the cells.
+struct ReferenceCache {
+  PathTracer& tracer;
+  const BenchPlan& plan;
+  Settings caseSettings;
+  std::map<std::tuple<uint32_t, uint32_t, uint32_t, uint32_t>, std::pair<std::vector<glm::vec3>, std::vector<double>>> made;
+
+  const std::pair<std::vector<glm::vec3>, std::vector<double>>& of(const Settings& cell) {
+    const ReferenceGroup g = referenceGroupOf(cell);
+    const auto key = std::make_tuple(g.bounces, g.width, g.height, g.spp);
+    if (auto it = made.find(key); it != made.end()) return it->second;
+    Settings groupSettings = caseSettings;
+    g.applyTo(groupSettings);
+    std::vector<glm::vec3> reference = renderReference(tracer, groupSettings, plan.referenceSpp);
+    std::vector<double> curve = measureErrorCurve(tracer, groupSettings, plan.timedFrames, reference);
+    return made[key] = {std::move(reference), std::move(curve)};
+  }
+};
+
+// Runs every cell's round not in `finished`, case by case and, within a case, round by round (each round
+// its cells in roundOrder's order), appending each result durably to `jsonl` as it ends; returns how many
+// cells failed. A case that fails (a scene that does not load, a device error) fails its cells and the sweep
+// goes on; a result that cannot be stored (WriteError) ends the sweep. Rounds interleave within a case, not
+// across cases: a case's scene and BVH are built once, and cells are compared within their case.
+size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanContext& ctx, const std::set<CellRound>& finished,
                 AppendFile& jsonl) {
-  size_t total = 0;  // this shard's cells
-  for (size_t i = 0; i < plan.cells.size(); ++i) total += shard.contains(i);
+  size_t total = 0;  // this shard's cells' rounds
+  for (size_t i = 0; i < plan.cells.size(); ++i) total += shard.contains(i) ? plan.rounds : 0;
   size_t done = finished.size(), failed = 0;
   auto start = std::chrono::steady_clock::now();
   for (size_t ci = 0; ci < plan.cases.size(); ++ci) {
-    std::vector<size_t> cells;  // indices into plan.cells
+    std::vector<size_t> cells;  // indices into plan.cells: this case's cells of this shard
     for (size_t i = 0; i < plan.cells.size(); ++i)
-      if (plan.cells[i].caseIndex == ci && shard.contains(i) && !finished.count(i)) cells.push_back(i);
-    if (cells.empty()) continue;
+      if (plan.cells[i].caseIndex == ci && shard.contains(i)) cells.push_back(i);
+    size_t left = 0;
+    for (size_t i : cells)
+      for (uint32_t round = 0; round < plan.rounds; ++round) left += !finished.count({i, round});
+    if (left == 0) continue;
     try {
       Settings caseSettings = plan.cells[cells.front()].settings;
       auto msSince = [](std::chrono::steady_clock::time_point t) {
@@ -145,35 +179,33 @@ size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanCont
                    loaded.scene.name.c_str(), static_cast<unsigned long long>(facts.triangles), facts.bvhBytes / 1e6,
                    facts.bvhBuildMs, facts.wideBvhBytes / 1e6, facts.sceneLoadMs);
       // The reference and the error curve depend on the path length, the image size and the samples per
-      // frame: made again for each group of those (cells of one group are consecutive in the plan). The BVH
-      // layout changes no converged image: one reference serves both.
-      ReferenceGroup referenceGroup;
-      std::vector<glm::vec3> reference;
-      std::vector<double> errorCurve;
-      for (size_t index : cells) {
-        const BenchCell& cell = plan.cells[index];
-        if (const ReferenceGroup group = referenceGroupOf(cell.settings); !(group == referenceGroup)) {
-          referenceGroup = group;
-          Settings groupSettings = caseSettings;
-          group.applyTo(groupSettings);
-          reference = renderReference(tracer, groupSettings, plan.referenceSpp);
-          errorCurve = measureErrorCurve(tracer, groupSettings, plan.timedFrames, reference);
+      // frame; the BVH layout changes no converged image: one reference serves both.
+      ReferenceCache references{tracer, plan, caseSettings, {}};
+      for (uint32_t round = 0; round < plan.rounds; ++round)
+        for (size_t position : roundOrder(cells.size(), round)) {
+          const size_t index = cells[position];
+          if (finished.count({index, round})) continue;
+          const BenchCell& cell = plan.cells[index];
+          const auto& [reference, errorCurve] = references.of(cell.settings);
+          ++done;
+          // The counting frame's figures are no time: the first round measures them, later rounds skip it.
+          CellResult r = measureCell(tracer, cell.settings, plan.warmupFrames, plan.timedFrames, reference, errorCurve,
+                                     plan.detailFrame && round == 0);
+          jsonl.append(benchRecord(index, round, ctx, cell, loaded.view.name, facts, r).dump() + "\n", /*durable=*/true);
+          double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          const std::string later =
+              screenNumber(r.traceAfterFirstMs ? std::optional(r.traceAfterFirstMs->median) : std::nullopt);
+          std::fprintf(stderr, "[%zu/%zu %.0fs] round %u/%u %s@%s %ux%u spp=%u b=%u %-32s frame %.2f ms, trace(b>=1) %s%s%s\n",
+                       done, total, elapsed, round + 1, plan.rounds, loaded.scene.name.c_str(), loaded.view.name.c_str(),
+                       cell.settings.width, cell.settings.height, cell.settings.sppPerFrame, cell.settings.bounces,
+                       cell.label.c_str(), r.frameMs.median, later.c_str(), later == "n/a" ? "" : " ms",
+                       r.policySettled ? "" : " (auto still exploring when timed)");
         }
-        ++done;
-        CellResult r = measureCell(tracer, cell.settings, plan.warmupFrames, plan.timedFrames, reference,
-                                   errorCurve, plan.detailFrame);
-        jsonl.append(benchRecord(index, ctx, cell, loaded.view.name, facts, r).dump() + "\n", /*durable=*/true);
-        double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "[%zu/%zu %.0fs] %s@%s %ux%u spp=%u b=%u %-32s frame %.2f ms, trace(b>=1) %.2f ms\n", done,
-                     total, elapsed, loaded.scene.name.c_str(), loaded.view.name.c_str(),
-                     cell.settings.width, cell.settings.height, cell.settings.sppPerFrame, cell.settings.bounces,
-                     cell.label.c_str(), r.frameMs.median, r.traceAfterFirstMs.median);
-      }
     } catch (const WriteError&) {
       throw;
     } catch (const std::exception& e) {
       failed += cells.size();
-      done += cells.size();
+      done += left;
       std::fprintf(stderr, "raylab bench: case %s@%s failed: %s\n", plan.cases[ci].scene.c_str(),
                    plan.cases[ci].view.c_str(), e.what());
     }
@@ -210,12 +242,14 @@ int runBenchCommand(const std::vector<std::string>& args) {
       return kExitUsage;
     }
   std::filesystem::create_directories(plan.outDir);  // once the sweep is known to run: a refused one leaves no folder
-  const std::string jsonlPath = plan.outDir + "/results.jsonl", csvPath = plan.outDir + "/results.csv";
+  const std::string jsonlPath = plan.outDir + "/results.jsonl";
   size_t failed = 0;
+  std::string resolution;
   try {
-    // results.csv exists only for a sweep that ended: an old one beside a new, unfinished JSONL would lie.
-    std::filesystem::remove(csvPath);
-    std::set<size_t> finished;
+    // results.csv and the other summaries exist only for a sweep that ended: an old one beside a new,
+    // unfinished JSONL would lie.
+    removeSweepSummaries(plan.outDir);
+    std::set<CellRound> finished;
     if (resumeDir.empty()) {
       writeSweepRecord(plan.outDir, plan, recordArgs, shard);
     } else {
@@ -225,16 +259,17 @@ int runBenchCommand(const std::vector<std::string>& args) {
         const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         writeFileChecked(jsonlPath, std::string_view(text).substr(0, old.wholeBytes));
       }
-      for (const nlohmann::json& r : old.records) finished.insert(r.at("cell").get<size_t>());
+      for (const nlohmann::json& r : old.records) finished.insert({r.at("cell").get<size_t>(), roundOf(r)});
       size_t shardCells = 0;
       for (size_t i = 0; i < plan.cells.size(); ++i) shardCells += shard.contains(i);
-      std::fprintf(stderr, "raylab bench: resuming %s: %zu of %zu cells done%s\n", resumeDir.c_str(), finished.size(),
-                   shardCells, old.droppedLastLine ? " (a cut-off last line dropped)" : "");
+      std::fprintf(stderr, "raylab bench: resuming %s: %zu of %zu cell rounds done (%zu cells x %u rounds)%s\n",
+                   resumeDir.c_str(), finished.size(), shardCells * plan.rounds, shardCells, plan.rounds,
+                   old.droppedLastLine ? " (a cut-off last line dropped)" : "");
     }
     AppendFile jsonl(jsonlPath, resumeDir.empty() ? AppendFile::Start::Empty : AppendFile::Start::Keep);
     failed = runCells(plan, shard, ctx, finished, jsonl);
     jsonl.close();
-    writeFileChecked(csvPath, benchCsv(readBenchRecords(jsonlPath).records));
+    resolution = writeSweepSummaries(plan.outDir, readBenchRecords(jsonlPath).records);
   } catch (const WriteError& e) {
     std::fprintf(stderr, "raylab bench: %s\nraylab bench: the cells measured so far are in %s; `raylab bench --resume %s` "
                  "continues the sweep\n", e.what(), jsonlPath.c_str(), plan.outDir.c_str());
@@ -242,9 +277,10 @@ int runBenchCommand(const std::vector<std::string>& args) {
   }
   size_t cells = 0;
   for (size_t i = 0; i < plan.cells.size(); ++i) cells += shard.contains(i);
-  std::printf("bench: %zu cells%s, %zu failed; results in %s/results.csv and results.jsonl\n", cells,
+  std::printf("%sbench: %zu cells%s x %u rounds, %zu failed; results in %s/results.csv and results.jsonl\n",
+              resolution.c_str(), cells,
               shard.whole() ? "" : (" (shard " + shard.text() + " of " + std::to_string(plan.cells.size()) + ")").c_str(),
-              failed, plan.outDir.c_str());
+              plan.rounds, failed, plan.outDir.c_str());
   std::fflush(stdout);  // before the chart script's own lines
   const bool chartsFailed = plan.charts && !drawAndReportCharts(plan.outDir);
   if (ctx.validationErrors() > 0) return kExitValidation;

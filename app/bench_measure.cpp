@@ -8,15 +8,14 @@
 
 namespace raylab {
 
-Spread spreadOf(std::vector<double> v) {
-  Spread s;
-  if (v.empty()) return s;
-  std::sort(v.begin(), v.end());
-  s.min = v.front();
-  s.max = v.back();
-  s.median = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-  return s;
+namespace {
+
+// Whether the next frame's plan measures (auto's warm-up, exploration or probe) rather than decides.
+bool nextPlanMeasures(const PathTracer& tracer, const Settings& s) {
+  return s.sorts() && tracer.sortPolicy().plan(s.sortPolicy, s.bounces).measuring;
 }
+
+}  // namespace
 
 std::vector<double> measureErrorCurve(PathTracer& tracer, const Settings& settings, uint32_t frames,
                                       const std::vector<glm::vec3>& reference) {
@@ -43,9 +42,18 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
   auto start = std::chrono::steady_clock::now();
   for (uint32_t f = 0; f < warmup || std::chrono::steady_clock::now() - start < std::chrono::milliseconds(500); ++f)
     tracer.renderFrame();
+  // auto is timed from the frame its plan stops exploring: timed while it explores, a cell of 8.4M paths read
+  // the unsorted arm's time while its plan sorted every bounce (H200, issue 34).
+  // (A probe frame measures too: timing then starts after it.)
+  for (uint32_t settle = 0; nextPlanMeasures(tracer, settings) && settle < kMaxSettleFrames; ++settle) tracer.renderFrame();
+  if (settings.sorts() && settings.sortPolicy == SortPolicy::Auto) {
+    r.policyFramesBeforeTiming = tracer.sortPolicy().framesSeen();
+    r.policySettled = !nextPlanMeasures(tracer, settings);
+  }
   tracer.restartAccumulation();
 
   std::vector<double> frame, wall, traceLater;
+  bool tracedLater = false;  // some frame had a trace stage of bounce >= 1
   std::map<std::string, std::vector<double>> stages, bounceStages;
   double total = 0.0;
   uint64_t rays = 0;
@@ -60,24 +68,30 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
     for (const StageTime& s : st.stages) {
       perStage[s.stage] += s.ms;
       if (s.bounce >= 0) perBounce[s.stage + "@" + std::to_string(s.bounce)] += s.ms;
-      if (s.stage == "trace" && s.bounce >= 1) later += s.ms;
+      if (s.stage == "trace" && s.bounce >= 1) later += s.ms, tracedLater = true;
     }
     for (const auto& [name, ms] : perStage) stages[name].push_back(ms);
     for (const auto& [name, ms] : perBounce) bounceStages[name].push_back(ms);
     traceLater.push_back(later);
   }
-  r.sortedAfter = tracer.sortPlan().sortAfter;
   r.frameMs = spreadOf(frame);
   r.wallMs = spreadOf(wall);
-  r.traceAfterFirstMs = spreadOf(traceLater);
+  if (tracedLater) r.traceAfterFirstMs = spreadOf(traceLater);
   for (auto& [name, v] : stages) r.stageMs[name] = spreadOf(v);
   for (auto& [name, v] : bounceStages) r.stageBounceMs[name] = spreadOf(v);
   r.raysPerSecond = total > 0.0 ? rays / (total * 1e-3) : 0.0;
-  r.finalRelMse = reference.empty() ? -1.0 : relativeMse(tracer.readRadiance(), reference);
+  if (!reference.empty()) r.finalRelMse = relativeMse(tracer.readRadiance(), reference);
   for (size_t k = 0; k < errorCurve.size(); ++k) {
     r.errorCurveMs.push_back(double(k + 1) * r.frameMs.median);
     r.errorCurveRelMse.push_back(errorCurve[k]);
   }
+
+  // The plan the policy decided on: a probe or exploration frame describes the arm it measures, not the
+  // policy (the counting frame of an auto cell on lavapipe was one, and showed the unsorted coherence).
+  // Untimed frames until the next plan decides; the counting frame renders that plan, since counting frames
+  // are not fed back to the policy (PathTracer).
+  for (uint32_t extra = 0; nextPlanMeasures(tracer, settings) && extra < kMaxSettleFrames; ++extra) tracer.renderFrame();
+  if (settings.sorts()) r.sortedAfter = tracer.sortPolicy().plan(settings.sortPolicy, settings.bounces).sortAfter;
 
   if (!detailFrame) return r;
   // Counting and readbacks slow the frame down, so they get their own frame, outside the timed ones.
@@ -86,6 +100,7 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
   tracer.applySettings(counting);
   tracer.setDetailedStats(true);
   r.detailed = tracer.renderFrame();
+  r.detailMeasured = true;
   tracer.setDetailedStats(false);
   tracer.applySettings(settings);
   return r;
@@ -114,22 +129,25 @@ nlohmann::json toJson(const SceneFacts& f) {
 }
 
 nlohmann::json toJson(const CellResult& r) {
-  auto spread = [](const Spread& s) { return nlohmann::json{{"median", s.median}, {"min", s.min}, {"max", s.max}}; };
+  auto spread = [](const Spread& s) { return toJson(s); };
   nlohmann::json stages;
   for (const auto& [name, s] : r.stageMs) stages[name] = spread(s);
   nlohmann::json bounceStages = nlohmann::json::object();
   for (const auto& [name, s] : r.stageBounceMs) bounceStages[name] = s.median;
   return {{"frame_ms", spread(r.frameMs)},
           {"wall_ms", spread(r.wallMs)},
-          {"trace_after_first_ms", spread(r.traceAfterFirstMs)},
+          {"trace_after_first_ms", r.traceAfterFirstMs ? spread(*r.traceAfterFirstMs) : nlohmann::json(nullptr)},
           {"stage_ms", stages},
           {"stage_bounce_ms", bounceStages},
           {"sorted_after", r.sortedAfter},
           {"rays_per_second", r.raysPerSecond},
           {"error_curve_ms", r.errorCurveMs},
           {"error_curve_rel_mse", r.errorCurveRelMse},
-          {"final_rel_mse", r.finalRelMse},
-          {"detailed_frame", toJson(r.detailed)}};
+          {"final_rel_mse", r.finalRelMse ? nlohmann::json(*r.finalRelMse) : nlohmann::json(nullptr)},
+          {"policy_frames_before_timing",
+           r.policyFramesBeforeTiming ? nlohmann::json(*r.policyFramesBeforeTiming) : nlohmann::json(nullptr)},
+          {"policy_settled", r.policySettled},
+          {"detailed_frame", r.detailMeasured ? toJson(r.detailed) : nlohmann::json(nullptr)}};
 }
 
 }  // namespace raylab

@@ -4,33 +4,43 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "app/bench_spread.h"
 #include "renderer/path_tracer.h"
 
 namespace raylab {
 
-struct Spread {
-  double median = 0.0, min = 0.0, max = 0.0;
-};
-Spread spreadOf(std::vector<double> values);
 
 struct CellResult {
   Spread frameMs;                         // GPU time of the whole frame
   Spread wallMs;
   std::map<std::string, Spread> stageMs;  // per stage name, summed over bounces
   std::map<std::string, Spread> stageBounceMs;  // per "stage@bounce" (bounce-loop stages only)
-  Spread traceAfterFirstMs;               // trace stage, bounces >= 1
+  std::optional<Spread> traceAfterFirstMs;  // trace stage, bounces >= 1 (none: no trace stage of its own,
+                                            // the megakernel and fused trace+shade)
   std::vector<double> errorCurveMs;       // k times the median frame time, k = 1 .. timed frames
   std::vector<double> errorCurveRelMse;   // the case's relative MSE after k frames (same for every cell)
-  double finalRelMse = -1.0;              // this cell's own image after its timed frames
+  std::optional<double> finalRelMse;      // this cell's own image after its timed frames (none: no reference)
   double raysPerSecond = 0.0;
   FrameStats detailed;                    // the counting/detailed frame
-  std::vector<bool> sortedAfter;          // the sort policy's plan in the last timed frame (empty: no sort)
+  bool detailMeasured = false;            // whether it was rendered (else `detailed` is empty: null in JSON)
+  // The sort policy's decided plan after the timed frames (empty: no sort): auto's first plan after them that
+  // does not measure (SortPlan::measuring), the one its counting frame renders.
+  std::vector<bool> sortedAfter;
+  // auto only: the frames its model had seen when the timed frames began (it had stopped exploring), and
+  // whether it had (false: it still explored after kMaxSettleFrames warm-up frames; the times mix arms).
+  std::optional<uint32_t> policyFramesBeforeTiming;
+  bool policySettled = true;
 };
+
+// The most frames a cell of the auto policy runs after its warm-up waiting for its plan to stop exploring (it
+// needs SortPolicyModel::kColdFrames + 2 * kMinSamples = 6 frames from a reset).
+inline constexpr uint32_t kMaxSettleFrames = 256;
 
 // What a case's scene costs before any frame: its size, its BVH (what the trace stage reads: nodes and the
 // triangles in BVH order) and the host time to make the scene and to set the tracer up (BVH build, uploads,
@@ -53,7 +63,8 @@ nlohmann::json toJson(const SceneFacts& f);
 
 // The timed frames run back to back with no readback between them: host gaps let a GPU drop its clocks,
 // which was seen to slow later cells of a sweep two- to fourfold on an H100. Warm-up lasts at least
-// `warmup` frames and half a second. `errorCurve` is the case's relative MSE after k frames: sorting never
+// `warmup` frames and half a second, and with the auto policy until its plan stops exploring (it is timed
+// once it has decided, not while it measures its arms; issue 34). `errorCurve` is the case's relative MSE after k frames: sorting never
 // changes the image (tested bit for bit), so every cell shares it and only its time axis differs.
 CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t warmup, uint32_t timed,
                        const std::vector<glm::vec3>& reference, const std::vector<double>& errorCurve,

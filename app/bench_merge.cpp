@@ -9,6 +9,7 @@
 #include "app/bench_charts_run.h"
 #include "app/bench_results.h"
 #include "app/bench_resume.h"
+#include "app/bench_rounds.h"
 #include "app/cli_options.h"
 #include "app/scene_setup.h"
 #include "renderer/checked_write.h"
@@ -74,22 +75,25 @@ std::vector<nlohmann::json> mergedRecords(const std::vector<Shard>& shards) {
       throw UsageError("shard " + std::to_string(i) + "/" + std::to_string(count) + " is missing: merge all " +
                        std::to_string(count) + " shards of the sweep");
   const size_t cells = first.record.definition.at("cells").size();
-  std::map<size_t, nlohmann::json> byCell;  // of a cell recorded twice (a resumed cell), the last record
+  // Folders from before rounds have no "rounds": one round.
+  const uint32_t rounds = first.record.definition.value("rounds", 1u);
+  // Of a cell's round recorded twice (a resumed cell), the last record.
+  std::map<std::pair<size_t, uint32_t>, nlohmann::json> byCell;
   for (const Shard& s : shards) {
-    std::set<size_t> own;
+    std::set<std::pair<size_t, uint32_t>> own;
     for (const nlohmann::json& r : s.records) {
       const size_t cell = r.at("cell").get<size_t>();
-      if (cell >= cells || !s.record.shard.contains(cell))
-        throw UsageError(s.dir + "/results.jsonl has cell " + std::to_string(cell) + ", which is not shard " +
-                         s.record.shard.text() + "'s (a damaged folder?)");
-      own.insert(cell);
-      byCell[cell] = r;
+      if (cell >= cells || !s.record.shard.contains(cell) || roundOf(r) >= rounds)
+        throw UsageError(s.dir + "/results.jsonl has cell " + std::to_string(cell) + " round " + std::to_string(roundOf(r)) +
+                         ", which is not shard " + s.record.shard.text() + "'s (a damaged folder?)");
+      own.insert({cell, roundOf(r)});
+      byCell[{cell, roundOf(r)}] = r;
     }
     size_t expected = 0;
-    for (size_t c = 0; c < cells; ++c) expected += s.record.shard.contains(c);
+    for (size_t c = 0; c < cells; ++c) expected += s.record.shard.contains(c) ? rounds : 0;
     if (own.size() != expected)
       throw UsageError(s.dir + " (shard " + s.record.shard.text() + ") has " + std::to_string(own.size()) + " of its " +
-                       std::to_string(expected) + " cells: finish it first (raylab bench --resume " + s.dir + ")");
+                       std::to_string(expected) + " cell rounds: finish it first (raylab bench --resume " + s.dir + ")");
   }
   std::vector<nlohmann::json> out;
   for (auto& [cell, r] : byCell) out.push_back(std::move(r));
@@ -119,6 +123,7 @@ int runBenchMerge(const std::vector<std::string>& args) {
     return kExitUsage;
   }
   const std::string& out = request.outDir;
+  std::string resolution;
   try {
     std::filesystem::create_directories(out);
     SweepRecord whole = shards.front().record;
@@ -127,7 +132,7 @@ int runBenchMerge(const std::vector<std::string>& args) {
     std::string jsonl;
     for (const nlohmann::json& r : records) jsonl += r.dump() + "\n";
     writeFileChecked(out + "/results.jsonl", jsonl);
-    writeFileChecked(out + "/results.csv", benchCsv(records));
+    resolution = writeSweepSummaries(out, records);
   } catch (const WriteError& e) {
     std::fprintf(stderr, "raylab bench: --merge: %s\n", e.what());
     return kExitFailure;
@@ -135,7 +140,7 @@ int runBenchMerge(const std::vector<std::string>& args) {
     std::fprintf(stderr, "raylab bench: --merge: %s\n", e.what());
     return kExitFailure;
   }
-  std::printf("bench: merged %zu shards, %zu cells, into %s/results.csv and results.jsonl\n", shards.size(),
+  std::printf("%sbench: merged %zu shards, %zu cells, into %s/results.csv and results.jsonl\n", resolution.c_str(), shards.size(),
               records.size(), out.c_str());
   std::fflush(stdout);
   return !request.charts || drawAndReportCharts(out) ? kExitOk : kExitFailure;

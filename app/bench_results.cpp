@@ -1,10 +1,15 @@
 #include "app/bench_results.h"
 
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "app/bench_resolution.h"
+#include "app/bench_rounds.h"
+#include "renderer/checked_write.h"
+#include "app/bench_spread.h"
 #include "renderer/git_revision.h"
 #include "renderer/settings_table.h"
 #include "renderer/stages.h"
@@ -44,22 +49,29 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   row.add("paths_per_frame", uint64_t(s.width) * s.height * s.sppPerFrame);
   row.add("ser_reordering_hint", s.reordersInHardware() ? ctx.info().serReorderingHint : "");
   row.add("label", csvQuote(cell.label));
+  // One round's times; the sweep's CSV replaces them with the medians and spreads over the rounds
+  // (cellSummaries). Not measured is an empty cell, never 0 or -1 (issue 34): the megakernel and fused
+  // trace+shade have no trace of bounces >= 1, a cell has no time of a stage it does not run.
   row.add("frame_ms_median", r.frameMs.median).add("frame_ms_min", r.frameMs.min).add("frame_ms_max", r.frameMs.max);
-  row.add("trace_after_first_ms", r.traceAfterFirstMs.median);
+  row.add("trace_after_first_ms", csvNumber(r.traceAfterFirstMs ? std::optional(r.traceAfterFirstMs->median) : std::nullopt));
   for (const StageInfo& st : kStages)
-    row.add(std::string(st.name) + "_ms", r.stageMs.count(st.name) ? r.stageMs.at(st.name).median : 0.0);
-  // Figures of our traversal loop do not exist with the rt tracer: written as n/a, never as numbers.
-  auto loop = [&](double v) { return r.detailed.traversalStatsUnavailable.empty() ? std::to_string(v) : std::string("n/a"); };
+    row.add(std::string(st.name) + "_ms",
+            csvNumber(r.stageMs.count(st.name) ? std::optional(r.stageMs.at(st.name).median) : std::nullopt));
+  // Figures of our traversal loop do not exist with the rt tracer, and none without the counting frame.
+  auto loop = [&](double v) {
+    return csvNumber(r.detailed.traversalStatsUnavailable.empty() ? measuredOrNone(v) : std::nullopt);
+  };
   row.add("rays_per_second", r.raysPerSecond);
   row.add("simt_efficiency", loop(meanOverBounces(b, &BounceStats::simtEfficiency, false)));
   row.add("virtual_warp_efficiency", loop(meanOverBounces(b, &BounceStats::virtualWarpEfficiency, false)));
   row.add("virtual_warp_efficiency_after_first", loop(meanOverBounces(b, &BounceStats::virtualWarpEfficiency, true)));
-  row.add("prediction_error_mean", meanOverBounces(b, &BounceStats::predictionErrorMean, true));
-  row.add("prediction_error_median", meanOverBounces(b, &BounceStats::predictionErrorMedian, true));
-  row.add("cell_hit_rate", meanOverBounces(b, &BounceStats::cellHitRate, true));
-  row.add("key_bits", r.detailed.keyBits).add("length_cache_bytes", r.detailed.lengthCacheBytes);
-  row.add("final_rel_mse", r.finalRelMse);
-  // Which bounces the policy sorted after in the last timed frame, e.g. "YNY-" (- : the last bounce).
+  row.add("prediction_error_mean", csvNumber(measuredOrNone(meanOverBounces(b, &BounceStats::predictionErrorMean, true))));
+  row.add("prediction_error_median", csvNumber(measuredOrNone(meanOverBounces(b, &BounceStats::predictionErrorMedian, true))));
+  row.add("cell_hit_rate", csvNumber(measuredOrNone(meanOverBounces(b, &BounceStats::cellHitRate, true))));
+  auto detail = [&](double v) { return csvNumber(r.detailMeasured ? std::optional(v) : std::nullopt); };
+  row.add("key_bits", detail(r.detailed.keyBits)).add("length_cache_bytes", detail(double(r.detailed.lengthCacheBytes)));
+  row.add("final_rel_mse", csvNumber(r.finalRelMse));
+  // Which bounces the policy's decided plan sorts after, e.g. "YNY-" (- : the last bounce).
   std::string sortedAfter;
   for (size_t k = 0; k < r.sortedAfter.size(); ++k) sortedAfter += k + 1 == r.sortedAfter.size() ? '-' : r.sortedAfter[k] ? 'Y' : 'N';
   row.add("sorted_after", sortedAfter);
@@ -72,10 +84,11 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
 
 }  // namespace
 
-nlohmann::json benchRecord(size_t cellIndex, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
+nlohmann::json benchRecord(size_t cellIndex, uint32_t round, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
                            const SceneFacts& scene, const CellResult& r) {
   const Settings& s = cell.settings;
   return {{"cell", cellIndex},
+          {"round", round},
           {"paths_per_frame", uint64_t(s.width) * s.height * s.sppPerFrame},
           {"device", toJson(ctx.info())},
           {"git_revision", gitRevision()},
@@ -115,17 +128,41 @@ BenchRecords readBenchRecords(const std::string& path) {
 }
 
 std::string benchCsv(const std::vector<nlohmann::json>& records) {
-  std::map<size_t, const nlohmann::json*> byCell;
-  for (const nlohmann::json& r : records) byCell[r.at("cell").get<size_t>()] = &r.at("csv");
   const std::vector<std::string> columns = benchCsvColumns();
   std::string csv;
   for (size_t i = 0; i < columns.size(); ++i) csv += (i ? "," : "") + columns[i];
   csv += "\n";
-  for (const auto& [cell, values] : byCell) {
-    for (size_t i = 0; i < columns.size(); ++i) csv += (i ? "," : "") + values->value(columns[i], std::string());
+  for (const nlohmann::json& cell : cellSummaries(records)) {
+    const nlohmann::json& values = cell.at("csv");
+    for (size_t i = 0; i < columns.size(); ++i) csv += (i ? "," : "") + values.value(columns[i], std::string());
     csv += "\n";
   }
   return csv;
+}
+
+std::string cellsJsonl(const std::vector<nlohmann::json>& records) {
+  std::string text;
+  for (const nlohmann::json& cell : cellSummaries(records)) text += cell.dump() + "\n";
+  return text;
+}
+
+namespace {
+const char* const kSummaryFiles[] = {"results.csv", "cells.jsonl", "resolution.txt"};
+}  // namespace
+
+std::string writeSweepSummaries(const std::string& dir, const std::vector<nlohmann::json>& records) {
+  const std::vector<nlohmann::json> cells = cellSummaries(records);
+  std::string jsonl;
+  for (const nlohmann::json& cell : cells) jsonl += cell.dump() + "\n";
+  const std::string resolution = resolutionText(cells);
+  writeFileChecked(dir + "/results.csv", benchCsv(records));
+  writeFileChecked(dir + "/cells.jsonl", jsonl);
+  writeFileChecked(dir + "/resolution.txt", resolution);
+  return resolution;
+}
+
+void removeSweepSummaries(const std::string& dir) {
+  for (const char* name : kSummaryFiles) std::filesystem::remove(dir + "/" + name);
 }
 
 }  // namespace raylab

@@ -15,9 +15,9 @@
 
 namespace raylab {
 
-// One results.jsonl line: "cell" (its index in the plan), paths_per_frame (width x height x spp), device,
+// One results.jsonl line, one round of one cell: "cell" (its index in the plan), "round" (0-based), paths_per_frame (width x height x spp), device,
 // git_revision, view, label, settings, scene, result, and "csv" (column name -> the CSV's text).
-nlohmann::json benchRecord(size_t cellIndex, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
+nlohmann::json benchRecord(size_t cellIndex, uint32_t round, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
                            const SceneFacts& scene, const CellResult& r);
 
 struct BenchRecords {
@@ -31,8 +31,18 @@ BenchRecords readBenchRecords(const std::string& path);
 
 // The CSV's columns, in order.
 std::vector<std::string> benchCsvColumns();
-// results.csv: the header, then one row per cell in plan order (by "cell"; of a cell recorded twice, the
-// last record).
+// results.csv: the header, then one row per cell in plan order, its rounds made one (cellSummaries in
+// app/bench_rounds.h: times are medians over the rounds, with their spread).
 std::string benchCsv(const std::vector<nlohmann::json>& records);
+// cells.jsonl: one line per cell in plan order, its rounds made one (cellSummaries); what the charts and
+// the study's report read.
+std::string cellsJsonl(const std::vector<nlohmann::json>& records);
+
+// What a finished sweep (or a merge) writes from its records: DIR/results.csv, DIR/cells.jsonl and
+// DIR/resolution.txt (app/bench_resolution.h), each through writeFileChecked (throws WriteError); returns the
+// resolution's text, which the bench prints.
+std::string writeSweepSummaries(const std::string& dir, const std::vector<nlohmann::json>& records);
+// Removes them: a sweep that starts or resumes has not ended.
+void removeSweepSummaries(const std::string& dir);
 
 }  // namespace raylab

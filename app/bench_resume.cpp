@@ -27,6 +27,7 @@ nlohmann::json sweepDefinition(const BenchPlan& plan) {
           {"timed_frames", plan.timedFrames},
           {"warmup_frames", plan.warmupFrames},
           {"reference_spp", plan.referenceSpp},
+          {"rounds", plan.rounds},
           {"detail_frame", plan.detailFrame}};
 }
 
@@ -75,7 +76,7 @@ std::string resumeRefusal(const SweepRecord& recorded, const BenchPlan& plan) {
     return differs + "cell " + std::to_string(i + 1) + " is '" + there + "' there and '" + here + "' here" +
            (there == here ? " with other settings" : "");
   }
-  for (const char* key : {"timed_frames", "warmup_frames", "reference_spp", "detail_frame", "cases"})
+  for (const char* key : {"timed_frames", "warmup_frames", "reference_spp", "rounds", "detail_frame", "cases"})
     if (!was.contains(key) || !same(was[key], now[key]))
       return differs + key + " is " + (was.contains(key) ? was[key].dump() : "missing") + " there and " + now[key].dump() + " here";
   return differs + "its definition differs";

@@ -215,6 +215,7 @@ bool parseSweepFlag(const std::string& flag, const std::string& v, BenchPlan& pl
   else if (flag == "--timed-frames") plan.timedFrames = parseUint(flag, v, 1, 10000);
   else if (flag == "--warmup") plan.warmupFrames = parseUint(flag, v, 0, 10000);
   else if (flag == "--reference-spp") plan.referenceSpp = parseUint(flag, v, 1, 1 << 16);
+  else if (flag == "--rounds") plan.rounds = parseUint(flag, v, 1, kMaxRounds);
   else if (flag == "--out-dir") plan.outDir = v;
   else {
     for (const SettingRow& r : settingRows())

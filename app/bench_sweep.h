@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "app/bench_rounds.h"
 #include "app/cli_options.h"
 
 namespace raylab {
@@ -27,6 +28,7 @@ struct BenchPlan {
   uint32_t timedFrames = 8;
   uint32_t warmupFrames = 2;
   uint32_t referenceSpp = 64;
+  uint32_t rounds = kDefaultRounds;  // every cell once per round, in another order each round (bench_rounds.h)
   bool detailFrame = true;  // one untimed counting/readback frame per cell (SIMT, warp efficiency, accuracy)
   bool charts = true;       // draw the charts at the end (app/bench_charts.py); --no-charts: the CSV only
   std::string outDir = "bench-out";

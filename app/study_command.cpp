@@ -26,20 +26,31 @@
 namespace raylab {
 namespace {
 
-const char* kStudyHelp =
+// The help: what --quick changes is made from the presets (app/study_plan.cpp), not written here again.
+std::string studyHelp() {
+  return
     "usage: raylab study SCENE[@VIEW] [--quick] [--out-dir DIR] [--sizes WxH,...] [--bounces N,...]\n"
-    "                    [--strategies a,b,...] [--device NAME|N] [--validate[=sync|gpu-av]] [--shard i/K]\n"
-    "       raylab study temple --thesis [--out-dir DIR] [--device NAME|N]\n"
+    "                    [--strategies a,b,...] [--rounds N] [--device NAME|N] [--validate[=sync|gpu-av]]\n"
+    "                    [--shard i/K]\n"
+    "       raylab study temple --thesis [--out-dir DIR] [--rounds N] [--device NAME|N]\n"
     "       raylab study --merge DIR... [--out-dir OUT]\n"
     "  --out-dir DIR       where the study goes (default study-out, in the current folder)\n"
     "Where sorting pays on one scene: one `raylab bench` sweep per image size (paths per frame from 131k to\n"
-    "8.4M), 4 and 8 bounces, the strategies dead-last, fixed, two-point and average with the always and auto\n"
-    "policies, the megakernel and the unsorted wavefront (split and fused) as baselines; then one HTML report\n"
-    "(DIR/report.html, charts embedded) from app/study_report.py. --quick: sizes 512x256, 2048x1024 and\n"
-    "4096x2048, 4 bounces, fixed and two-point. On a CPU device the sizes shrink to what it can do (the report\n"
-    "says so). SCENE is any --scene value (temple, a .gltf path, ...). Each size's results stay in\n"
+    "8.4M), the strategies with the always and auto policies, the megakernel and the unsorted wavefront (split\n"
+    "and fused) as baselines; then one HTML report\n"
+    "(DIR/report.html, charts embedded) from app/study_report.py. The presets (a CPU device gets sizes it renders\n"
+    "in minutes; --quick fewer sizes, bounces and strategies; the report's top says which ran):\n"
+    "  GPU:          " + presetText(studyPreset(false, false)) + "\n"
+    "  CPU:          " + presetText(studyPreset(false, true)) + "\n"
+    "  --quick, GPU: " + presetText(studyPreset(true, false)) + "\n"
+    "  --quick, CPU: " + presetText(studyPreset(true, true)) + "\n"
+    "Every cell is measured in interleaved rounds (raylab bench --rounds); the report's times are medians over the\n"
+    "rounds with their spread, and it says where a difference is within the spread. The auto policy is timed\n"
+    "once its plan stops exploring.\n"
+    "SCENE is any --scene value (temple, a .gltf path, ...). Each size's results stay in\n"
     "DIR/size-WxH/ (results.csv, results.jsonl): a size that is killed continues with\n"
     "`raylab bench --resume DIR/size-WxH`; DIR/study.json records the study.\n"
+    "  --rounds N          rounds per cell, 1.." + std::to_string(kMaxRounds) + " (default: the preset's)\n"
     "  --shard i/K         run only the study's cells g (0-based: the sizes in order, each size's bench cells\n"
     "                      in plan order) with g mod K = i, 0 <= i < K: one of K disjoint parts, for K GPUs\n"
     "                      or hosts (every shard with the same flags but --out-dir and --device); writes the\n"
@@ -53,6 +64,7 @@ const char* kStudyHelp =
     "  --merge DIR...      put the K shard folders of one study back together in OUT (default study-out):\n"
     "                      each size with `raylab bench --merge`, then the report; refuses folders of other\n"
     "                      studies, a shard missing or given twice (exit 2)\n";
+}
 
 StudyOptions parseStudyOptions(const std::vector<std::string>& args) {
   StudyOptions o;
@@ -68,6 +80,7 @@ StudyOptions parseStudyOptions(const std::vector<std::string>& args) {
     else if (a == "--sizes") o.sizes = splitList(value());
     else if (a == "--bounces") o.bounces = value();
     else if (a == "--strategies") o.strategies = value();
+    else if (a == "--rounds") o.rounds = std::to_string(parseUint(a, value(), 1, kMaxRounds));
     else if (a == "--device") o.device = value();
     else if (a == "--shard") o.shard = parseShard(value());
     else if (a == "--validate" || a.rfind("--validate=", 0) == 0) o.passOn.push_back(a);
@@ -226,7 +239,7 @@ int runStudyMerge(const std::vector<std::string>& args) {
 
 int runStudyCommand(const std::vector<std::string>& args) {
   if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
-    std::printf("%s", kStudyHelp);
+    std::printf("%s", studyHelp().c_str());
     return kExitOk;
   }
   if (std::find(args.begin(), args.end(), "--merge") != args.end()) return runStudyMerge(args);
@@ -243,6 +256,7 @@ int runStudyCommand(const std::vector<std::string>& args) {
     if (cpu && o.sizes.empty())
       note = "Measured on a CPU device: the sizes are ones it renders in minutes (up to " + plan.back().size +
              "), far below where sorting pays on a GPU.";
+    if (o.quick) note += (note.empty() ? "" : " ") + quickText(cpu) + ".";
   } catch (const UsageError& e) {
     printUsageError("raylab study", e.what());
     return kExitUsage;

@@ -18,9 +18,14 @@ namespace raylab {
 // The standard study (issue 22) before --sizes, --bounces and --strategies.
 struct StudyPreset {
   std::vector<std::string> sizes;
-  std::string bounces, strategies, timedFrames, warmup;
+  std::string bounces, strategies, timedFrames, warmup, rounds;
 };
 StudyPreset studyPreset(bool quick, bool cpuDevice);
+// A preset in words: "sizes 512x256, 2048x1024; 4 bounces; fixed, two-point; 6 timed frames after 3 warm-up;
+// 3 rounds".
+std::string presetText(const StudyPreset& preset);
+// What --quick changes on a GPU or CPU device, from the presets themselves: for --help and the report's top.
+std::string quickText(bool cpuDevice);
 
 struct StudyOptions {
   std::string target;  // SCENE[@VIEW]
@@ -29,6 +34,7 @@ struct StudyOptions {
   bool thesis = false;              // --thesis: the source study's table (app/study_thesis.h)
   std::vector<std::string> sizes;   // --sizes: the preset's otherwise
   std::string bounces, strategies;  // --bounces, --strategies: the preset's otherwise
+  std::string rounds;               // --rounds: the preset's otherwise
   std::string device;
   std::vector<std::string> passOn;  // --validate flags, given to every bench run
   BenchShard shard;                 // --shard i/K (0/1: the whole study)

@@ -16,7 +16,10 @@ in plain words, then:
   - the device, driver, revision and the exact commands.
 "Sorted" means a wavefront cell with a key strategy that sorted (policy always, or auto where it chose to); "unsorted" the
 wavefront without a strategy (split or fused, compacted or not: the best of those measured). Figures are
-medians of the timed frames of one run: compare ratios within a report, not across machines.
+medians over the sweep's rounds (each round's own median of its timed frames; raylab bench --rounds), shown with
+their spread over the rounds [min-max]; where two spreads overlap the report calls the difference "not
+distinguishable here" instead of naming a winner (app/bench_cells.py's rule, the bench's own). Compare ratios
+within a report, not across machines. Not measured is "n/a".
 Needs Debian's python3-matplotlib; exits 2 with a message when the folders hold no usable cells.
 """
 import base64
@@ -40,6 +43,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checked_write import write_with  # noqa: E402  (app/checked_write.py, beside this script)
+from bench_cells import NotABenchFolder, distinguishable, load_cells, rounds_of, spread  # noqa: E402
 
 
 def fail(message):
@@ -51,24 +55,16 @@ def load(folders):
     """Every cell of every folder, with its sweep's args and revision."""
     cells, sweeps = [], []
     for folder in folders:
-        path = os.path.join(folder, "results.jsonl")
-        if not os.path.isfile(path):
-            fail(f"{folder} has no results.jsonl (not a raylab bench folder?)")
         sweep_path = os.path.join(folder, "sweep.json")
         sweep = {}
         if os.path.isfile(sweep_path):
             with open(sweep_path) as f:
                 sweep = json.load(f)
         sweeps.append({"folder": folder, "args": sweep.get("args", []), "revision": sweep.get("git_revision", "?")})
-        with open(path) as f:
-            for number, line in enumerate(f, 1):
-                if not line.strip():
-                    continue
-                try:
-                    cell = json.loads(line)
-                except json.JSONDecodeError as e:
-                    fail(f"{path}:{number}: not a JSON line ({e.msg})")
-                cells.append(cell)
+        try:
+            cells.extend(load_cells(folder))  # one record per cell, its rounds made one
+        except (NotABenchFolder, ValueError) as e:
+            fail(str(e))
     if not cells:
         fail("no cells in " + ", ".join(folders))
     return cells, sweeps
@@ -120,6 +116,9 @@ def describe(cell):
         "policy": policy,
         "label": cell.get("label", ""),
         "frame_ms": num(r["frame_ms"]["median"]),
+        "frame": spread(r["frame_ms"]),  # (median, min, max) over the rounds
+        "trace": spread((r.get("stage_ms") or {}).get("trace")),
+        "rounds": rounds_of(cell),
         "stage_ms": r.get("stage_ms", {}),
         "stage_bounce_ms": r.get("stage_bounce_ms", {}),
         "rel_mse": num(r.get("final_rel_mse")),
@@ -181,19 +180,58 @@ def verdict(points):
     p, s, u, m = usable[-1]
     speedup = u["frame_ms"] / s["frame_ms"]
     text = []
+    # Counts where the best sorted and unsorted frames are within each other's spread: no winner there.
+    unresolved = [q for q, s_, u_, _ in usable if not distinguishable(s_["frame"], u_["frame"])]
     if pays_from is None:
         text.append(f"sorting does not pay at any measured path count (up to {paths_text(ratios[-1][0])} paths per frame)")
     elif pays_from == ratios[0][0]:
         text.append(f"sorting pays at every measured path count, from {paths_text(pays_from)} paths per frame")
     else:
         text.append(f"sorting pays from about {paths_text(pays_from)} paths per frame")
-    mega = f" and {m['frame_ms'] / s['frame_ms']:.2f}x that of the megakernel ({m['frame_ms']:.2f} ms)" if m else ""
+    if unresolved:
+        text.append("the best sorted and unsorted frames are not distinguishable here (their spreads over the rounds "
+                    "overlap) at " + ", ".join(paths_text(q) for q in unresolved) + " paths")
+    mega = ""
+    if m:
+        mega = (f" and {m['frame_ms'] / s['frame_ms']:.2f}x that of the megakernel ({spread_text(m['frame'])} ms"
+                + ("" if distinguishable(m["frame"], s["frame"]) else ", not distinguishable from it here") + ")")
     sorted_text = f", sorting after {s['sorted_after']} of {s['sortable']} bounces" if s["policy"] == "auto" else ""
     text.append(f"at {paths_text(p)} paths the best sorted frame ({s['strategy']} keys, policy {s['policy']}"
-                f"{sorted_text}, {s['frame_ms']:.2f} ms) runs at {speedup:.2f}x the speed of the best unsorted frame "
-                f"({u['frame_ms']:.2f} ms){mega}")
+                f"{sorted_text}, {spread_text(s['frame'])} ms) runs at {speedup:.2f}x the speed of the best unsorted "
+                f"frame ({spread_text(u['frame'])} ms"
+                + ("" if distinguishable(s["frame"], u["frame"]) else ", not distinguishable here") + f"){mega}")
     text.append(limit(s, u))
     return "; ".join(text)
+
+
+def spread_text(sp):
+    """'12.3 [11.0-13.5]': a median with its spread over the rounds; the median alone with one round."""
+    median, lo, hi = sp
+    if median is None:
+        return "n/a"
+    return f"{median:.2f}" + (f" [{lo:.2f}-{hi:.2f}]" if lo is not None and hi is not None else "")
+
+
+def policies(by_group):
+    """Per group at its largest path count: (best always row, best auto row) among the sorted configurations."""
+    out = {}
+    for key, by_paths in by_group.items():
+        p = max(by_paths)
+        rows = [r for kind in ("sorted", "never") for r in by_paths[p].get(kind, [])]
+        out[key] = (p, best([r for r in rows if r["policy"] == "always"]), best([r for r in rows if r["policy"] == "auto"]))
+    return out
+
+
+def policy_text(p, always, auto):
+    if not always or not auto:
+        return "no always and auto cells to compare"
+    if not distinguishable(always["frame"], auto["frame"]):
+        verdict = "not distinguishable here (the spreads over the rounds overlap)"
+    else:
+        verdict = ("auto is faster" if auto["frame_ms"] < always["frame_ms"] else "always is faster")
+    return (f"at {paths_text(p)} paths, always ({always['strategy']}) {spread_text(always['frame'])} ms against auto "
+            f"({auto['strategy']}, sorting after {auto['sorted_after']} of {auto['sortable']} bounces) "
+            f"{spread_text(auto['frame'])} ms: {verdict}")
 
 
 def sorting_cost(stage_ms):
@@ -208,11 +246,15 @@ def limit(s, u):
     """What limits the gain, from the stage times of the best sorted and unsorted cells."""
     cost = sorting_cost(s["stage_ms"])
     saved = path_work(u["stage_ms"]) - path_work(s["stage_ms"])
+    trace_note = ""
+    if s["trace"][0] is not None and u["trace"][0] is not None and not distinguishable(s["trace"], u["trace"]):
+        trace_note = (f" (their trace times, sorted {spread_text(s['trace'])} and unsorted {spread_text(u['trace'])} ms, "
+                      "are not distinguishable here)")
     if saved <= 0:
-        return f"sorting saves no trace or shade time here and costs {cost:.2f} ms a frame"
+        return f"sorting saves no trace or shade time here and costs {cost:.2f} ms a frame{trace_note}"
     share = cost / saved
     return (f"sorting costs {cost:.2f} ms a frame (keys, sort, reorder, learning) against {saved:.2f} ms it saves in "
-            f"trace and shade: its cost takes {share * 100:.0f}% of the saving")
+            f"trace and shade: its cost takes {share * 100:.0f}% of the saving{trace_note}")
 
 
 def png(fig):
@@ -222,21 +264,32 @@ def png(fig):
     return "data:image/png;base64," + base64.b64encode(data.getvalue()).decode()
 
 
+def ratio_error(a, b):
+    """The error bar of a / b: from the fastest a over the slowest b to the slowest a over the fastest b (the
+    spreads over the rounds); none where a spread was not measured (one round)."""
+    ratio = a["frame_ms"] / b["frame_ms"]
+    (_, alo, ahi), (_, blo, bhi) = a["frame"], b["frame"]
+    if None in (alo, ahi, blo, bhi) or blo <= 0 or bhi <= 0:
+        return 0.0, 0.0
+    return max(0.0, ratio - alo / bhi), max(0.0, ahi / blo - ratio)
+
+
 def crossover_chart(cross):
     fig, ax = plt.subplots(figsize=(7, 4.2))
     for (scene, view, bounces), points in sorted(cross.items()):
-        xs = [p for p, s, u, _ in points if s and u]
-        ax.plot(xs, [s["frame_ms"] / u["frame_ms"] for p, s, u, _ in points if s and u], "o-",
-                label=f"sorted, {bounces} bounces")
-        xm = [p for p, _, u, m in points if m and u]
-        if xm:
-            ax.plot(xm, [m["frame_ms"] / u["frame_ms"] for p, _, u, m in points if m and u], "s--",
-                    label=f"megakernel, {bounces} bounces")
+        for pick, style, name in ((lambda s, m: s, "o-", "sorted"), (lambda s, m: m, "s--", "megakernel")):
+            pts = [(p, pick(s, m), u) for p, s, u, m in points if pick(s, m) and u]
+            if not pts:
+                continue
+            errors = [ratio_error(a, u) for _, a, u in pts]
+            ax.errorbar([p for p, _, _ in pts], [a["frame_ms"] / u["frame_ms"] for _, a, u in pts],
+                        yerr=[[e[0] for e in errors], [e[1] for e in errors]], fmt=style, capsize=3,
+                        label=f"{name}, {bounces} bounces")
     ax.axhline(1.0, color="gray", lw=0.8)
     ax.set_xscale("log")
     ax.set_xlabel("paths per frame")
     ax.set_ylabel("frame time / best unsorted frame")
-    ax.set_title("Below 1: faster than the best unsorted wavefront")
+    ax.set_title("Below 1: faster than the best unsorted wavefront (bars: spread over the rounds)", fontsize=9)
     ax.legend(fontsize=8)
     fig.tight_layout()
     return png(fig)
@@ -247,9 +300,11 @@ def accuracy_chart(rows):
     for r in rows:
         if math.isnan(r["prediction_error"]) or r["prediction_error"] < 0:
             continue
-        ax.scatter(r["frame_ms"], r["prediction_error"], s=25)
+        lo, hi = r["frame"][1], r["frame"][2]
+        xerr = [[r["frame_ms"] - lo], [hi - r["frame_ms"]]] if lo is not None and hi is not None else None
+        ax.errorbar(r["frame_ms"], r["prediction_error"], xerr=xerr, fmt="o", capsize=3)
         ax.annotate(f"{r['strategy']} {r['policy']} b{r['bounces']}", (r["frame_ms"], r["prediction_error"]), fontsize=7)
-    ax.set_xlabel("frame ms (median)")
+    ax.set_xlabel("frame ms (median over the rounds, bars: min-max)")
     ax.set_ylabel("mean prediction error of the end point")
     ax.set_title("Speed against prediction accuracy (largest path count)")
     fig.tight_layout()
@@ -326,17 +381,23 @@ def report(out_path, folders, note=""):
     if note:
         parts.append(f"<p><b>{html.escape(note)}</b></p>")
     parts.append("<h2>Verdict</h2><ul>")
+    by_policy = policies(by_group)
     for key in sorted(cross):
         parts.append(f"<li><b>{html.escape(key[0])}@{html.escape(key[1])}, {key[2]} bounces</b>: "
-                     f"{html.escape(verdict(cross[key]))}.</li>")
+                     f"{html.escape(verdict(cross[key]))}. Policy: {html.escape(policy_text(*by_policy[key]))}.</li>")
     parts.append("</ul>")
+    rounds = sorted({r["rounds"] for r in rows})
+    parts.append("<p>" + html.escape(
+        f"Each cell was measured in {'/'.join(map(str, rounds))} interleaved round(s); times are medians over the "
+        "rounds with their spread [min-max]" + ("" if rounds != [1] else
+                                                 ": one round shows no spread, so no difference is resolved")) + ".</p>")
 
     parts.append("<h2>Crossover</h2>")
     parts.append(f'<img alt="crossover" src="{crossover_chart(cross)}">')
     parts.append(table(["scene", "bounces", "paths", "best sorted ms", "best unsorted ms", "megakernel ms",
                         "sorted / unsorted", "best sorted cell"],
-                       [(f"{k[0]}@{k[1]}", k[2], paths_text(p), fmt(s and s["frame_ms"], 4),
-                         fmt(u and u["frame_ms"], 4), fmt(m and m["frame_ms"], 4),
+                       [(f"{k[0]}@{k[1]}", k[2], paths_text(p), spread_text(s["frame"]) if s else "n/a",
+                         spread_text(u["frame"]) if u else "n/a", spread_text(m["frame"]) if m else "n/a",
                          fmt(s["frame_ms"] / u["frame_ms"]) if s and u else "n/a", s["label"] if s else "")
                         for k, points in sorted(cross.items()) for p, s, u, m in points]))
 

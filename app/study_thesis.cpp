@@ -30,6 +30,7 @@ std::vector<ThesisSweep> thesisPlan(const StudyOptions& o, bool cpu) {
   for (ThesisSweep& s : sweeps) {
     s.benchArgs.insert(s.benchArgs.begin(), common.begin(), common.end());
     s.benchArgs.insert(s.benchArgs.end(), {"--out-dir", s.folder});
+    if (!o.rounds.empty()) s.benchArgs.insert(s.benchArgs.end(), {"--rounds", o.rounds});
     if (!o.device.empty()) s.benchArgs.insert(s.benchArgs.end(), {"--device", o.device});
     s.benchArgs.insert(s.benchArgs.end(), o.passOn.begin(), o.passOn.end());
   }

@@ -2,7 +2,7 @@
 """The source study's table (../shared/seed: Tables 4.1 and 4.2, section 4.3) beside ours (issue 22).
 
 usage: /usr/bin/python3 app/thesis_table.py --out PREFIX [--note TEXT] BENCH_DIR [BENCH_DIR...]
-Reads the cells of the `raylab study temple --thesis` sweeps (results.jsonl) and writes PREFIX.md and
+Reads the cells of the `raylab study temple --thesis` sweeps (cells.jsonl: medians over rounds) and writes PREFIX.md and
 PREFIX.html: per view (the thesis's Examples 1-3 are an alley, the middle of the scene and a view with
 openings: ours are alley, hall and openings) and on average, for each method and sort, the path tracer's time
 (our trace + shade stages: the thesis times its path tracer pass without the sort, accumulation and tone
@@ -12,13 +12,13 @@ tracer, since the devices differ (an RTX GPU with hardware ray tracing there). T
 the thesis's findings hold here. Standard library only; exits 2 when the folders hold no usable cells.
 """
 import html
-import json
 import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checked_write import write_with  # noqa: E402  (app/checked_write.py, beside this script)
+from bench_cells import NotABenchFolder, load_cells  # noqa: E402  (app/bench_cells.py)
 
 VIEWS = ["alley", "hall", "openings"]
 # The thesis's figures: path tracer ms and threads per warp per example (Tables 4.1, 4.2), averages and the
@@ -50,18 +50,13 @@ def num(value):
 
 
 def load(folders):
+    """One record per cell (its rounds made one: app/bench_cells.py)."""
     cells = []
     for folder in folders:
-        path = os.path.join(folder, "results.jsonl")
-        if not os.path.isfile(path):
-            fail(f"{folder} has no results.jsonl (not a raylab bench folder?)")
-        with open(path) as f:
-            for number, line in enumerate(f, 1):
-                if line.strip():
-                    try:
-                        cells.append(json.loads(line))
-                    except json.JSONDecodeError as e:
-                        fail(f"{path}:{number}: not a JSON line ({e.msg})")
+        try:
+            cells.extend(load_cells(folder))
+        except (NotABenchFolder, ValueError) as e:
+            fail(str(e))
     return cells
 
 

@@ -73,10 +73,12 @@ SortPlan SortPolicyModel::plan(SortPolicy policy, uint32_t bounces) const {
     } else if (policy == SortPolicy::Never) {
       s = false, why = "never";
     } else if (frames_ < kColdFrames) {
+      p.measuring = true;
       s = frames_ % 2 == 0, why = s ? "warm-up: sorted (not a sample)" : "warm-up: unsorted (not a sample)";
     } else if (e.sorted.samples < kMinSamples || e.unsorted.samples < kMinSamples) {
       // The arm that lacks samples; both alternately.
       const bool sortedLacks = e.sorted.samples < kMinSamples, unsortedLacks = e.unsorted.samples < kMinSamples;
+      p.measuring = true;
       s = sortedLacks && (!unsortedLacks || frames_ % 2 == 0);
       why = s ? "explore: sorted" : "explore: unsorted";
     } else {
@@ -94,6 +96,7 @@ SortPlan SortPolicyModel::plan(SortPolicy policy, uint32_t bounces) const {
       // > cost 0.174 + margin 0.049 ms), while on the H200 the miss it aimed at is within the cells' noise
       // (docs/results/h200-scale-paths/policy-matrix/shared-probes).
       if (age >= every && frames_ % every == 0) {
+        p.measuring = true;
         s = !sorts;
         why = std::string(s ? "probe: sorted" : "probe: unsorted") + ", measured " + std::to_string(age) +
               " frames ago (" + decision + ")";

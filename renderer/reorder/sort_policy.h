@@ -40,6 +40,10 @@ namespace raylab {
 struct SortPlan {
   std::vector<bool> sortAfter;       // per bounce: keys, sort and reorder after shading it
   std::vector<std::string> reasons;  // per bounce: why (shown by the UI and written to the stats)
+  // auto only: some bounce departs from the decision to measure an arm (warm-up, explore or probe). A bench
+  // times auto from the first frame whose plan does not measure, and takes its counting frame from such a
+  // frame: a frame that explores describes the arm it measures, not the policy (issue 34).
+  bool measuring = false;
   bool any() const;
 };
 

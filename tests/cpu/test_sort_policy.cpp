@@ -99,6 +99,23 @@ TEST(SortPolicy, AutoWarmsUpExploresThenSortsOnlyWhereItPays) {
   EXPECT_TRUE(p[32].sortAfter[1]);
 }
 
+// A plan says when it measures rather than decides (warm-up, explore, probe): the bench times auto from the
+// first plan that does not, and takes its counting frame from one (issue 34). always and never never measure.
+TEST(SortPolicy, AutoSaysWhichPlansMeasure) {
+  SortPolicyModel m;
+  EXPECT_FALSE(m.plan(SortPolicy::Always, 4).measuring);
+  EXPECT_FALSE(m.plan(SortPolicy::Never, 4).measuring);
+  const std::vector<double> unsorted{3.0, 3.0, 2.0, 1.5}, sorted{3.0, 2.0, 1.8, 0.8};
+  std::vector<SortPlan> p = replay(m, 4, 40, [&](int, const SortPlan& plan) { return frameTimes(plan, unsorted, sorted, 0.5); });
+  for (int f = 0; f < 6; ++f) EXPECT_TRUE(p[f].measuring) << f << ": " << p[f].reasons[0];  // warm-up, explore
+  for (size_t f = 6; f < p.size(); ++f) {
+    bool probes = false;
+    for (size_t b = 0; b + 1 < 4; ++b) probes = probes || isProbe(p[f], b);
+    EXPECT_EQ(p[f].measuring, probes) << f;
+  }
+  EXPECT_TRUE(p[32].measuring);  // the probe of bounce 1 (AutoWarmsUpExploresThenSortsOnlyWhereItPays)
+}
+
 TEST(SortPolicy, AutoNeverSortsWhenSortingCostsMoreThanItSaves) {
   SortPolicyModel m;
   const std::vector<double> unsorted{3.0, 3.0, 2.0, 1.5}, sorted{3.0, 2.5, 1.7, 1.2};

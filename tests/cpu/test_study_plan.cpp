@@ -93,3 +93,33 @@ TEST(StudyPlan, ShardsAreDisjointAndCoverThePlan) {
 
 }  // namespace
 }  // namespace raylab
+
+namespace raylab {
+namespace {
+
+// --quick says what it changes (issue 34): on a CPU device it drops the fixed keys, and says so.
+TEST(StudyPlan, QuickSaysWhatItChanges) {
+  const std::string cpu = quickText(/*cpuDevice=*/true), gpu = quickText(false);
+  EXPECT_NE(cpu.find("--quick on a CPU device: " + presetText(studyPreset(true, true))), std::string::npos) << cpu;
+  EXPECT_NE(cpu.find("it drops the strategies fixed"), std::string::npos) << cpu;
+  EXPECT_NE(gpu.find("it drops the strategies dead-last, average"), std::string::npos) << gpu;
+  EXPECT_NE(presetText(studyPreset(true, true)).find("2 timed frames after 1 warm-up; 3 rounds"), std::string::npos);
+}
+
+// Every size's bench gets the preset's rounds, or --rounds's.
+TEST(StudyPlan, RoundsReachEveryBench) {
+  StudyOptions o;
+  o.target = "cornell";
+  o.sizes = {"32x16", "64x32"};
+  auto roundsOf = [](const std::vector<std::string>& args) {
+    for (size_t i = 0; i + 1 < args.size(); ++i)
+      if (args[i] == "--rounds") return args[i + 1];
+    return std::string();
+  };
+  for (const StudySize& s : studyPlan(o, studyPreset(false, true))) EXPECT_EQ(roundsOf(s.benchArgs), "3");
+  o.rounds = "5";
+  for (const StudySize& s : studyPlan(o, studyPreset(false, true))) EXPECT_EQ(roundsOf(s.benchArgs), "5");
+}
+
+}  // namespace
+}  // namespace raylab

@@ -20,6 +20,8 @@ expect 2 study temple --sizes 0x0
 expect 2 study temple --sizes 512x256,100000x1
 expect 2 study temple --frobnicate
 expect 2 study temple --out-dir
+expect 2 study temple --rounds 0
+expect 2 study temple --rounds many
 expect 2 render --size 100
 expect 2 render --size 100000x100
 expect 2 render --size -5x10
@@ -64,6 +66,8 @@ expect 2 bench --scale-tris 1e4,5e7
 expect 2 bench --scale-tris 1e4 --cases temple@hall
 expect 2 bench --bounces 2,0
 expect 2 bench --bounces 2,,x
+expect 2 bench --rounds 0
+expect 2 bench --rounds 101
 expect 2 render --view nowhere
 expect 2 frobnicate
 expect 3 render --scene /nonexistent/missing.gltf
@@ -75,6 +79,10 @@ expect 2 --frame-log /nonexistent/folder/log.jsonl
 expect 2 --render-budget-ms 0
 expect 2 --render-budget-ms soon
 expect 0 bench --help
+"$raylab" bench --help 2>&1 | grep -q -- "--rounds N" || { echo "FAIL: bench --help lacks --rounds"; fail=1; }
+# --quick says what it changes, on a GPU and on a CPU device (issue 34).
+"$raylab" study --help 2>&1 | grep -q -- "--quick, CPU: sizes 128x64, 256x128; 4 bounces; two-point;" ||
+  { echo "FAIL: study --help does not say what --quick changes"; fail=1; }
 expect 0 render --help
 expect 2 --window-size 1280
 expect 2 --window-size 0x720

@@ -14,7 +14,7 @@ trap 'rm -rf "$dir"' EXIT
 have_matplotlib=0
 /usr/bin/python3 -c 'import matplotlib' 2>/dev/null && have_matplotlib=1
 sweep=(--cases cornell@front --strategies fixed --compaction none --sizes 24x16,48x32 --spps 1,2 --bounces 2
-       --timed-frames 1 --warmup 0 --reference-spp 2)
+       --timed-frames 1 --warmup 0 --reference-spp 2 --rounds 1)
 
 RAYLAB_VALIDATE=1 "$raylab" bench "${sweep[@]}" --out-dir "$dir/whole" >"$dir/whole.log" 2>&1 ||
   { cat "$dir/whole.log"; exit 1; }
@@ -38,7 +38,7 @@ assert all(len(e) == 1 for e in errors.values()), errors
 assert errors[('24', '1')] != errors[('48', '1')], errors
 print('ok: %d cells over %d path counts' % (len(rows), len({r['paths_per_frame'] for r in rows})))
 PY
-grep -q '^\[1/12 .*\] cornell@front 24x16 spp=1 b=2 megakernel' "$dir/whole.log" ||
+grep -q '^\[1/12 .*\] round 1/1 cornell@front 24x16 spp=1 b=2 megakernel' "$dir/whole.log" ||
   { echo "FAIL: the progress line does not name the size and spp"; cat "$dir/whole.log"; exit 1; }
 
 if [ $have_matplotlib -eq 1 ]; then
@@ -58,12 +58,13 @@ mkdir "$dir/part"
 cp "$dir/whole/sweep.json" "$dir/part/"
 head -n 5 "$dir/whole/results.jsonl" >"$dir/part/results.jsonl"
 "$raylab" bench "${sweep[@]}" --no-charts --resume "$dir/part" >"$dir/resume.log" 2>&1 || { cat "$dir/resume.log"; exit 1; }
-grep -q "resuming $dir/part: 5 of 12 cells done" "$dir/resume.log" || { echo "FAIL: resume"; cat "$dir/resume.log"; exit 1; }
+grep -q "resuming $dir/part: 5 of 12 cell rounds done" "$dir/resume.log" || { echo "FAIL: resume"; cat "$dir/resume.log"; exit 1; }
 [ "$(grep -c '^\[' "$dir/resume.log")" -eq 7 ] || { echo "FAIL: the resume did not measure 7 cells"; cat "$dir/resume.log"; exit 1; }
 python3 - "$dir/whole" "$dir/part" <<'PY'
 import csv, sys
 def timing(c):
-    return c.endswith('_ms') or c.startswith('frame_ms') or c == 'rays_per_second'
+    return (c.endswith('_ms') or c.startswith('frame_ms') or c.startswith('trace_after_first_ms')
+            or c == 'rays_per_second')
 a = list(csv.DictReader(open(sys.argv[1] + '/results.csv')))
 b = list(csv.DictReader(open(sys.argv[2] + '/results.csv')))
 assert len(a) == len(b) == 12

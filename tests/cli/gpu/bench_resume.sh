@@ -13,6 +13,7 @@
 # subgroup) follows what the tracer ran before, so the SIMT and virtual warp efficiency of cells whose order
 # no sort fixes (none, dead-last) differ where a resumed sweep starts; its image, and so final_rel_mse, does
 # not. Strategies without a length cache only: a cache learns over the warm-up, which is timed (>= 0.5 s).
+# Two rounds: a record is one round of one cell, and the resume runs the rounds the kill left out.
 set -eu
 raylab="$1"
 source_dir="$2"
@@ -20,8 +21,9 @@ dir=$(mktemp -d)
 pid=
 trap '[ -n "$pid" ] && kill -9 $pid 2>/dev/null; rm -rf "$dir"' EXIT
 sweep=(--cases cornell@front --strategies dead-last,fixed,two-point --compaction none --size 32x16 --timed-frames 1 --no-charts
-       --warmup 0 --reference-spp 1)
+       --warmup 0 --reference-spp 1 --rounds 2)
 cells=5  # megakernel, none, dead-last, fixed, two-point
+records=$((cells * 2))
 
 "$raylab" bench "${sweep[@]}" --out-dir "$dir/whole" >"$dir/whole.log" 2>&1 || { cat "$dir/whole.log"; exit 1; }
 
@@ -38,23 +40,24 @@ kill -9 $pid
 wait $pid 2>/dev/null || true
 pid=
 lines=$(wc -l <"$dir/part/results.jsonl")
-[ "$lines" -ge 1 ] && [ "$lines" -lt $cells ] || { echo "FAIL: killed with $lines of $cells cells"; cat "$dir/part.log"; exit 1; }
+[ "$lines" -ge 1 ] && [ "$lines" -lt $records ] || { echo "FAIL: killed with $lines of $records cell rounds"; cat "$dir/part.log"; exit 1; }
 [ ! -e "$dir/part/results.csv" ] || { echo "FAIL: a results.csv from the killed sweep"; exit 1; }
 printf '{"cell": %d, "label": "two-p' "$lines" >>"$dir/part/results.jsonl"  # what a kill mid-append leaves
 
 "$raylab" bench "${sweep[@]}" --resume "$dir/part" >"$dir/resume.log" 2>&1 || { cat "$dir/resume.log"; exit 1; }
-grep -q "resuming $dir/part: $lines of $cells cells done (a cut-off last line dropped)" "$dir/resume.log" ||
+grep -q "resuming $dir/part: $lines of $records cell rounds done ($cells cells x 2 rounds) (a cut-off last line dropped)" "$dir/resume.log" ||
   { echo "FAIL: the resume did not say what it kept"; cat "$dir/resume.log"; exit 1; }
 measured=$(grep -c '^\[' "$dir/resume.log")
-[ "$measured" -eq $((cells - lines)) ] || { echo "FAIL: the resume measured $measured cells, not $((cells - lines))"; exit 1; }
+[ "$measured" -eq $((records - lines)) ] || { echo "FAIL: the resume measured $measured cell rounds, not $((records - lines))"; exit 1; }
 
 python3 - "$dir/whole" "$dir/part" <<'PY'
 import csv, json, sys
 whole, part = sys.argv[1], sys.argv[2]
 records = [json.loads(line) for line in open(part + '/results.jsonl')]
-assert sorted(r['cell'] for r in records) == list(range(5)), [r['cell'] for r in records]
+assert sorted((r['cell'], r['round']) for r in records) == [(c, r) for c in range(5) for r in range(2)], records
 def timing(column):
-    return column.endswith('_ms') or column.startswith('frame_ms') or column == 'rays_per_second'
+    return (column.endswith('_ms') or column.startswith('frame_ms') or column.startswith('trace_after_first_ms')
+            or column == 'rays_per_second')
 a = list(csv.DictReader(open(whole + '/results.csv')))
 b = list(csv.DictReader(open(part + '/results.csv')))
 assert [r['label'] for r in a] == [r['label'] for r in b], ([r['label'] for r in a], [r['label'] for r in b])

@@ -59,7 +59,7 @@ echo "ok: a render over the file size limit exits 1 and leaves no a.json"
 set +e
 small_disk "$dir/bench" 20
 "$raylab" bench --cases cornell@front --strategies dead-last,fixed,two-point \
-  --size 32x16 --timed-frames 1 --warmup 0 --reference-spp 1 --out-dir "$dir/bench" >"$dir/bench.log" 2>&1
+  --size 32x16 --timed-frames 1 --warmup 0 --reference-spp 1 --rounds 1 --out-dir "$dir/bench" >"$dir/bench.log" 2>&1
 expect_failure $? "$dir/bench.log" "$dir/bench/results.jsonl"
 set -e
 grep -q -- "--resume $dir/bench" "$dir/bench.log" || { echo "FAIL: no hint to resume"; cat "$dir/bench.log"; exit 1; }

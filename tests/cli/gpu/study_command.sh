@@ -6,7 +6,7 @@ set -u
 raylab="$1"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-timeout 600 "$raylab" study temple@hall --sizes 32x16,64x32 --bounces 2 --strategies two-point --out-dir "$dir/s" \
+timeout 600 "$raylab" study temple@hall --sizes 32x16,64x32 --bounces 2 --strategies two-point --rounds 1 --out-dir "$dir/s" \
   >"$dir/log" 2>&1
 rc=$?
 fail=0
