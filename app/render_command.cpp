@@ -11,6 +11,8 @@
 #include "app/command_errors.h"
 #include "app/fly_camera.h"
 #include "app/heatmap_legend_image.h"
+#include "app/render_camera_path.h"
+#include "app/render_totals.h"
 #include "app/scene_setup.h"
 #include "app/sidecar.h"
 #include "renderer/heatmap_rules.h"
@@ -26,6 +28,10 @@ namespace raylab {
 namespace {
 
 const char* const kRenderHelp =
+    "  --camera-path FILE|builtin:NAME  render a moving camera: one image of --spp samples per path frame (the\n"
+    "                         accumulation restarts every frame), --out is the last frame's, --stats has every\n"
+    "                         frame with its camera and whether it is a cut; --frames caps the frames. FILE is\n"
+    "                         JSON keyframes (README \"Camera paths\"); builtin:list lists the scene's paths\n"
     "  --camera \"X Y Z TX TY TZ [fov D]\"  where the camera stands and looks at (scene units; the window's\n"
     "                         Scene panel shows and copies the current camera in this form); replaces --view\n"
     "  --time-budget S        accumulate frames for up to S seconds (wall clock), at most --frames of them\n"
@@ -59,6 +65,7 @@ struct RenderRequest {
   double budgetSeconds = 0.0;  // --time-budget; 0: none
   uint32_t detailEvery = 1;    // --detail-every; 0: no detailed frame
   std::string learnedNote;     // --settings FILE.json whose length cache learned over more than its frames
+  std::optional<PathRender> path;  // --camera-path
 };
 
 // Parses the arguments and loads the scene; any error is reported as the command's exit code.
@@ -70,6 +77,7 @@ int parseRenderRequest(const std::vector<std::string>& givenArgs, RenderRequest&
     const auto detailEvery = takeFlag(args, "--detail-every");
     if (detailEvery) r.detailEvery = parseUint("--detail-every", *detailEvery, 0, SettingLimits::kMaxFrames);
     const std::string cameraText = takeFlag(args, "--camera").value_or("");
+    const std::optional<std::string> pathSpec = takeFlag(args, "--camera-path");
     r.options = parseOptionsWithSettingsFile(args, &sidecarCamera, nullptr, &r.learnedNote);
     // With a time budget the frame count is only a ceiling: without --frames there is none.
     bool framesGiven = std::find(args.begin(), args.end(), "--frames") != args.end();
@@ -87,32 +95,21 @@ int parseRenderRequest(const std::vector<std::string>& givenArgs, RenderRequest&
       if (!v) throw UsageError("--camera: " + error);
       r.loaded.view = *v;
     }
+    if (pathSpec) {
+      const std::optional<uint32_t> framesCap = framesGiven ? std::optional<uint32_t>(r.options.settings.frames) : std::nullopt;
+      r.path = preparePathRender(*pathSpec, r.loaded.scene, args, !cameraText.empty(), r.budgetSeconds > 0.0, framesCap);
+      r.options.settings.frames = r.path->frames;  // what the stats' settings record
+      r.loaded.view = cameraAt(r.path->path, 0, r.path->up).view;  // where the tracer starts (its grid, if clamped)
+    }
     return int(kExitOk);
   });
   if (parsed == kExitOk && r.options.out.empty()) r.options.out = "raylab-render.png";
   return parsed;
 }
 
-// The frames of one render, summed: all of them, and those after the first (frame 0 pays for first use:
-// pipeline compilation, page faults, a GPU's clocks rising), which the rate is quoted over.
-struct RenderTotals {
-  nlohmann::json frames = nlohmann::json::array();  // per frame, with --stats only
-  double gpuMs = 0.0, wallMs = 0.0;
-  uint64_t rays = 0;
-  double laterWorkMs = 0.0, laterWallMs = 0.0;  // frames 1 on: GPU work time (instrument passes excluded), wall
-  uint64_t laterRays = 0;
-  uint32_t frameCount = 0;
-  bool budgetSpent = false;  // the time budget ended the render before --frames did
-  // Rays a second over frames 1 on (frame 0 alone for a one-frame render): GPU work time, wall time without it.
-  double raysPerSecond() const {
-    const bool later = frameCount > 1;
-    const double ms = later ? (laterWorkMs > 0.0 ? laterWorkMs : laterWallMs) : (gpuMs > 0.0 ? gpuMs : wallMs);
-    return ms > 0 ? (later ? laterRays : rays) / (ms * 1e-3) : 0.0;
-  }
-};
-
 // Renders --frames frames, or fewer when the time budget runs out first.
 RenderTotals accumulate(PathTracer& tracer, const RenderRequest& r) {
+  if (r.path) return renderAlongPath(tracer, *r.path, !r.options.statsPath.empty(), r.detailEvery);
   const Settings& s = r.options.settings;
   RenderTotals t;
   const auto started = std::chrono::steady_clock::now();
@@ -129,11 +126,7 @@ RenderTotals accumulate(PathTracer& tracer, const RenderRequest& r) {
     }
     tracer.setDetailedStats(stats && r.detailEvery > 0 && f % r.detailEvery == 0);
     const FrameStats& st = tracer.renderFrame();
-    t.gpuMs += st.frameMs;
-    t.wallMs += st.wallMs;
-    t.rays += st.raysTraced;
-    if (f > 0) t.laterWorkMs += st.workMs(), t.laterWallMs += st.wallMs, t.laterRays += st.raysTraced;
-    ++t.frameCount;
+    t.add(f, st);
     if (stats) {
       nlohmann::json frame = toJson(st);
       frame["detailed"] = tracer.detailedStats();
@@ -149,7 +142,7 @@ void writeRenderStats(const VulkanContext& ctx, const PathTracer& tracer, const 
   nlohmann::json doc = {{"device", toJson(ctx.info())},
                         {"git_revision", gitRevision()},
                         {"scene", r.loaded.scene.name},
-                        {"view", r.loaded.view.name},
+                        {"view", r.path ? r.path->path.name : r.loaded.view.name},
                         {"triangles", scene.triangleCount()},
                         {"bvh_nodes", scene.bvhStats().nodeCount},
                         {"bvh_build_ms", scene.bvhStats().buildMs},
@@ -167,6 +160,7 @@ void writeRenderStats(const VulkanContext& ctx, const PathTracer& tracer, const 
                         {"detail_every", r.detailEvery},
                         {"stopped_by", t.budgetSpent ? "time budget" : "frames"},
                         {"frames", t.frames}};
+  if (r.path) doc["camera_path"] = pathRenderJson(*r.path);
   writeFileChecked(r.options.statsPath, doc.dump(2) + "\n");  // throws WriteError: main reports it, exit 1
   std::printf("stats in %s\n", r.options.statsPath.c_str());
 }
@@ -207,7 +201,7 @@ int runRenderCommand(const std::vector<std::string>& givenArgs) {
     std::fprintf(stderr, "raylab render: heatmap %s shows nothing: %s\n", heat.view.c_str(), heat.emptyReason.c_str());
   std::printf("wrote %s (%ux%u, %u spp, %s, %s, %s tracer) in %.2f s wall; %.3g rays/s\n",
               std::filesystem::absolute(r.options.out).string().c_str(), s.width, s.height,
-              tracer.accumulatedFrames() * s.sppPerFrame, view.c_str(), toString(s.kernel).c_str(),
+              tracer.accumulatedFrames() * s.sppPerFrame, viewpointLabel(tracer.camera()).c_str(), toString(s.kernel).c_str(),
               toString(s.tracer).c_str(), totals.wallMs * 1e-3, totals.raysPerSecond());
   if (!r.options.statsPath.empty()) writeRenderStats(ctx, tracer, r, totals);
   if (ctx.validationErrors() > 0) {

@@ -1,0 +1,38 @@
+// The frames of one `raylab render`, summed (still camera or camera path alike), for its summary line and
+// its --stats file.
+#pragma once
+
+#include <cstdint>
+
+#include <nlohmann/json.hpp>
+
+namespace raylab {
+
+// All frames, and those after the first (frame 0 pays for first use: pipeline compilation, page faults, a
+// GPU's clocks rising), which the rate is quoted over.
+struct RenderTotals {
+  nlohmann::json frames = nlohmann::json::array();  // per frame, with --stats only
+  double gpuMs = 0.0, wallMs = 0.0;
+  uint64_t rays = 0;
+  double laterWorkMs = 0.0, laterWallMs = 0.0;  // frames 1 on: GPU work time (instrument passes excluded), wall
+  uint64_t laterRays = 0;
+  uint32_t frameCount = 0;
+  bool budgetSpent = false;  // the time budget ended the render before --frames did
+  // Rays a second over frames 1 on (frame 0 alone for a one-frame render): GPU work time, wall time without it.
+  double raysPerSecond() const {
+    const bool later = frameCount > 1;
+    const double ms = later ? (laterWorkMs > 0.0 ? laterWorkMs : laterWallMs) : (gpuMs > 0.0 ? gpuMs : wallMs);
+    return ms > 0 ? (later ? laterRays : rays) / (ms * 1e-3) : 0.0;
+  }
+  // Adds frame `f`'s figures (f: the frame's number in this render).
+  template <class Stats>
+  void add(uint32_t f, const Stats& st) {
+    gpuMs += st.frameMs;
+    wallMs += st.wallMs;
+    rays += st.raysTraced;
+    if (f > 0) laterWorkMs += st.workMs(), laterWallMs += st.wallMs, laterRays += st.raysTraced;
+    ++frameCount;
+  }
+};
+
+}  // namespace raylab
