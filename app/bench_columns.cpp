@@ -12,7 +12,7 @@ namespace raylab {
 // The CSV's layout: settings columns (settings_table.h) among the results', in the order the CSV has always
 // had; a setting's column not named here comes last.
 std::vector<std::string> benchCsvColumns() {
-  std::vector<std::string> columns{"device", "driver", "git_revision", "scene", "view", "width", "height", "bounces",
+  std::vector<std::string> columns{"device", "device_number", "device_uuid", "device_pci", "driver", "git_revision", "scene", "view", "width", "height", "bounces",
                                    "spp_per_frame", "kernel", "tracer", "ser", "ser_reordering_hint", "strategy", "sort",
                                    "label", "frame_ms_median", "frame_ms_min", "frame_ms_max", "trace_after_first_ms"};
   for (const StageInfo& s : kStages) columns.push_back(std::string(s.name) + "_ms");

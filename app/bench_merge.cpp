@@ -90,10 +90,24 @@ std::vector<nlohmann::json> mergedRecords(const std::vector<Shard>& shards) {
       byCell[{cell, roundOf(r)}] = r;
     }
     size_t expected = 0;
-    for (size_t c = 0; c < cells; ++c) expected += s.record.shard.contains(c) ? rounds : 0;
+    std::string missing;  // the first few cell rounds the shard lacks, by cell number and label
+    size_t missingCount = 0;
+    for (size_t c = 0; c < cells; ++c) {
+      if (!s.record.shard.contains(c)) continue;
+      expected += rounds;
+      for (uint32_t round = 0; round < rounds; ++round) {
+        if (own.count({c, round})) continue;
+        if (++missingCount <= 5)
+          missing += std::string(missing.empty() ? "" : ", ") + "cell " + std::to_string(c) + " (" +
+                     first.record.definition.at("cells").at(c).value("label", std::string("?")) + ") round " +
+                     std::to_string(round);
+      }
+    }
     if (own.size() != expected)
       throw UsageError(s.dir + " (shard " + s.record.shard.text() + ") has " + std::to_string(own.size()) + " of its " +
-                       std::to_string(expected) + " cell rounds: finish it first (raylab bench --resume " + s.dir + ")");
+                       std::to_string(expected) + " cell rounds; missing " + missing +
+                       (missingCount > 5 ? " and " + std::to_string(missingCount - 5) + " more" : "") +
+                       ": finish it first (raylab bench --resume " + s.dir + ")");
   }
   std::vector<nlohmann::json> out;
   for (auto& [cell, r] : byCell) out.push_back(std::move(r));

@@ -43,6 +43,8 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   const auto& b = r.detailed.bounces;
   CsvRow row;
   row.add("device", csvQuote(ctx.info().name)).add("driver", csvQuote(ctx.info().driver)).add("git_revision", gitRevision());
+  // Which GPU of the host made the row (shards on GPUs of one name): its --device number and identity.
+  row.add("device_number", uint64_t(ctx.info().number)).add("device_uuid", ctx.info().uuid).add("device_pci", ctx.info().pciBus);
   // The settings' columns are their rows' (settings_table.h); the view is the one resolved (empty: the first).
   for (const auto& [column, text] : settingsCsvColumns(s)) row.add(column, text);
   row.add("view", view);

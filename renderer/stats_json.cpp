@@ -69,6 +69,9 @@ json toJson(const FrameStats& s) {
 
 json toJson(const DeviceInfo& d) {
   return {{"name", d.name},
+          {"number", d.number},
+          {"uuid", d.uuid},
+          {"pci_bus", d.pciBus.empty() ? json(nullptr) : json(d.pciBus)},
           {"driver", d.driver},
           {"subgroup_size", d.subgroupSize},
           {"cpu", d.isCpu},

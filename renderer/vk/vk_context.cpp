@@ -100,12 +100,13 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
     names += std::string(names.empty() ? "" : ", ") + std::to_string(n) + ": " + p.deviceName;
     if (p.apiVersion < VK_API_VERSION_1_2) continue;
     if (byNumber) {
-      if (std::stoul(wanted) == n) physical_ = d;
+      if (std::stoul(wanted) == n) physical_ = d, info_.number = uint32_t(n);
     } else if (!wanted.empty()) {
-      if (lower(p.deviceName).find(lower(wanted)) != std::string::npos && !physical_) physical_ = d;
+      if (lower(p.deviceName).find(lower(wanted)) != std::string::npos && !physical_) physical_ = d, info_.number = uint32_t(n);
     } else if (deviceRank(p.deviceType) < bestRank) {
       bestRank = deviceRank(p.deviceType);
       physical_ = d;
+      info_.number = uint32_t(n);
     }
   }
   if (!physical_) {
@@ -117,8 +118,13 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
   VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
   VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
   VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+  VkPhysicalDeviceIDProperties id{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ID_PROPERTIES};
+  VkPhysicalDevicePCIBusInfoPropertiesEXT pci{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PCI_BUS_INFO_PROPERTIES_EXT};
+  const bool hasPci = missingDeviceExtensions(physical_, {VK_EXT_PCI_BUS_INFO_EXTENSION_NAME}).empty();
   subgroup.pNext = &driver;
   driver.pNext = &maintenance3;
+  maintenance3.pNext = &id;
+  if (hasPci) id.pNext = &pci;
   VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
   props.pNext = &subgroup;
   vkGetPhysicalDeviceProperties2(physical_, &props);
@@ -132,6 +138,14 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
   setDispatchRowGroups(0);
   info_.maxMemoryAllocationSize = maintenance3.maxMemoryAllocationSize;
   info_.isCpu = props.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  char hex[2 * VK_UUID_SIZE + 1] = {};
+  for (uint32_t i = 0; i < VK_UUID_SIZE; ++i) std::snprintf(hex + 2 * i, 3, "%02x", id.deviceUUID[i]);
+  info_.uuid = hex;
+  if (hasPci) {
+    char bus[32];
+    std::snprintf(bus, sizeof(bus), "%04x:%02x:%02x.%x", pci.pciDomain, pci.pciBus, pci.pciDevice, pci.pciFunction);
+    info_.pciBus = bus;
+  }
   vkGetPhysicalDeviceMemoryProperties(physical_, &memoryProperties_);
 }
 

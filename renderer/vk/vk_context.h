@@ -27,6 +27,12 @@ struct ContextOptions {
 struct DeviceInfo {
   std::string name;
   std::string driver;
+  // Which device of the host this is, for result rows of GPUs that share a name: its number in
+  // `raylab devices` (what --device N picks), its Vulkan device UUID (hex), and its PCI address
+  // (domain:bus:device.function, VK_EXT_pci_bus_info; empty where the driver lacks it, as lavapipe does).
+  uint32_t number = 0;
+  std::string uuid;
+  std::string pciBus;
   uint32_t vendorId = 0;
   uint32_t subgroupSize = 0;
   float timestampPeriodNs = 0.0f;

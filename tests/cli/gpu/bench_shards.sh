@@ -72,7 +72,7 @@ PY
 refuse bench "another revision" "was measured at revision 0000000" --merge "$dir/k2-0" "$dir/oldrev" --out-dir "$dir/m"
 head -n 1 "$dir/k2-1/results.jsonl" >"$dir/oldrev/results.jsonl"
 cp "$dir/k2-1/sweep.json" "$dir/oldrev/"
-refuse bench "an unfinished shard" "has 1 of its 10 cell rounds: finish it first" --merge "$dir/k2-0" "$dir/oldrev" --out-dir "$dir/m"
+refuse bench "an unfinished shard" "has 1 of its 10 cell rounds; missing cell" --merge "$dir/k2-0" "$dir/oldrev" --out-dir "$dir/m"
 [ ! -e "$dir/m" ] || { echo "FAIL: a refused merge wrote $dir/m"; exit 1; }
 refuse bench "a shard past K" "--shard expects i/K" "${sweep[@]}" --shard 3/3 --out-dir "$dir/m"
 refuse bench "a resume as another shard" "it holds shard 1/2 of its sweep, not 0/2" "${sweep[@]}" --shard 0/2 --resume "$dir/k2-1"
