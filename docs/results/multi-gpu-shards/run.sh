@@ -28,7 +28,12 @@ echo "wall: unsharded ${whole} s, $k shards side by side ${sharded} s" | tee "$o
 python3 - "$out" "$k" "${ALLOW_ONE_DEVICE:-0}" <<'PY'
 import csv, glob, os, statistics, sys
 out, k, one = sys.argv[1], int(sys.argv[2]), sys.argv[3] == '1'
-timing = lambda c: c.endswith('_ms') or '_ms_' in c or c in ('rays_per_second', 'final_rel_mse', 'tracer_setup_ms', 'scene_load_ms', 'bvh_build_ms') or c.startswith('device')
+# Columns that follow timing, not the sweep: times, the device, and what depends on the order threads ran in:
+# compaction packs the live paths in the order its atomics give (the warp figures read slots in that order),
+# and auto's plan follows the costs it measured (sorted_after).
+timing = lambda c: (c.endswith('_ms') or '_ms_' in c or c.startswith('frame_ms') or c.startswith('device')
+                    or c in ('rays_per_second', 'final_rel_mse', 'sorted_after', 'simt_efficiency',
+                             'virtual_warp_efficiency', 'virtual_warp_efficiency_after_first'))
 def rows(top):
     r = {}
     for f in sorted(glob.glob(os.path.join(top, 'size-*', 'results.csv'))):
