@@ -32,6 +32,7 @@ import csv
 import math
 import os
 import sys
+import textwrap
 
 EXIT_NO_MATPLOTLIB = 3  # app/bench_charts_run.cpp knows it: no charts, and no error of the sweep
 
@@ -44,7 +45,8 @@ try:
     import matplotlib
 except ImportError:
     if not QUIET_IF_UNAVAILABLE:
-        print("bench_charts.py: matplotlib is missing (Debian: apt-get install python3-matplotlib): no charts drawn",
+        print(f"bench_charts.py: matplotlib is missing for {sys.executable} (Debian's python3-matplotlib is for "
+              "/usr/bin/python3; RAYLAB_PYTHON picks the interpreter raylab bench uses): no charts drawn",
               file=sys.stderr)
     sys.exit(EXIT_NO_MATPLOTLIB)
 
@@ -77,8 +79,28 @@ def load(folder):
     return rows, curves, stage_columns(header, measured)
 
 
+def fit_text(fig):
+    """Titles wrapped to the figure's width (long case names were cut off on both sides), and log axes
+    labelled with plain numbers (a narrow log range printed minor ticks as 4.4x10^0)."""
+    def fill(text, inches, points):  # a character is about 0.55 em wide
+        width = max(20, int(inches * 72 / (0.55 * points)))
+        return "\n".join(textwrap.fill(line, width) for line in text.split("\n"))
+    if fig._suptitle is not None:
+        fig._suptitle.set_text(fill(fig._suptitle.get_text(), fig.get_figwidth(), fig._suptitle.get_fontsize()))
+    for ax in fig.axes:
+        inches = fig.get_figwidth() * ax.get_position().width
+        ax.set_title(fill(ax.get_title(), inches, ax.title.get_fontsize()), fontsize=ax.title.get_fontsize())
+        for axis, scale in ((ax.xaxis, ax.get_xscale()), (ax.yaxis, ax.get_yscale())):
+            if scale == "log":
+                plain = matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}")
+                axis.set_major_formatter(plain)
+                axis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    fig.tight_layout()
+
+
 def save(fig, path):
     """A chart is all there under its name or not there: a failed write exits non-zero naming it."""
+    fit_text(fig)
     write_with(path, lambda f: fig.savefig(f, dpi=110, format="png"))
 
 

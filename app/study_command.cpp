@@ -306,7 +306,13 @@ int runStudyCommand(const std::vector<std::string>& args) {
                 o.shard.text().c_str(), o.outDir.c_str(), o.shard.count, o.shard.count, o.outDir.c_str());
     return kExitOk;
   }
-  return makeReport(o.outDir, folders, note);
+  // The report names the study's own command and how long it measured (issue 38).
+  std::string command = "raylab study";
+  for (const std::string& a : args) command += " " + a;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  char took[96];
+  std::snprintf(took, sizeof(took), " Measured in %.0f s.", seconds);
+  return makeReport(o.outDir, folders, (note.empty() ? "" : note + " ") + "Command: " + command + "." + took);
 }
 
 }  // namespace raylab
