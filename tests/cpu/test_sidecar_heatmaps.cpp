@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/temp_path.h"
 #include "app/learned_history.h"
 #include "app/sidecar.h"
 #include "renderer/heatmap_rules.h"
@@ -18,7 +19,7 @@ namespace {
 
 class SidecarHeatmaps : public ::testing::Test {
  protected:
-  std::string path_ = (std::filesystem::temp_directory_path() / "raylab_test_sidecar_heatmaps.json").string();
+  std::string path_ = test::testTempPath("raylab_test_sidecar", ".json");
   void TearDown() override { std::filesystem::remove(path_); }
 };
 

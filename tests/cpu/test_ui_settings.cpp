@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/temp_path.h"
 #include "app/cli_options.h"
 #include "app/setting_flags.h"
 #include "app/sidecar.h"
@@ -83,7 +84,7 @@ TEST(UiSettings, OverlayOnDefaultsEqualsTheCliParse) {
 
 class UiSidecar : public ::testing::Test {
  protected:
-  std::string path_ = (std::filesystem::temp_directory_path() / "raylab_test_sidecar_roundtrip.json").string();
+  std::string path_ = test::testTempPath("raylab_test_sidecar_roundtrip", ".json");
   void TearDown() override { std::filesystem::remove(path_); }
   void write(const SidecarContent& c) { std::ofstream(path_) << makeSidecar(c).dump(2); }
 };

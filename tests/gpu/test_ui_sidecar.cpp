@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/temp_path.h"
 #include "app/cli_options.h"
 #include "app/sidecar.h"
 #include "renderer/path_tracer.h"
@@ -17,7 +18,7 @@ namespace {
 
 class UiSidecar : public test::GpuTest {
  protected:
-  std::string path_ = (std::filesystem::temp_directory_path() / "raylab_test_sidecar_render.json").string();
+  std::string path_ = test::testTempPath("raylab_test_sidecar_render", ".json");
   void TearDown() override {
     std::filesystem::remove(path_);
     GpuTest::TearDown();
