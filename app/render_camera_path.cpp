@@ -6,7 +6,6 @@
 #include "app/camera_path_builtin.h"
 #include "app/cli_options.h"
 #include "renderer/path_tracer.h"
-#include "renderer/stats_json.h"
 
 namespace raylab {
 namespace {
@@ -42,18 +41,13 @@ RenderTotals renderAlongPath(PathTracer& tracer, const PathRender& p, bool stats
   for (uint32_t f = 0; f < p.frames; ++f) {
     const PathCamera camera = cameraAt(p.path, f, p.up);
     tracer.setCamera(camera.view);  // restarts the accumulation, also where the camera stands still
-    tracer.setDetailedStats(stats && detailEvery > 0 && f % detailEvery == 0);
-    const FrameStats& st = tracer.renderFrame();
-    t.add(f, st);
-    if (!stats) continue;
-    nlohmann::json frame = toJson(st);
-    frame["detailed"] = tracer.detailedStats();
-    frame["path_frame"] = f;
-    frame["camera"] = {{"position", vec3Json(camera.view.position)},
-                       {"target", vec3Json(camera.view.target)},
-                       {"fov", glm::degrees(camera.view.yfovRadians)}};
-    frame["cut"] = camera.cut;
-    t.frames.push_back(std::move(frame));
+    nlohmann::json* frame = renderCountedFrame(tracer, f, stats, detailEvery, t);
+    if (!frame) continue;
+    (*frame)["path_frame"] = f;
+    (*frame)["camera"] = {{"position", vec3Json(camera.view.position)},
+                          {"target", vec3Json(camera.view.target)},
+                          {"fov", glm::degrees(camera.view.yfovRadians)}};
+    (*frame)["cut"] = camera.cut;
   }
   return t;
 }

@@ -124,14 +124,7 @@ RenderTotals accumulate(PathTracer& tracer, const RenderRequest& r) {
       t.budgetSpent = true;
       break;
     }
-    tracer.setDetailedStats(stats && r.detailEvery > 0 && f % r.detailEvery == 0);
-    const FrameStats& st = tracer.renderFrame();
-    t.add(f, st);
-    if (stats) {
-      nlohmann::json frame = toJson(st);
-      frame["detailed"] = tracer.detailedStats();
-      t.frames.push_back(std::move(frame));
-    }
+    renderCountedFrame(tracer, f, stats, r.detailEvery, t);
   }
   return t;
 }

@@ -6,6 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/path_tracer.h"
+#include "renderer/stats_json.h"
+
 namespace raylab {
 
 // All frames, and those after the first (frame 0 pays for first use: pipeline compilation, page faults, a
@@ -34,5 +37,20 @@ struct RenderTotals {
     ++frameCount;
   }
 };
+
+// Frame `f` of a render: detailed where --detail-every says (with --stats only), rendered, added to `t`, and
+// with --stats its JSON appended to t.frames. Returns that JSON for the caller's own fields (nullptr without
+// --stats).
+inline nlohmann::json* renderCountedFrame(PathTracer& tracer, uint32_t f, bool stats, uint32_t detailEvery,
+                                          RenderTotals& t) {
+  tracer.setDetailedStats(stats && detailEvery > 0 && f % detailEvery == 0);
+  const FrameStats& st = tracer.renderFrame();
+  t.add(f, st);
+  if (!stats) return nullptr;
+  nlohmann::json frame = toJson(st);
+  frame["detailed"] = tracer.detailedStats();
+  t.frames.push_back(std::move(frame));
+  return &t.frames.back();
+}
 
 }  // namespace raylab

@@ -36,11 +36,10 @@ DetailStats::DetailStats(const VulkanContext& ctx)
 
 void DetailStats::recordClear(VkCommandBuffer cmd, uint32_t bounces) {
   bounces = std::max(bounces, 1u);
-  if (bounces_ < bounces) {
+  if (!sums_.valid() || sums_.size() < kSumsBytes * bounces) {
     sums_ = GpuBuffer(ctx_, kSumsBytes * bounces);
     hostSums_ = GpuBuffer(ctx_, kSumsBytes * bounces, MemoryKind::HostVisible);
   }
-  bounces_ = std::max(bounces_, bounces);
   ran_.assign(bounces, Ran{});
   cacheRan_ = false;
   retired_.clear();  // the last frame, which may have used them, has completed

@@ -55,7 +55,6 @@ class DetailStats {
   LazyPipeline warps_, prediction_, keys_, cache_;
   GpuBuffer sums_, hostSums_, bitmap_;
   std::vector<GpuBuffer> retired_;  // bitmaps outgrown during the frame being recorded
-  uint32_t bounces_ = 0;
   struct Ran {
     bool warps = false, prediction = false, keys = false;
   };

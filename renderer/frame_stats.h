@@ -86,7 +86,10 @@ struct FrameStats {
       if (const StageInfo* info = findStage(s.stage); info && info->role == StageRole::Instrument) ms += s.ms;
     return ms;
   }
-  double workMs() const { return frameMs > instrumentMs() ? frameMs - instrumentMs() : 0.0; }
+  double workMs() const {
+    const double instrument = instrumentMs();
+    return frameMs > instrument ? frameMs - instrument : 0.0;
+  }
 
   double stageTotal(const std::string& stage) const {
     double ms = 0.0;

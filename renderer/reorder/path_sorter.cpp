@@ -38,7 +38,6 @@ void PathSorter::makeSorter(const Settings& settings) {
 
 void PathSorter::recordLearn(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
                              StageTimer* timer) {
-  if (bounce == 0) return;
   keys_.recordLearn(cmd, buffers.frameBlock.address(), stateSet, bounce, buffers.pathCount, timer);
 }
 

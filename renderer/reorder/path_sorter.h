@@ -37,8 +37,8 @@ class PathSorter {
   void apply(const Settings& settings, glm::vec3 cameraPos, uint32_t maxPaths, const SettingsChange& change);
 
   // Every call works on all the frame's paths (buffers.pathCount).
-  // After the trace of `bounce` (>= 1) whose rays were keyed and sorted: the learn stage (strategies that
-  // learn lengths; nothing for the others).
+  // After the trace of `bounce` whose rays were keyed and sorted: the learn stage (strategies that learn
+  // lengths, bounces >= 1; nothing otherwise: KeyStage::recordLearn).
   void recordLearn(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t stateSet, uint32_t bounce,
                    StageTimer* timer);
   // After shading `bounce`: the keys of the next rays (in buffers.keys, current set order), unless shade made

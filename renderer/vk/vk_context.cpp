@@ -99,15 +99,16 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
     vkGetPhysicalDeviceProperties(d, &p);
     names += std::string(names.empty() ? "" : ", ") + std::to_string(n) + ": " + p.deviceName;
     if (p.apiVersion < VK_API_VERSION_1_2) continue;
+    bool pick = false;
     if (byNumber) {
-      if (std::stoul(wanted) == n) physical_ = d, info_.number = uint32_t(n);
+      pick = std::stoul(wanted) == n;
     } else if (!wanted.empty()) {
-      if (lower(p.deviceName).find(lower(wanted)) != std::string::npos && !physical_) physical_ = d, info_.number = uint32_t(n);
+      pick = lower(p.deviceName).find(lower(wanted)) != std::string::npos && !physical_;
     } else if (deviceRank(p.deviceType) < bestRank) {
       bestRank = deviceRank(p.deviceType);
-      physical_ = d;
-      info_.number = uint32_t(n);
+      pick = true;
     }
+    if (pick) physical_ = d, info_.number = uint32_t(n);  // its number: what `raylab devices` lists it as
   }
   if (!physical_) {
     if (!options.deviceName.empty())
