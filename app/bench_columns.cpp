@@ -16,7 +16,7 @@ std::vector<std::string> benchCsvColumns() {
                                    "spp_per_frame", "kernel", "tracer", "ser", "ser_reordering_hint", "strategy", "sort",
                                    "label", "frame_ms_median", "frame_ms_min", "frame_ms_max", "trace_after_first_ms"};
   for (const StageInfo& s : kStages) columns.push_back(std::string(s.name) + "_ms");
-  for (const char* c : {"rays_per_second", "simt_efficiency", "virtual_warp_efficiency",
+  for (const char* c : {"rays_per_second", "trace_camera_rays_per_second", "trace_bounce_rays_per_second", "simt_efficiency", "virtual_warp_efficiency",
                         "virtual_warp_efficiency_after_first", "prediction_error_mean", "prediction_error_median",
                         "cell_hit_rate", "key_bits", "length_cache_bytes", "final_rel_mse", "sort_policy", "sorted_after",
                         "triangles", "bvh_nodes", "bvh_bytes", "scene_bytes", "bvh_build_ms", "scene_load_ms",

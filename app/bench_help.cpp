@@ -29,7 +29,7 @@ std::string benchHelp() {
          "  --sorts radix,bitonic     sorts to sweep (default radix)\n"
          + settingAxesHelp() +
          "  --tracers compute,rt      tracers to sweep (default: --tracer's); rt labels start with \"rt \"\n"
-         "  --bvhs binary,wide        the compute tracer's BVH layouts to sweep (default: --bvh's); labels\n"
+         "  --bvhs binary,sbvh,wide   the compute tracer's BVH layouts to sweep (default: --bvh's); labels\n"
          "                            of a layout other than the default start with its name (\"binary \")\n"
          "  --sers on,hint            SER cells of the rt megakernel (by hit; by hit with a key hint)\n"
          "  --ser-hints two-point,... key strategies whose keys make the SER hint (default two-point)\n"

@@ -52,7 +52,7 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
   }
   tracer.restartAccumulation();
 
-  std::vector<double> frame, wall, traceLater;
+  std::vector<double> frame, wall, traceLater, cameraRate, bounceRate;
   bool tracedLater = false;  // some frame had a trace stage of bounce >= 1
   std::map<std::string, std::vector<double>> stages, bounceStages;
   double total = 0.0;
@@ -64,12 +64,17 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
     rays += st.raysTraced;
     total += st.frameMs > 0.0 ? st.frameMs : st.wallMs;
     std::map<std::string, double> perStage, perBounce;
-    double later = 0.0;
+    double later = 0.0, camera = 0.0;
     for (const StageTime& s : st.stages) {
       perStage[s.stage] += s.ms;
       if (s.bounce >= 0) perBounce[s.stage + "@" + std::to_string(s.bounce)] += s.ms;
       if (s.stage == "trace" && s.bounce >= 1) later += s.ms, tracedLater = true;
+      if (s.stage == "trace" && s.bounce == 0) camera += s.ms;
     }
+    uint64_t laterRays = 0;
+    for (size_t b = 1; b < st.bounces.size(); ++b) laterRays += st.bounces[b].rays;
+    if (camera > 0.0 && !st.bounces.empty()) cameraRate.push_back(st.bounces[0].rays / (camera * 1e-3));
+    if (later > 0.0) bounceRate.push_back(laterRays / (later * 1e-3));
     for (const auto& [name, ms] : perStage) stages[name].push_back(ms);
     for (const auto& [name, ms] : perBounce) bounceStages[name].push_back(ms);
     traceLater.push_back(later);
@@ -77,6 +82,8 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
   r.frameMs = spreadOf(frame);
   r.wallMs = spreadOf(wall);
   if (tracedLater) r.traceAfterFirstMs = spreadOf(traceLater);
+  if (!cameraRate.empty()) r.traceCameraRaysPerSecond = spreadOf(cameraRate);
+  if (!bounceRate.empty()) r.traceBounceRaysPerSecond = spreadOf(bounceRate);
   for (auto& [name, v] : stages) r.stageMs[name] = spreadOf(v);
   for (auto& [name, v] : bounceStages) r.stageBounceMs[name] = spreadOf(v);
   r.raysPerSecond = total > 0.0 ? rays / (total * 1e-3) : 0.0;
@@ -115,6 +122,8 @@ SceneFacts sceneFactsOf(const GpuSceneData& scene, double sceneLoadMs, double tr
   f.wideBvhBytes = scene.wideBvhStats().treeBytes() + f.triangles * sizeof(gpu::GpuTriangle);
   f.sceneBytes = scene.memoryBytes();
   f.bvhBuildMs = scene.bvhStats().buildMs;
+  f.sbvhReferences = scene.splitBvhStats().references;
+  f.sbvhBuildMs = scene.splitBvhStats().buildMs;
   f.sceneLoadMs = sceneLoadMs;
   f.tracerSetupMs = tracerSetupMs;
   return f;
@@ -125,7 +134,8 @@ nlohmann::json toJson(const SceneFacts& f) {
           {"bvh_bytes", f.bvhBytes},            {"scene_bytes", f.sceneBytes},
           {"bvh_build_ms", f.bvhBuildMs},       {"scene_load_ms", f.sceneLoadMs},
           {"tracer_setup_ms", f.tracerSetupMs}, {"wide_bvh_nodes", f.wideBvhNodes},
-          {"wide_bvh_bytes", f.wideBvhBytes}};
+          {"wide_bvh_bytes", f.wideBvhBytes},   {"sbvh_references", f.sbvhReferences},
+          {"sbvh_build_ms", f.sbvhBuildMs}};
 }
 
 nlohmann::json toJson(const CellResult& r) {
@@ -141,6 +151,10 @@ nlohmann::json toJson(const CellResult& r) {
           {"stage_bounce_ms", bounceStages},
           {"sorted_after", r.sortedAfter},
           {"rays_per_second", r.raysPerSecond},
+          {"trace_camera_rays_per_second",
+           r.traceCameraRaysPerSecond ? spread(*r.traceCameraRaysPerSecond) : nlohmann::json(nullptr)},
+          {"trace_bounce_rays_per_second",
+           r.traceBounceRaysPerSecond ? spread(*r.traceBounceRaysPerSecond) : nlohmann::json(nullptr)},
           {"error_curve_ms", r.errorCurveMs},
           {"error_curve_rel_mse", r.errorCurveRelMse},
           {"final_rel_mse", r.finalRelMse ? nlohmann::json(*r.finalRelMse) : nlohmann::json(nullptr)},

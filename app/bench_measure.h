@@ -23,6 +23,9 @@ struct CellResult {
   std::map<std::string, Spread> stageBounceMs;  // per "stage@bounce" (bounce-loop stages only)
   std::optional<Spread> traceAfterFirstMs;  // trace stage, bounces >= 1 (none: no trace stage of its own,
                                             // the megakernel and fused trace+shade)
+  // The trace stage's speed, rays per second over its GPU time: camera rays (bounce 0) and the bounces after
+  // (their rays over their summed trace time); a trace's speed read from one column (none: no trace stage).
+  std::optional<Spread> traceCameraRaysPerSecond, traceBounceRaysPerSecond;
   std::vector<double> errorCurveMs;       // k times the median frame time, k = 1 .. timed frames
   std::vector<double> errorCurveRelMse;   // the case's relative MSE after k frames (same for every cell)
   std::optional<double> finalRelMse;      // this cell's own image after its timed frames (none: no reference)
@@ -55,6 +58,9 @@ struct SceneFacts {
   uint64_t wideBvhBytes = 0;
   uint64_t sceneBytes = 0;  // every scene buffer on the device
   double bvhBuildMs = 0.0;
+  // The tree with spatial splits (BvhLayout::Sbvh): its leaf entries and build time.
+  uint64_t sbvhReferences = 0;
+  double sbvhBuildMs = 0.0;
   double sceneLoadMs = 0.0;
   double tracerSetupMs = 0.0;
 };

@@ -64,6 +64,10 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
     return csvNumber(r.detailed.traversalStatsUnavailable.empty() ? measuredOrNone(v) : std::nullopt);
   };
   row.add("rays_per_second", r.raysPerSecond);
+  row.add("trace_camera_rays_per_second",
+          csvNumber(r.traceCameraRaysPerSecond ? std::optional(r.traceCameraRaysPerSecond->median) : std::nullopt));
+  row.add("trace_bounce_rays_per_second",
+          csvNumber(r.traceBounceRaysPerSecond ? std::optional(r.traceBounceRaysPerSecond->median) : std::nullopt));
   row.add("simt_efficiency", loop(meanOverBounces(b, &BounceStats::simtEfficiency, false)));
   row.add("virtual_warp_efficiency", loop(meanOverBounces(b, &BounceStats::virtualWarpEfficiency, false)));
   row.add("virtual_warp_efficiency_after_first", loop(meanOverBounces(b, &BounceStats::virtualWarpEfficiency, true)));

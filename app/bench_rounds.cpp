@@ -35,16 +35,20 @@ struct Series {
   bool measured() const { return !values.empty(); }
 };
 
+// The trace stage's rays per second (CellResult): a median over the rounds, none where no round measured it.
+constexpr const char* kTraceRateFigures[] = {"trace_camera_rays_per_second", "trace_bounce_rays_per_second"};
+
 // The figures of a cell over its rounds, taken from the rounds' results.
 struct RoundFigures {
   Series frame, wall, traceLater, rays;
-  std::map<std::string, Series> stages, bounceStages;
+  std::map<std::string, Series> stages, bounceStages, traceRates;
 
   void add(const nlohmann::json& result) {
     frame.add(medianOf(result.value("frame_ms", nlohmann::json())));
     wall.add(medianOf(result.value("wall_ms", nlohmann::json())));
     traceLater.add(medianOf(result.value("trace_after_first_ms", nlohmann::json())));
     rays.add(medianOf(result.value("rays_per_second", nlohmann::json())));
+    for (const char* name : kTraceRateFigures) traceRates[name].add(medianOf(result.value(name, nlohmann::json())));
     // Copies: items() of the temporary value() returns would outlive it.
     const nlohmann::json stageMs = result.value("stage_ms", nlohmann::json::object());
     const nlohmann::json bounceMs = result.value("stage_bounce_ms", nlohmann::json::object());
@@ -95,6 +99,11 @@ nlohmann::json summarise(const std::vector<const nlohmann::json*>& rounds) {
   if (f.rays.measured()) {
     result["rays_per_second"] = spreadOf(f.rays.values).median;
     csv["rays_per_second"] = csvNumber(spreadOf(f.rays.values).median);
+  }
+  for (const auto& [name, s] : f.traceRates) {
+    const std::optional<double> median = s.measured() ? std::optional(spreadOf(s.values).median) : std::nullopt;
+    result[name] = median ? nlohmann::json(*median) : nlohmann::json(nullptr);
+    csv[name] = csvNumber(median);
   }
   // The equal-time curve's time axis: k frames of the cell's (median over rounds) frame time.
   if (result.contains("error_curve_ms") && result["error_curve_ms"].is_array()) {

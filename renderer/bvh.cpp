@@ -2,11 +2,12 @@
 // through TBB): Embree decides the splits and leaf sizes; its callbacks build a temporary tree in Embree's
 // thread-local memory, which is then flattened into our depth-first layout.
 //
-// Why no spatial splits (RTC_BUILD_QUALITY_HIGH with splitPrimitive): they put one triangle into several
-// leaves, and every consumer of the BVH-order triangle array assumes one entry a triangle: the emitter
-// table (one emitter per emissive entry: duplicates would count a light twice), the rt tracer's bottom-level
-// structure (bvhOrderVertices: duplicated geometry), triangleOrder as a permutation (the wide BVH collapses
-// from it, the tests check it). Leaves would need an index array of their own, a new GPU indirection.
+// Spatial splits (BvhSplits::Spatial: RTC_BUILD_QUALITY_HIGH with a splitPrimitive callback) put one triangle
+// into several leaves, while every consumer of the BVH-order triangle array assumes one entry a triangle: the
+// emitter table (one emitter per emissive entry), the rt tracer's bottom-level structure (bvhOrderVertices),
+// the wide collapse. So the BVH order stays that of the tree without splits, and a split tree is a second
+// tree over it: its leaves' entries (triangleOrder, with repeats) name scene triangles, which GpuSceneData
+// maps to their BVH-order index in leaf records of their own (renderer/bvh_leaf_records.h).
 //
 // Measured on a shared 2-core Debian 12 machine (raylab_bvh_report, docs/results/embree-bvh/README.md), the
 // hand-written single-threaded binned SAH builder this replaces (revision 6b6e6a7) against Embree 3.13.5
@@ -87,6 +88,40 @@ void* embreeCreateLeaf(RTCThreadLocalAllocator alloc, const RTCBuildPrimitive* p
   n->prims = static_cast<uint32_t*>(rtcThreadLocalAlloc(alloc, sizeof(uint32_t) * std::max<size_t>(count, 1), 4));
   for (size_t i = 0; i < count; ++i) n->prims[i] = prims[i].primID;
   return n;
+}
+
+// Embree's spatial-split callback: the boxes of the parts of a triangle on either side of the plane
+// `dimension` = `position`, each cut down to the box the reference has already (it may be a part of a part).
+// The triangle's corners on a side and its edges' crossings of the plane bound that side's part. Where float
+// rounding leaves a side's box empty (a crossing just outside the reference's box), that side keeps the
+// reference's box cut at the plane: a looser box loses no hit, an empty one would.
+void embreeSplitPrimitive(const RTCBuildPrimitive* prim, unsigned int dimension, float position, RTCBounds* leftBounds,
+                          RTCBounds* rightBounds, void* userPtr) {
+  const Triangle& t = (*static_cast<const std::vector<Triangle>*>(userPtr))[prim->primID];
+  glm::vec3 lo[2] = {glm::vec3(std::numeric_limits<float>::max()), glm::vec3(std::numeric_limits<float>::max())};
+  glm::vec3 hi[2] = {glm::vec3(-std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
+  auto grow = [&](int side, glm::vec3 p) { lo[side] = glm::min(lo[side], p), hi[side] = glm::max(hi[side], p); };
+  for (int i = 0; i < 3; ++i) {
+    const glm::vec3 a = t.v[i], b = t.v[(i + 1) % 3];
+    if (a[dimension] <= position) grow(0, a);
+    if (a[dimension] >= position) grow(1, a);
+    if ((a[dimension] < position && position < b[dimension]) || (b[dimension] < position && position < a[dimension])) {
+      glm::vec3 c = a + (b - a) * ((position - a[dimension]) / (b[dimension] - a[dimension]));
+      c[dimension] = position;
+      grow(0, c);
+      grow(1, c);
+    }
+  }
+  const glm::vec3 primLo(prim->lower_x, prim->lower_y, prim->lower_z), primHi(prim->upper_x, prim->upper_y, prim->upper_z);
+  RTCBounds* out[2] = {leftBounds, rightBounds};
+  for (int side = 0; side < 2; ++side) {
+    glm::vec3 cutLo = primLo, cutHi = primHi;
+    (side == 0 ? cutHi : cutLo)[dimension] = position;
+    glm::vec3 l = glm::max(lo[side], cutLo), h = glm::min(hi[side], cutHi);
+    if (l.x > h.x || l.y > h.y || l.z > h.z) l = cutLo, h = cutHi;
+    out[side]->lower_x = l.x, out[side]->lower_y = l.y, out[side]->lower_z = l.z;
+    out[side]->upper_x = h.x, out[side]->upper_y = h.y, out[side]->upper_z = h.z;
+  }
 }
 
 bool finite(const Triangle& t) {
@@ -240,11 +275,14 @@ struct BvhFlattener {
   }
 };
 
-// One rtcBuildBVH; null when Embree gave up (its depth limit with too small a leaf limit).
-const EmbreeBuildNode* runEmbreeBuild(RTCBVH handle, RTCBuildPrimitive* prims, size_t count, uint32_t leafLimit) {
+// One rtcBuildBVH; null when Embree gave up (its depth limit with too small a leaf limit). `capacity` above
+// `count` (room for the split references) with BvhSplits::Spatial.
+const EmbreeBuildNode* runEmbreeBuild(RTCBVH handle, RTCBuildPrimitive* prims, size_t count, size_t capacity,
+                                      uint32_t leafLimit, BvhSplits splits, const std::vector<Triangle>& triangles) {
+  const bool spatial = splits == BvhSplits::Spatial;
   RTCBuildArguments args = rtcDefaultBuildArguments();
   args.byteSize = sizeof(args);
-  args.buildQuality = RTC_BUILD_QUALITY_MEDIUM;
+  args.buildQuality = spatial ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM;
   args.buildFlags = RTC_BUILD_FLAG_NONE;
   args.maxBranchingFactor = 2;
   args.maxDepth = kEmbreeMaxDepth;
@@ -258,14 +296,14 @@ const EmbreeBuildNode* runEmbreeBuild(RTCBVH handle, RTCBuildPrimitive* prims, s
   args.bvh = handle;
   args.primitives = prims;
   args.primitiveCount = count;
-  args.primitiveArrayCapacity = count;  // no room to split primitives into: no spatial splits
+  args.primitiveArrayCapacity = spatial ? capacity : count;  // no room to split into: no spatial splits
   args.createNode = embreeCreateNode;
   args.setNodeChildren = embreeSetChildren;
   args.setNodeBounds = embreeSetBounds;
   args.createLeaf = embreeCreateLeaf;
-  args.splitPrimitive = nullptr;
+  args.splitPrimitive = spatial ? embreeSplitPrimitive : nullptr;
   args.buildProgress = nullptr;
-  args.userPtr = nullptr;
+  args.userPtr = const_cast<std::vector<Triangle>*>(&triangles);  // read only, by embreeSplitPrimitive
   return static_cast<const EmbreeBuildNode*>(rtcBuildBVH(&args));
 }
 
@@ -282,21 +320,24 @@ double msSince(std::chrono::steady_clock::time_point t) {
 }
 
 // Lays out Embree's tree into arrays of their final size (each element written once: see BvhFlattener).
-void flattenInto(Bvh& bvh, const EmbreeBuildNode& root, size_t triangleCount, glm::vec3 lo, glm::vec3 hi,
-                 uint32_t threads) {
-  if (trianglesIn(&root) != triangleCount)
-    throw std::runtime_error("buildBvh: Embree's leaves hold " + std::to_string(trianglesIn(&root)) +
-                             " triangles of " + std::to_string(triangleCount));
+// Without splits the leaves hold every triangle once; with them, at least as many entries and at most the room
+// they were given.
+void flattenInto(Bvh& bvh, const EmbreeBuildNode& root, size_t triangleCount, size_t capacity, glm::vec3 lo,
+                 glm::vec3 hi, uint32_t threads) {
+  const size_t references = trianglesIn(&root);
+  if (references < triangleCount || references > capacity)
+    throw std::runtime_error("buildBvh: Embree's leaves hold " + std::to_string(references) + " triangles of " +
+                             std::to_string(triangleCount));
   resizeFaultingInParallel(bvh.nodes, 1 + 2 * size_t(interiorIn(&root)), threads);
   bvh.nodes[0].boundsMin = lo;
   bvh.nodes[0].boundsMax = hi;
-  resizeFaultingInParallel(bvh.triangleOrder, triangleCount, threads);
+  resizeFaultingInParallel(bvh.triangleOrder, references, threads);
   BvhFlattener{bvh}.flatten(root, threads);
 }
 
 }  // namespace
 
-Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize, uint32_t threads) {
+Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize, uint32_t threads, BvhSplits splits) {
   const auto start = std::chrono::steady_clock::now();
   Bvh bvh;
   if (triangles.empty()) {
@@ -304,7 +345,10 @@ Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize, uint3
   } else {
     threads = workerThreads(threads, triangles.size(), 16384);
     // Not zero-filled: every element is written before Embree reads it (10M triangles: 320 MB).
-    auto prims = std::make_unique_for_overwrite<RTCBuildPrimitive[]>(triangles.size());
+    const size_t capacity = splits == BvhSplits::Spatial
+                                ? triangles.size() + static_cast<size_t>(kSpatialSplitBudget * triangles.size())
+                                : triangles.size();
+    auto prims = std::make_unique_for_overwrite<RTCBuildPrimitive[]>(capacity);
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     fillPrimitives(triangles, threads, prims.get(), lo, hi);
     bvh.stats.primitivesMs = msSince(start);
@@ -320,7 +364,7 @@ Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize, uint3
     // refilled (Embree reorders the array it is given).
     for (bool retry = false;; retry = true) {
       if (retry) fillPrimitives(triangles, threads, prims.get(), lo, hi);
-      root = runEmbreeBuild(handle, prims.get(), triangles.size(), leafLimit);
+      root = runEmbreeBuild(handle, prims.get(), triangles.size(), capacity, leafLimit, splits, triangles);
       error = device.takeError();
       if (root || leafLimit >= kEmbreeLeafLimit || error.find("depth limit") == std::string::npos) break;
       leafLimit = std::min(leafLimit * 2, kEmbreeLeafLimit);
@@ -331,7 +375,7 @@ Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize, uint3
     try {
       if (!root || !error.empty())
         throw std::runtime_error("buildBvh: Embree's rtcBuildBVH failed: " + (error.empty() ? "no tree" : error));
-      flattenInto(bvh, *root, triangles.size(), lo, hi, threads);
+      flattenInto(bvh, *root, triangles.size(), capacity, lo, hi, threads);
     } catch (...) {
       rtcReleaseBVH(handle);
       throw;
@@ -341,6 +385,7 @@ Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize, uint3
     bvh.stats.maxLeafSize = leafLimit;
   }
   bvh.stats.nodeCount = static_cast<uint32_t>(bvh.nodes.size());
+  bvh.stats.references = static_cast<uint32_t>(bvh.triangleOrder.size());
   bvh.stats.buildMs = msSince(start);
   bvh.stats.sahCost = bvhSahCost(bvh);
   return bvh;

@@ -1,5 +1,6 @@
 #include "renderer/gpu_scene.h"
 
+#include "renderer/bvh_leaf_records.h"
 #include "renderer/bvh_pairs.h"
 #include "renderer/vk/vk_context.h"
 
@@ -95,7 +96,13 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCol
     buffers_.push_back(makeBufferFrom(ctx, vec));
     return buffers_.back().address();
   };
-  block_.nodes = add(pairNodes(bvh));
+  // Both binary trees read leaf records: the plain tree's are its own order (entry i, triangle i).
+  binary_ = {add(pairNodes(bvh)), add(leafRecords(scene.triangles, bvh.triangleOrder, bvh.triangleOrder))};
+  {
+    const Bvh split = buildBvh(scene.triangles, kDefaultMaxLeafSize, 0, BvhSplits::Spatial);
+    splitStats_ = split.stats;
+    split_ = {add(pairNodes(split)), add(leafRecords(scene.triangles, split.triangleOrder, bvh.triangleOrder))};
+  }
   block_.wideNodes = add(wide.nodes);
   block_.bvhLayout = RL_BVH_BINARY;  // block(layout) sets it
   block_.triangles = add(tris);

@@ -24,9 +24,14 @@ class GpuSceneData {
   gpu::GpuScene block(BvhLayout layout) const {
     gpu::GpuScene b = block_;
     b.bvhLayout = layout == BvhLayout::Wide ? RL_BVH_WIDE : RL_BVH_BINARY;
+    const BinaryTree& tree = layout == BvhLayout::Sbvh ? split_ : binary_;
+    b.nodes = tree.nodes;
+    b.leafTriangles = tree.leafTriangles;
     return b;
   }
   const BvhBuildStats& bvhStats() const { return bvhStats_; }
+  // The binary tree built again with spatial splits (BvhLayout::Sbvh) over the same BVH order.
+  const BvhBuildStats& splitBvhStats() const { return splitStats_; }
   // The wide BVH collapsed from the binary one; both are on the GPU (Settings::bvh picks one per frame).
   const BvhWideStats& wideBvhStats() const { return wideStats_; }
   WideCollapse wideCollapse() const { return wideCollapse_; }
@@ -39,9 +44,14 @@ class GpuSceneData {
   const std::vector<glm::vec3>& bvhOrderVertices() const { return bvhOrderVertices_; }
 
  private:
+  // A binary tree on the GPU: its pair nodes and leaf records (GpuScene::nodes, leafTriangles).
+  struct BinaryTree {
+    uint64_t nodes = 0, leafTriangles = 0;
+  };
   std::vector<GpuBuffer> buffers_;
   gpu::GpuScene block_{};
-  BvhBuildStats bvhStats_;
+  BinaryTree binary_, split_;
+  BvhBuildStats bvhStats_, splitStats_;
   BvhWideStats wideStats_;
   WideCollapse wideCollapse_;
   Bounds bounds_;

@@ -27,7 +27,7 @@ const std::pair<SortPolicy, const char*> kPolicyNames[] = {
     {SortPolicy::Always, "always"}, {SortPolicy::Never, "never"}, {SortPolicy::Auto, "auto"}};
 const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},
                                                        {Kernel::Megakernel, "megakernel"}};
-const std::pair<BvhLayout, const char*> kBvhLayoutNames[] = {{BvhLayout::Binary, "binary"}, {BvhLayout::Wide, "wide"}};
+const std::pair<BvhLayout, const char*> kBvhLayoutNames[] = {{BvhLayout::Binary, "binary"}, {BvhLayout::Sbvh, "sbvh"}, {BvhLayout::Wide, "wide"}};
 const std::pair<WideCollapse, const char*> kWideCollapseNames[] = {{WideCollapse::Greedy, "greedy"},
                                                                    {WideCollapse::Sah, "sah"}};
 const std::pair<Tracer, const char*> kTracerNames[] = {{Tracer::Compute, "compute"}, {Tracer::Rt, "rt"}};

@@ -114,7 +114,9 @@ enum class TraceShade { Split, Fused };
 // Measured on an H200 (docs/results/h200-wide-bvh/cwbvh, 4 bounces, 8.4M paths): wide is level with binary
 // unsorted (Sponza 27.32 against 27.39 ms; the hall 17.20 against 15.82) and faster sorted (Sponza 24.85
 // against 26.16); binary stays the default, the faster unsorted frame on the built-in hall.
-enum class BvhLayout { Binary, Wide };
+// sbvh: the binary tree built again with spatial splits (renderer/bvh.h, BvhSplits::Spatial) over the same
+// BVH order, walked by the binary traversal.
+enum class BvhLayout { Binary, Sbvh, Wide };
 // How the wide BVH is collapsed from the binary one (renderer/bvh_wide_slots.h): greedy (open the largest-area
 // subtree until 8) or SAH-optimal (Ylitie et al.'s dynamic program). The collapse moves the triangles into its
 // leaf order, which both layouts and the emitter table read: another collapse is another scene (built again,

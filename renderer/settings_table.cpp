@@ -62,8 +62,9 @@ std::vector<SettingRow> tracerRows() {
           .sample("rt"),
       // Another layout may break ties between equally near triangles otherwise: a new image.
       RAYLAB_FIELD(bvh, "bvh").jsonAbsent("bvh", "binary").csv("bvh").effects(kAccumulation)
-          .help("binary|wide", "compute tracer: the binary BVH, or the compressed 8-wide one collapsed\n"
-                "from it (quantized child boxes, as CWBVH; the default)").sample("binary"),
+          .help("binary|sbvh|wide", "compute tracer: the binary BVH, the binary BVH with spatial splits\n"
+                "(SBVH), or the compressed 8-wide one collapsed from the first (quantized child boxes, as\n"
+                "CWBVH; the default)").sample("binary"),
       RAYLAB_FIELD(wideCollapse, "wide-collapse").jsonAbsent("wide_collapse", "greedy").csv("wide_collapse")
           .effects(kEffectScene | kAccumulation | kCache)
           .help("greedy|sah", "how the wide BVH is collapsed from the binary one: open the largest subtree\n"

@@ -85,24 +85,28 @@ vec2 intersectPair(vec4 bx, vec4 by, vec4 bz, vec3 invDir, vec3 originInv, float
   return vec2(enter.x <= leave.x ? enter.x : 1e30, enter.y <= leave.y ? enter.y : 1e30);
 }
 
-// The triangles first .. first + count - 1 of a leaf; true when anyHit may stop.
-bool intersectLeaf(TriangleQuads tris, uint first, uint count, vec3 origin, vec3 dir, inout HitRecord hit,
+// The leaf entries first .. first + count - 1 (GpuLeafTriangle: v0 with the BVH-order index in w, two edges); a
+// hit reports the entry's triangle. True when anyHit may stop.
+bool intersectLeaf(TriangleQuads entries, uint first, uint count, vec3 origin, vec3 dir, inout HitRecord hit,
                    inout float tMax, bool anyHit) {
-  for (uint index = first; index < first + count; ++index)
-    intersectTriangleEdges(tris.v[3u * index].xyz, tris.v[3u * index + 1u].xyz, tris.v[3u * index + 2u].xyz, index,
-                           origin, dir, hit, tMax);
+  for (uint entry = first; entry < first + count; ++entry) {
+    const vec4 v0 = entries.v[3u * entry];
+    intersectTriangleEdges(v0.xyz, entries.v[3u * entry + 1u].xyz, entries.v[3u * entry + 2u].xyz,
+                           floatBitsToUint(v0.w), origin, dir, hit, tMax);
+  }
   return anyHit && hit.t > 0.0;
 }
 
-// The binary tree as pair nodes (BvhPairNode): each iteration fetches one node, four 16-byte words, and tests
-// both children's boxes; leaf children are intersected there and then, interior ones visited nearer first (the
-// farther pushed). anyHit: stop at the first hit (shadow rays). `steps` counts the pair nodes visited.
+// A binary tree as pair nodes (BvhPairNode), with or without spatial splits (GpuScene::nodes and leafTriangles
+// are the chosen tree's): each iteration fetches one node, four 16-byte words, and tests both children's boxes;
+// leaf children are intersected there and then, interior ones visited nearer first (the farther pushed).
+// anyHit: stop at the first hit (shadow rays). `steps` counts the pair nodes visited.
 HitRecord traverseBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool anyHit) {
   HitRecord hit = noHit();
   const vec3 invDir = safeInverse(dir);
   const vec3 originInv = origin * invDir;
   BvhPairQuads nodes = BvhPairQuads(scene.nodes);
-  TriangleQuads tris = TriangleQuads(scene.triangles);
+  TriangleQuads tris = TriangleQuads(scene.leafTriangles);
   uint stack[RL_BVH_STACK];
   uint sp = 0u;
   uint node = 0u;

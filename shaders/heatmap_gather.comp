@@ -12,6 +12,7 @@
 #include "path_state.glsl"
 #include "heatmap_colours.glsl"
 #include "dispatch_index.glsl"
+#include "camera_order.h"
 
 layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 layout(push_constant, scalar) uniform Push { HeatmapPush pc; };
@@ -63,7 +64,8 @@ void main() {
   uint i = flatInvocationIndex();
   if (i >= f.pathCount) return;
   GpuPathState s = f.state[pc.stateSet];
-  uint id = pc.megakernel != 0u ? i : pathId(s, i);  // megakernel slot i: path i
+  // The megakernel's slot i holds the path generate puts there (camera_order.h).
+  uint id = pc.megakernel != 0u ? cameraPathOfSlot(i, f.width, f.height, f.sppPerFrame) : pathId(s, i);
   bool alive = pc.megakernel != 0u || (i < f.live.v[RL_LIVE_COUNT] && id != RL_DEAD_PATH);
   if (!alive || id % f.sppPerFrame != 0u) return;
   uint pixel = id / f.sppPerFrame;

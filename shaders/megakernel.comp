@@ -9,16 +9,18 @@
 #include "path_shading.glsl"
 #include "path_stage.glsl"
 #include "dispatch_index.glsl"
+#include "camera_order.h"
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   gCounters = f.counters;
   gCounterBase = 0u;  // every bounce counts in bounce 0's slots
-  uint id = flatInvocationIndex();
-  if (id >= f.pathCount) {
+  const uint slot = flatInvocationIndex();
+  if (slot >= f.pathCount) {
     countRays(0u);
     return;
   }
+  const uint id = cameraPathOfSlot(slot, f.width, f.height, f.sppPerFrame);  // generate's order
   uint rng = rngSeed(id, f.frameIndex, 0u, f.seed, RL_RNG_CAMERA);
   PathVars p = cameraPath(f.camera, id / f.sppPerFrame, f.width, f.height, rng);
   uint steps = 0u, rays = 0u;
@@ -32,7 +34,7 @@ void main() {
     shadePath(f.scene, p, hit, b, f.bounceCount, rng);
     radiance = addBounceRadiance(radiance, b, p.radiance);
   }
-  f.hits.steps.v[id] = steps;  // slot i holds path i here: in dispatch order like the wavefront's
+  f.hits.steps.v[slot] = steps;  // in dispatch order like the wavefront's (the heatmap maps slots to paths)
   f.results.v[id] = vec4(radiance, 1.0);
   countRays(rays);
 }

@@ -2,11 +2,12 @@
 // and the shadow rays through the ray-tracing pipeline; the same shading functions and random streams.
 #include "rt_stage.glsl"
 #include "path_stage.glsl"
+#include "camera_order.h"
 
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
-  uint id = gl_LaunchIDEXT.x;
-  if (id >= f.pathCount) return;
+  if (gl_LaunchIDEXT.x >= f.pathCount) return;
+  const uint id = cameraPathOfSlot(gl_LaunchIDEXT.x, f.width, f.height, f.sppPerFrame);  // generate's order
   uint rng = rngSeed(id, f.frameIndex, 0u, f.seed, RL_RNG_CAMERA);
   PathVars p = cameraPath(f.camera, id / f.sppPerFrame, f.width, f.height, rng);
   uint rays = 0u;

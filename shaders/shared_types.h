@@ -116,9 +116,23 @@ struct BvhWideNode {
   uint qhi[6];     // 8-bit upper planes, the same packing
 };
 #define RL_BVH_WIDTH 8u
-// GpuScene::bvhLayout: which tree traceClosest and occluded walk (Settings::bvh).
+// GpuScene::bvhLayout: which tree traceClosest and occluded walk (Settings::bvh). Both binary trees (without and
+// with spatial splits) are pair nodes over leaf records: GpuSceneData::block points `nodes` and `leafTriangles`
+// at the chosen one's.
 #define RL_BVH_BINARY 0u
 #define RL_BVH_WIDE 1u
+
+// A leaf entry of a binary tree: its triangle as the traversal tests it (v0 and two edges, GpuTriangle's floats)
+// and the triangle's BVH-order index, which is what a hit reports. With spatial splits a triangle has an entry
+// in every leaf its parts fell into (renderer/bvh_leaf_records.h).
+struct GpuLeafTriangle {
+  vec3 v0;
+  uint triangle;  // BVH-order index (GpuTriangle, the emitters, the hits)
+  vec3 e1;
+  uint pad0;
+  vec3 e2;
+  uint pad1;
+};
 
 // Triangle in BVH order, stored for Moeller-Trumbore: v0 and the two edges.
 struct GpuTriangle {
@@ -195,7 +209,7 @@ layout(buffer_reference, scalar) buffer UVec4Buf { uvec4 v[]; };
 
 // Everything a traversal or shading function needs to know about the scene.
 struct GpuScene {
-  RL_REF(BvhPairQuads) nodes;  // the binary BVH's pair nodes (BvhPairNode), the root's children first
+  RL_REF(BvhPairQuads) nodes;  // the chosen binary BVH's pair nodes (BvhPairNode), the root's children first
   RL_REF(TriangleBuf) triangles;
   RL_REF(TriangleUvBuf) uvs;
   RL_REF(MaterialBuf) materials;
@@ -212,6 +226,8 @@ struct GpuScene {
   RL_REF(BvhWideNodeBuf) wideNodes;
   uint bvhLayout;
   uint pad0;
+  // The chosen binary BVH's leaf entries (GpuLeafTriangle), which its pair nodes' leaf children index.
+  RL_REF(TriangleQuads) leafTriangles;
   RL_ADDRESS tlas;            // top-level acceleration structure of the rt tracer (0 with the compute tracer)
 };
 

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "renderer/bvh_leaf_records.h"
 #include "renderer/bvh_pairs.h"
 #include "renderer/vk/gpu_buffer.h"
 #include "renderer/reorder/key_functions.h"
@@ -110,6 +111,9 @@ class FakeFrame {
     oneLeaf.nodes = {{b.min, 0u, b.max, static_cast<uint32_t>(tris.size())}};
     nodes_ = makeBufferFrom(ctx, pairNodes(oneLeaf));
     triangles_ = makeBufferFrom(ctx, tris);
+    std::vector<uint32_t> order(tris.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    leafTriangles_ = makeBufferFrom(ctx, leafRecords(scene.triangles, order, order));
     origin_ = GpuBuffer(ctx, capacity * sizeof(glm::vec4));
     direction_ = GpuBuffer(ctx, capacity * sizeof(glm::vec4));
     throughput_ = GpuBuffer(ctx, capacity * sizeof(glm::vec4));
@@ -138,6 +142,7 @@ class FakeFrame {
     hitT_.uploadVector(p.hitT);
     gpu::GpuFrame f{};
     f.scene.nodes = nodes_.address();
+    f.scene.leafTriangles = leafTriangles_.address();
     f.scene.triangles = triangles_.address();
     gpu::GpuPathState& s = f.state[stateSet];
     s.origin = origin_.address();
@@ -172,7 +177,7 @@ class FakeFrame {
   const VulkanContext* ctx_;
   uint32_t capacity_;
   uint32_t frameIndex_ = 0, seed_ = 0;
-  GpuBuffer nodes_, triangles_, origin_, direction_, throughput_, hitT_, live_, frameBlock_;
+  GpuBuffer nodes_, triangles_, leafTriangles_, origin_, direction_, throughput_, hitT_, live_, frameBlock_;
 };
 
 struct KeyOutput {

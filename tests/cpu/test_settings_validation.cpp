@@ -73,7 +73,7 @@ TEST(SettingsValidation, HostileSidecarValuesAreRefusedLikeTheCommandLine) {
   EXPECT_EQ(jsonError("fusion", "sideways"), "settings: 'fusion' must be none, keys, gather or both, got \"sideways\"");
   EXPECT_EQ(jsonError("compaction", "always"), "settings: 'compaction' must be none or shade, got \"always\"");
   EXPECT_EQ(jsonError("trace_shade", "both"), "settings: 'trace_shade' must be split or fused, got \"both\"");
-  EXPECT_EQ(jsonError("bvh", "bogus"), "settings: 'bvh' must be binary or wide, got \"bogus\"");
+  EXPECT_EQ(jsonError("bvh", "bogus"), "settings: 'bvh' must be binary, sbvh or wide, got \"bogus\"");
   // The tile sort needs the finished paths packed out first: refused without compaction, with keys made in
   // shade (which does not compact) and on the rt tracer; fine where nothing sorts.
   Settings tile;

@@ -39,11 +39,16 @@ static_assert(offsetof(BvhWideNode, triBase) == 20);
 static_assert(offsetof(BvhWideNode, meta) == 24);
 static_assert(offsetof(BvhWideNode, qlo) == 32);
 static_assert(offsetof(BvhWideNode, qhi) == 56);
-// + the wide BVH's address, its layout word and pad, + the TLAS address (uvec2 in GLSL)
-static_assert(sizeof(GpuScene) == 7 * 8 + 8 + 16 + 8 + 8 + 8);
+// + the wide BVH's address, its layout word and pad, the leaf records' address, + the TLAS address (uvec2 in GLSL)
+static_assert(sizeof(GpuScene) == 7 * 8 + 8 + 16 + 8 + 8 + 8 + 8);
 static_assert(offsetof(GpuScene, wideNodes) == 80);
 static_assert(offsetof(GpuScene, bvhLayout) == 88);
-static_assert(offsetof(GpuScene, tlas) == 96);
+static_assert(offsetof(GpuScene, leafTriangles) == 96);
+static_assert(offsetof(GpuScene, tlas) == 104);
+static_assert(sizeof(GpuLeafTriangle) == 48);
+static_assert(offsetof(GpuLeafTriangle, triangle) == 12);
+static_assert(offsetof(GpuLeafTriangle, e1) == 16);
+static_assert(offsetof(GpuLeafTriangle, e2) == 32);
 static_assert(sizeof(GpuPathState) == 3 * 8);  // three 16-byte elements a path (RL_STATE_*)
 static_assert(sizeof(GpuHits) == 4 * 8);
 static_assert(offsetof(GpuFrame, scene) == 64);

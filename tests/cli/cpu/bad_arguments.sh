@@ -42,7 +42,7 @@ expect 2 render --trace-shade together
 expect 2 render --bvh bogus
 expect 2 bench --bvhs binary,bogus
 out=$(timeout 60 "$raylab" render --bvh bogus 2>&1)
-grep -qF -- "--bvh must be one of binary|wide, got 'bogus'" <<<"$out" || { echo "FAIL: --bvh bogus: $out"; fail=1; }
+grep -qF -- "--bvh must be one of binary|sbvh|wide, got 'bogus'" <<<"$out" || { echo "FAIL: --bvh bogus: $out"; fail=1; }
 expect 2 render --strategy fixed --sort tile --compaction none
 expect 2 render --learn-every 0
 expect 2 render --learn-every 65
@@ -135,7 +135,7 @@ hostile grid_auto_cells 0 "must be between 1 and 1024, got 0"
 hostile heatmap '"cache-mean"' "--heatmap cache-mean"
 hostile strategy '"fastest"' "unknown kernel, strategy or sort"
 hostile frames 1e12 "--frames must be between 1 and 4294967295"
-hostile bvh '"bogus"' "'bvh' must be binary or wide"
+hostile bvh '"bogus"' "'bvh' must be binary, sbvh or wide"
 # A sweep file is command-line flags: the same checks.
 printf 'bounces = -5\n' >"$dir/sweep.txt"
 expect 2 bench --sweep "$dir/sweep.txt"

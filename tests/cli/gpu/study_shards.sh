@@ -39,7 +39,7 @@ top, k = sys.argv[1], int(sys.argv[2])
 RUN_DEPENDENT = {'simt_efficiency', 'virtual_warp_efficiency', 'virtual_warp_efficiency_after_first', 'sorted_after',
                  'prediction_error_mean', 'prediction_error_median', 'cell_hit_rate'}
 def timing(c):
-    return c.endswith('_ms') or c.startswith('frame_ms') or c == 'rays_per_second' or c in RUN_DEPENDENT
+    return c.endswith('_ms') or c.startswith('frame_ms') or c.endswith('rays_per_second') or c in RUN_DEPENDENT
 total = 0
 for size in ('32x16', '64x32'):
     a = list(csv.DictReader(open('%s/whole/size-%s/results.csv' % (top, size))))
