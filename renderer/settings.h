@@ -111,11 +111,11 @@ enum class TraceShade { Split, Fused };
 // collapsed from it (renderer/bvh_wide.h). Both index the same BVH-order triangles; the wide traversal may pick
 // another of two triangles hit at the same t, so switching restarts the image (and the invariant holds within
 // one layout). The rt tracer ignores it. A traversal step counts a node of the chosen layout (docs).
-// Measured on an H200 (docs/results/h200-wide-bvh/cwbvh, 4 bounces, 8.4M paths): wide is level with binary
-// unsorted (Sponza 27.32 against 27.39 ms; the hall 17.20 against 15.82) and faster sorted (Sponza 24.85
-// against 26.16); binary stays the default, the faster unsorted frame on the built-in hall.
 // sbvh: the binary tree built again with spatial splits (renderer/bvh.h, BvhSplits::Spatial) over the same
-// BVH order, walked by the binary traversal.
+// BVH order, walked by the binary traversal: the default, the fastest frame of every cell measured on an H200
+// (docs/results/h200-sbvh: Sponza, the hall and the clutter room at 1e6 triangles, 1920x1080 and 4096x2048,
+// 4 bounces, unsorted, two-point and the megakernel; frames 1.09-1.42x faster than binary, 1.05-1.56x than wide).
+// Binary and wide win no cell there; they stay for comparison (wide: the BVH order comes from its collapse).
 enum class BvhLayout { Binary, Sbvh, Wide };
 // How the wide BVH is collapsed from the binary one (renderer/bvh_wide_slots.h): greedy (open the largest-area
 // subtree until 8) or SAH-optimal (Ylitie et al.'s dynamic program). The collapse moves the triangles into its
@@ -207,7 +207,7 @@ struct Settings {
   float exposure = 1.0f;
   Kernel kernel = Kernel::Wavefront;
   Tracer tracer = Tracer::Compute;
-  BvhLayout bvh = BvhLayout::Wide;  // compute tracer only (docs/results/h200-wide-bvh/final-study)
+  BvhLayout bvh = BvhLayout::Sbvh;  // compute tracer only (docs/results/h200-sbvh)
   WideCollapse wideCollapse = WideCollapse::Sah;  // the scene's wide BVH (both tracers see its triangle order)
   Ser ser = Ser::Off;  // rt tracer's megakernel only
 

@@ -63,8 +63,8 @@ std::vector<SettingRow> tracerRows() {
       // Another layout may break ties between equally near triangles otherwise: a new image.
       RAYLAB_FIELD(bvh, "bvh").jsonAbsent("bvh", "binary").csv("bvh").effects(kAccumulation)
           .help("binary|sbvh|wide", "compute tracer: the binary BVH, the binary BVH with spatial splits\n"
-                "(SBVH), or the compressed 8-wide one collapsed from the first (quantized child boxes, as\n"
-                "CWBVH; the default)").sample("binary"),
+                "(SBVH; the default), or the compressed 8-wide one collapsed from the first (quantized\n"
+                "child boxes, as CWBVH)").sample("binary"),
       RAYLAB_FIELD(wideCollapse, "wide-collapse").jsonAbsent("wide_collapse", "greedy").csv("wide_collapse")
           .effects(kEffectScene | kAccumulation | kCache)
           .help("greedy|sah", "how the wide BVH is collapsed from the binary one: open the largest subtree\n"

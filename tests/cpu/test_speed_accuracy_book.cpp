@@ -302,7 +302,8 @@ TEST(SpeedAccuracyBook, BvhLayoutIsAMethodOfTheComputeTracer) {
   };
   Settings unsorted, sortedAlways = sorted(KeyStrategy::TwoPoint), mega;
   mega.kernel = Kernel::Megakernel;
-  EXPECT_EQ(describe(key(unsorted, BvhLayout::Wide)), "unsorted");  // the default
+  EXPECT_EQ(describe(key(unsorted, BvhLayout::Sbvh)), "unsorted");  // the default
+  EXPECT_EQ(describe(key(unsorted, BvhLayout::Wide)), "unsorted wide");
   EXPECT_EQ(describe(key(unsorted, BvhLayout::Binary)), "unsorted binary");
   EXPECT_EQ(describe(key(mega, BvhLayout::Binary)), "megakernel binary");
   EXPECT_NE(key(sortedAlways, BvhLayout::Binary), key(sortedAlways, BvhLayout::Wide));
