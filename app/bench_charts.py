@@ -25,6 +25,10 @@ Sweeps over the path count (--sizes, --spps) name each case by its size and spp 
                          unsorted one, against paths per frame (width x height x spp, log), one line per case
                          and bounce count; below them the same ratios against the unsorted virtual warp
                          efficiency of bounces >= 1
+Sweeps along a camera path (--camera-path; <case> = scene-PATH, a file path by its stem) draw the stage
+breakdown (times over the path's frames) and, from motion.json (app/bench_path_charts.py):
+  motion_frame_ms_<case>.png          work time of each path frame, one line per cell, cuts dotted
+  motion_prediction_error_<case>.png  the prediction error of each path frame (the detailed replay)
 Uses Debian's python3-matplotlib (run with /usr/bin/python3). Exit status: 0 charts drawn, 1 a chart could
 not be written (named), 2 usage, 3 matplotlib is missing.
 """
@@ -56,6 +60,7 @@ import matplotlib.ticker  # noqa: E402
 
 from checked_write import write_with  # noqa: E402  (app/checked_write.py, beside this script)
 from bench_cells import load_cells  # noqa: E402  (app/bench_cells.py)
+from bench_path_charts import path_charts, safe  # noqa: E402  (app/bench_path_charts.py)
 
 def stage_columns(header, measured):
     """The stages a CSV header has a NAME_ms column for and some cell timed, in the header's order (that of
@@ -135,7 +140,7 @@ def paths_per_frame(row):
 
 def case_name(row, with_bounces=False, with_paths=False):
     w, h, spp = paths_group(row)
-    return (f'{scene_name(row)}-{row["view"]}' + (f"-{w}x{h}-spp{spp}" if with_paths else "")
+    return (f'{scene_name(row)}-{safe(row["view"])}' + (f"-{w}x{h}-spp{spp}" if with_paths else "")
             + (f'-b{row["bounces"]}' if with_bounces else ""))
 
 
@@ -478,12 +483,16 @@ def main():
         stacked_stages(case_rows, stages, title, os.path.join(folder, f"stages_{name}.png"))
         if scale_sweep:
             continue
+        if case_rows[0].get("camera_path"):  # along a path: no reference image (equal time), times over the path
+            continue
         speed_accuracy(case_rows, title, os.path.join(folder, f"speed_accuracy_{name}.png"))
         equal_time(case_rows, curves, title, os.path.join(folder, f"equal_time_{name}.png"))
         coherence(case_rows, title, os.path.join(folder, f"coherence_{name}.png"))
         if len({r.get("tracer", "compute") for r in case_rows}) > 1:
             tracers(case_rows, title, os.path.join(folder, f"tracers_{name}.png"))
         print(f"charts for {name} in {folder}")
+    if any(r.get("camera_path") for r in rows):
+        path_charts(plt, folder, rows[0]["device"])
     if scale_sweep:
         crossover_charts(folder, rows)
     if len({paths_per_frame(r) for r in rows}) > 1:

@@ -23,7 +23,9 @@ std::vector<std::string> benchCsvColumns() {
                         "tracer_setup_ms", "sort_bits", "learn_every", "fusion", "compaction", "trace_shade", "bvh",
                         "wide_bvh_nodes", "wide_bvh_bytes", "paths_per_frame",
                         // the spread over a sweep's rounds (app/bench_rounds.h); empty with one round
-                        "rounds", "frame_ms_q1", "frame_ms_q3", "trace_after_first_ms_min", "trace_after_first_ms_max"})
+                        "rounds", "frame_ms_q1", "frame_ms_q3", "trace_after_first_ms_min", "trace_after_first_ms_max",
+                        // a camera path's replay (app/bench_path.h); empty for still frames
+                        "camera_path", "path_frames", "path_total_ms", "path_mean_ms"})
     columns.push_back(c);
   for (const SettingRow& r : settingRows())
     for (const std::string& c : r.csvColumns)

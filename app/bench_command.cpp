@@ -14,6 +14,8 @@
 #include "app/bench_charts_run.h"
 #include "app/bench_measure.h"
 #include "app/bench_merge.h"
+#include "app/bench_path.h"
+#include "app/bench_path_summary.h"
 #include "app/bench_shard.h"
 #include "app/bench_results.h"
 #include "app/bench_resume.h"
@@ -151,7 +153,7 @@ struct ReferenceCache {
 // goes on; a result that cannot be stored (WriteError) ends the sweep. Rounds interleave within a case, not
 // across cases: a case's scene and BVH are built once, and cells are compared within their case.
 size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanContext& ctx, const std::set<CellRound>& finished,
-                AppendFile& jsonl) {
+                AppendFile& jsonl, AppendFile* pathFrames) {
   size_t total = 0;  // this shard's cells' rounds
   for (size_t i = 0; i < plan.cells.size(); ++i) total += shard.contains(i) ? plan.rounds : 0;
   size_t done = finished.size(), failed = 0;
@@ -173,6 +175,13 @@ size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanCont
       LoadedScene loaded = loadSceneForSettings(caseSettings);
       double loadMs = msSince(loadStart);
       auto setupStart = std::chrono::steady_clock::now();
+      // With --camera-path every cell replays the path, resolved for this case's scene (app/bench_path.h).
+      std::optional<PathRender> path;
+      if (!plan.cameraPath.empty()) {
+        path = pathRenderFor(plan.cameraPath, loaded.scene, plan.pathFramesCap);
+        loaded.view = cameraAt(path->path, 0, path->up).view;
+        loaded.view.name = path->path.name;  // the CSV's view: the path's
+      }
       PathTracer tracer(ctx, loaded.scene, caseSettings, loaded.view);
       SceneFacts facts = sceneFactsOf(tracer.scene(), loadMs, msSince(setupStart));
       std::fprintf(stderr, "%s: %llu triangles, BVH %.1f MB (built in %.0f ms), wide BVH %.1f MB, scene made in %.0f ms\n",
@@ -186,11 +195,29 @@ size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanCont
           const size_t index = cells[position];
           if (finished.count({index, round})) continue;
           const BenchCell& cell = plan.cells[index];
-          const auto& [reference, errorCurve] = references.of(cell.settings);
           ++done;
-          // The counting frame's figures are no time: the first round measures them, later rounds skip it.
-          CellResult r = measureCell(tracer, cell.settings, plan.warmupFrames, plan.timedFrames, reference, errorCurve,
-                                     plan.detailFrame && round == 0);
+          CellResult r;
+          if (path) {
+            // The detailed replay is the first round's; its work times hold beside the others' (bench_path.h).
+            PathCellResult p = measurePathCell(tracer, cell.settings, *path, plan.warmupFrames, plan.detailFrame && round == 0);
+            std::string lines;
+            for (nlohmann::json& frame : p.frames) {
+              nlohmann::json line = {{"cell", index},         {"round", round},
+                                     {"label", cell.label},   {"scene", loaded.scene.name},
+                                     {"strategy", toString(cell.settings.strategy)},
+                                     {"sort_policy", toString(cell.settings.sortPolicy)},
+                                     {"camera_path", path->path.name}};
+              line.update(frame);
+              lines += line.dump() + "\n";
+            }
+            pathFrames->append(lines, /*durable=*/true);  // before the record: a resume keeps both or neither
+            r = std::move(p.cell);
+          } else {
+            const auto& [reference, errorCurve] = references.of(cell.settings);
+            // The counting frame's figures are no time: the first round measures them, later rounds skip it.
+            r = measureCell(tracer, cell.settings, plan.warmupFrames, plan.timedFrames, reference, errorCurve,
+                            plan.detailFrame && round == 0);
+          }
           jsonl.append(benchRecord(index, round, ctx, cell, loaded.view.name, facts, r).dump() + "\n", /*durable=*/true);
           double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
           const std::string later =
@@ -200,6 +227,9 @@ size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanCont
                        cell.settings.width, cell.settings.height, cell.settings.sppPerFrame, cell.settings.bounces,
                        cell.label.c_str(), r.frameMs.median, later.c_str(), later == "n/a" ? "" : " ms",
                        r.policySettled ? "" : " (auto still exploring when timed)");
+          if (r.path)
+            std::fprintf(stderr, "    along %s: %u frames, %.1f ms in all, %.2f ms a frame\n", r.path->name.c_str(),
+                         r.path->frames, r.path->totalMs, r.path->meanMs);
         }
     } catch (const WriteError&) {
       throw;
@@ -249,6 +279,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
     // results.csv and the other summaries exist only for a sweep that ended: an old one beside a new,
     // unfinished JSONL would lie.
     removeSweepSummaries(plan.outDir);
+    removePathSummaries(plan.outDir);
     std::set<CellRound> finished;
     if (resumeDir.empty()) {
       writeSweepRecord(plan.outDir, plan, recordArgs, shard);
@@ -260,6 +291,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
         writeFileChecked(jsonlPath, std::string_view(text).substr(0, old.wholeBytes));
       }
       for (const nlohmann::json& r : old.records) finished.insert({r.at("cell").get<size_t>(), roundOf(r)});
+      keepFinishedPathFrames(plan.outDir, finished);
       size_t shardCells = 0;
       for (size_t i = 0; i < plan.cells.size(); ++i) shardCells += shard.contains(i);
       std::fprintf(stderr, "raylab bench: resuming %s: %zu of %zu cell rounds done (%zu cells x %u rounds)%s\n",
@@ -267,9 +299,14 @@ int runBenchCommand(const std::vector<std::string>& args) {
                    old.droppedLastLine ? " (a cut-off last line dropped)" : "");
     }
     AppendFile jsonl(jsonlPath, resumeDir.empty() ? AppendFile::Start::Empty : AppendFile::Start::Keep);
-    failed = runCells(plan, shard, ctx, finished, jsonl);
+    std::optional<AppendFile> pathFrames;
+    if (!plan.cameraPath.empty())
+      pathFrames.emplace(plan.outDir + "/" + kPathFramesFile, resumeDir.empty() ? AppendFile::Start::Empty : AppendFile::Start::Keep);
+    failed = runCells(plan, shard, ctx, finished, jsonl, pathFrames ? &*pathFrames : nullptr);
     jsonl.close();
+    if (pathFrames) pathFrames->close();
     resolution = writeSweepSummaries(plan.outDir, readBenchRecords(jsonlPath).records);
+    if (pathFrames && writePathSummaries(plan.outDir)) resolution += "bench: along the camera path: " + plan.outDir + "/motion.md\n";
   } catch (const WriteError& e) {
     std::fprintf(stderr, "raylab bench: %s\nraylab bench: the cells measured so far are in %s; `raylab bench --resume %s` "
                  "continues the sweep\n", e.what(), jsonlPath.c_str(), plan.outDir.c_str());

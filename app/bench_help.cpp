@@ -38,6 +38,13 @@ std::string benchHelp() {
          "                            --sort-policy auto until its plan stops exploring: auto is timed once it\n"
          "                            has decided, and its counting frame is one it sorted as planned)\n"
          "  --reference-spp N         samples of the megakernel reference image (default 64)\n"
+         "  --camera-path FILE|builtin:NAME  every cell replays a moving camera (cases without @VIEW): after its\n"
+         "                            warm-up, learned lengths and auto's costs start from nothing, each path\n"
+         "                            frame is one fresh frame; the cell's times are over the path's frames\n"
+         "                            (path_total_ms, path_mean_ms), each frame's figures one line of\n"
+         "                            DIR/path_frames.jsonl (the first round's replay detailed unless\n"
+         "                            --no-detail), DIR/motion.md the recovery after each cut; --frames N caps\n"
+         "                            it; no reference image, so no --timed-frames, --reference-spp\n"
          "  --rounds N                measure every cell N times, in interleaved rounds (each round every cell\n"
          "                            once, in another fixed order), 1.." + std::to_string(kMaxRounds) + " (default " +
          std::to_string(kDefaultRounds) + "); the CSV's\n"

@@ -161,6 +161,11 @@ nlohmann::json toJson(const CellResult& r) {
           {"policy_frames_before_timing",
            r.policyFramesBeforeTiming ? nlohmann::json(*r.policyFramesBeforeTiming) : nlohmann::json(nullptr)},
           {"policy_settled", r.policySettled},
+          {"camera_path", r.path ? nlohmann::json{{"name", r.path->name},
+                                                  {"frames", r.path->frames},
+                                                  {"total_ms", r.path->totalMs},
+                                                  {"mean_ms", r.path->meanMs}}
+                                 : nlohmann::json(nullptr)},
           {"detailed_frame", r.detailMeasured ? toJson(r.detailed) : nlohmann::json(nullptr)}};
 }
 

@@ -16,6 +16,14 @@
 namespace raylab {
 
 
+// A cell that replayed a camera path (app/bench_path.h): its times are over the path's frames.
+struct CellPath {
+  std::string name;        // the path as given: a file, or "builtin:NAME"
+  uint32_t frames = 0;     // path frames replayed
+  double totalMs = 0.0;    // the frames' work time, summed: the path's time
+  double meanMs = 0.0;     // and per frame
+};
+
 struct CellResult {
   Spread frameMs;                         // GPU time of the whole frame
   Spread wallMs;
@@ -39,6 +47,7 @@ struct CellResult {
   // whether it had (false: it still explored after kMaxSettleFrames warm-up frames; the times mix arms).
   std::optional<uint32_t> policyFramesBeforeTiming;
   bool policySettled = true;
+  std::optional<CellPath> path;           // a camera path's replay (none: still frames)
 };
 
 // The most frames a cell of the auto policy runs after its warm-up waiting for its plan to stop exploring (it

@@ -85,6 +85,12 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   row.add("scene_bytes", scene.sceneBytes).add("bvh_build_ms", scene.bvhBuildMs).add("scene_load_ms", scene.sceneLoadMs);
   row.add("tracer_setup_ms", scene.tracerSetupMs);
   row.add("wide_bvh_nodes", scene.wideBvhNodes).add("wide_bvh_bytes", scene.wideBvhBytes);
+  // A camera path's replay (app/bench_path.h): its name, frames and time (the frames' work time summed, and
+  // per frame); empty for still frames.
+  row.add("camera_path", r.path ? csvQuote(r.path->name) : std::string());
+  row.add("path_frames", r.path ? std::to_string(r.path->frames) : std::string());
+  row.add("path_total_ms", csvNumber(r.path ? std::optional(r.path->totalMs) : std::nullopt));
+  row.add("path_mean_ms", csvNumber(r.path ? std::optional(r.path->meanMs) : std::nullopt));
   return row.values();
 }
 

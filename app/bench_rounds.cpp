@@ -40,7 +40,7 @@ constexpr const char* kTraceRateFigures[] = {"trace_camera_rays_per_second", "tr
 
 // The figures of a cell over its rounds, taken from the rounds' results.
 struct RoundFigures {
-  Series frame, wall, traceLater, rays;
+  Series frame, wall, traceLater, rays, pathTotal;
   std::map<std::string, Series> stages, bounceStages, traceRates;
 
   void add(const nlohmann::json& result) {
@@ -49,6 +49,8 @@ struct RoundFigures {
     traceLater.add(medianOf(result.value("trace_after_first_ms", nlohmann::json())));
     rays.add(medianOf(result.value("rays_per_second", nlohmann::json())));
     for (const char* name : kTraceRateFigures) traceRates[name].add(medianOf(result.value(name, nlohmann::json())));
+    const nlohmann::json path = result.value("camera_path", nlohmann::json());
+    if (path.is_object() && path.value("total_ms", nlohmann::json()).is_number()) pathTotal.add(path["total_ms"].get<double>());
     // Copies: items() of the temporary value() returns would outlive it.
     const nlohmann::json stageMs = result.value("stage_ms", nlohmann::json::object());
     const nlohmann::json bounceMs = result.value("stage_bounce_ms", nlohmann::json::object());
@@ -104,6 +106,17 @@ nlohmann::json summarise(const std::vector<const nlohmann::json*>& rounds) {
     const std::optional<double> median = s.measured() ? std::optional(spreadOf(s.values).median) : std::nullopt;
     result[name] = median ? nlohmann::json(*median) : nlohmann::json(nullptr);
     csv[name] = csvNumber(median);
+  }
+  // A camera path's time: the median over the rounds of each round's total (and that per frame).
+  if (f.pathTotal.measured() && result["camera_path"].is_object()) {
+    const double total = spreadOf(f.pathTotal.values).median;
+    const uint32_t frames = result["camera_path"].value("frames", 0u);
+    const double mean = frames ? total / frames : 0.0;
+    result["camera_path"]["total_ms"] = total;
+    result["camera_path"]["mean_ms"] = mean;
+    result["camera_path"]["round_total_ms"] = f.pathTotal.values;
+    csv["path_total_ms"] = csvNumber(total);
+    csv["path_mean_ms"] = csvNumber(mean);
   }
   // The equal-time curve's time axis: k frames of the cell's (median over rounds) frame time.
   if (result.contains("error_curve_ms") && result["error_curve_ms"].is_array()) {

@@ -198,11 +198,14 @@ std::vector<std::string> withSweepFiles(const std::vector<std::string>& rawArgs)
 struct SweepFlags {
   std::vector<std::string> cases{"temple@alley", "temple@hall", "temple@openings"};
   bool casesGiven = false;
+  std::vector<std::string> given;  // the sweep flags given, for the combinations a camera path refuses
 };
 
 // One sweep flag with its value; false for a flag the sweep does not know.
 bool parseSweepFlag(const std::string& flag, const std::string& v, BenchPlan& plan, Axes& axes, SweepFlags& sweep) {
-  if (flag == "--cases") sweep.cases = splitList(v), sweep.casesGiven = true;
+  sweep.given.push_back(flag);
+  if (flag == "--camera-path") plan.cameraPath = v;
+  else if (flag == "--cases") sweep.cases = splitList(v), sweep.casesGiven = true;
   else if (flag == "--scale-tris") axes.scaleTris = splitList(v);
   else if (flag == "--sizes") axes.sizes = nonEmptyList(flag, v);
   else if (flag == "--spps") axes.spps = nonEmptyList(flag, v);
@@ -365,6 +368,35 @@ void addCells(BenchPlan& plan, const Axes& axes) {
 
 }  // namespace
 
+// A camera path sets every frame's camera and how many frames a cell renders: flags that set either, or that
+// belong to still frames (a reference image, an error curve), make no sense with it.
+void checkPathPlan(BenchPlan& plan, const SweepFlags& sweep, const std::vector<std::string>& args) {
+  auto given = [&](const char* flag) {
+    return std::find(sweep.given.begin(), sweep.given.end(), flag) != sweep.given.end() ||
+           std::find(args.begin(), args.end(), flag) != args.end();
+  };
+  if (plan.cameraPath.empty()) return;
+  if (plan.cameraPath.front() == '-') throw UsageError("--camera-path needs a file or builtin:NAME");
+  for (const char* flag : {"--timed-frames", "--reference-spp"})
+    if (given(flag))
+      throw UsageError(std::string("--camera-path times every frame of the path, with no reference image: ") + flag +
+                       " does not apply (cap the path's frames with --frames)");
+  if (!sweep.casesGiven) {  // the default cases are views of the temple: with a path, the temple itself
+    std::vector<BenchCase> scenes;
+    for (const BenchCase& c : plan.cases)
+      if (std::none_of(scenes.begin(), scenes.end(), [&](const BenchCase& s) { return s.scene == c.scene; }))
+        scenes.push_back({c.scene, ""});
+    plan.cases = scenes;
+  }
+  for (const BenchCase& c : plan.cases) {
+    if (!c.view.empty())
+      throw UsageError("--camera-path moves the camera every frame: give it or a view in --cases (" + c.scene + "@" +
+                       c.view + "), not both");
+    checkCasePath(c.scene, plan.cameraPath);
+  }
+  if (given("--frames")) plan.pathFramesCap = plan.common.settings.frames;
+}
+
 BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
   std::vector<std::string> args = withSweepFiles(rawArgs);
   BenchPlan plan;
@@ -375,6 +407,7 @@ BenchPlan parseBenchPlan(const std::vector<std::string>& rawArgs) {
   plan.common = parseCommonOptions(args, &rest);
   parseSweepFlags(rest, plan, axes, sweep);
   plan.cases = planCases(sweep, axes);
+  checkPathPlan(plan, sweep, args);
   if (axes.strategies.size() == 1 && axes.strategies[0] == "all") {
     axes.strategies.clear();
     for (KeyStrategy s : allKeyStrategies())

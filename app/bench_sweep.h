@@ -2,6 +2,7 @@
 // Parsed from flags or a sweep file of `flag = value` lines (same names as the flags, without dashes).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,10 @@ struct BenchPlan {
   bool detailFrame = true;  // one untimed counting/readback frame per cell (SIMT, warp efficiency, accuracy)
   bool charts = true;       // draw the charts at the end (app/bench_charts.py); --no-charts: the CSV only
   std::string outDir = "bench-out";
+  // --camera-path FILE|builtin:NAME: every cell replays the path instead of timing still frames
+  // (app/bench_path.h); empty: still frames. --frames caps its frames (pathFramesCap).
+  std::string cameraPath;
+  std::optional<uint32_t> pathFramesCap;
 };
 
 // Throws UsageError for unknown names or values.

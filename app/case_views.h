@@ -12,4 +12,8 @@ namespace raylab {
 // scene to read its viewpoints (a family's smallest member: its viewpoints do not depend on the size).
 void checkCaseView(const std::string& scene, const std::string& view);
 
+// Throws UsageError ("--camera-path: ...") when `pathSpec` names no usable camera path for `scene` (an unknown
+// built-in, a file that does not parse), loading the scene as checkCaseView does. Returns the path's frames.
+uint32_t checkCasePath(const std::string& scene, const std::string& pathSpec);
+
 }  // namespace raylab

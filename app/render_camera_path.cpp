@@ -24,6 +24,10 @@ PathRender preparePathRender(const std::string& spec, const Scene& scene, const 
   if (budgetGiven)
     throw UsageError("--camera-path renders one image per path frame, not an accumulation: --time-budget does not "
                      "apply (cap the frames with --frames)");
+  return pathRenderFor(spec, scene, framesCap);
+}
+
+PathRender pathRenderFor(const std::string& spec, const Scene& scene, std::optional<uint32_t> framesCap) {
   PathRender p;
   try {
     p.path = resolveCameraPath(spec, scene);
@@ -39,17 +43,26 @@ RenderTotals renderAlongPath(PathTracer& tracer, const PathRender& p, bool stats
   RenderTotals t;
   std::fprintf(stderr, "raylab: camera path %s, %u frames\n", p.path.name.c_str(), p.frames);
   for (uint32_t f = 0; f < p.frames; ++f) {
-    const PathCamera camera = cameraAt(p.path, f, p.up);
-    tracer.setCamera(camera.view);  // restarts the accumulation, also where the camera stands still
+    const PathCamera camera = movePathCamera(tracer, p, f);
     nlohmann::json* frame = renderCountedFrame(tracer, f, stats, detailEvery, t);
     if (!frame) continue;
     (*frame)["path_frame"] = f;
-    (*frame)["camera"] = {{"position", vec3Json(camera.view.position)},
-                          {"target", vec3Json(camera.view.target)},
-                          {"fov", glm::degrees(camera.view.yfovRadians)}};
-    (*frame)["cut"] = camera.cut;
+    addPathCameraJson(*frame, camera);
   }
   return t;
+}
+
+PathCamera movePathCamera(PathTracer& tracer, const PathRender& p, uint32_t f) {
+  const PathCamera camera = cameraAt(p.path, f, p.up);
+  tracer.setCamera(camera.view);  // restarts the accumulation, also where the camera stands still
+  return camera;
+}
+
+void addPathCameraJson(nlohmann::json& frame, const PathCamera& camera) {
+  frame["camera"] = {{"position", vec3Json(camera.view.position)},
+                     {"target", vec3Json(camera.view.target)},
+                     {"fov", glm::degrees(camera.view.yfovRadians)}};
+  frame["cut"] = camera.cut;
 }
 
 nlohmann::json pathRenderJson(const PathRender& p) {

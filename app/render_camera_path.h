@@ -32,6 +32,17 @@ struct PathRender {
 PathRender preparePathRender(const std::string& spec, const Scene& scene, const std::vector<std::string>& args,
                              bool cameraGiven, bool budgetGiven, std::optional<uint32_t> framesCap);
 
+// The path `spec` names for `scene` (a bad one: UsageError naming it), `framesCap` frames at most: what
+// preparePathRender checks besides the flags, and what `raylab bench --camera-path` resolves per case.
+PathRender pathRenderFor(const std::string& spec, const Scene& scene, std::optional<uint32_t> framesCap);
+
+// Moves the tracer's camera to path frame `f` (restarting the accumulation, as a camera move in the window
+// does) and returns that camera: every command that replays a path moves it through here.
+PathCamera movePathCamera(PathTracer& tracer, const PathRender& p, uint32_t f);
+// A path frame's camera and cut flag as the stats and the bench's path_frames.jsonl record them:
+// "camera" (position, target, fov in degrees) and "cut", added to `frame`.
+void addPathCameraJson(nlohmann::json& frame, const PathCamera& camera);
+
 // Renders the path's frames; with `stats`, one JSON frame each: the frame's stats, "path_frame", "camera"
 // (position, target, fov in degrees) and "cut". Detailed figures every `detailEvery`th frame (0: none).
 RenderTotals renderAlongPath(PathTracer& tracer, const PathRender& p, bool stats, uint32_t detailEvery);
