@@ -73,6 +73,8 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
     for (const auto& [name, ms] : perStage) stages[name].push_back(ms);
     for (const auto& [name, ms] : perBounce) bounceStages[name].push_back(ms);
     traceLater.push_back(later);
+    r.commands = st.commands;
+    r.submissions = st.submissions;
   }
   r.frameMs = spreadOf(frame);
   r.wallMs = spreadOf(wall);
@@ -128,6 +130,23 @@ nlohmann::json toJson(const SceneFacts& f) {
           {"wide_bvh_bytes", f.wideBvhBytes}};
 }
 
+namespace {
+nlohmann::json commandsJson(const CellResult& r) {
+  nlohmann::json j = toJson(r.commands);
+  j["submissions"] = r.submissions;
+  return j;
+}
+}  // namespace
+
+nlohmann::json toJson(const RunFacts& f) {
+  return {{"empty_dispatch_us", f.emptyDispatchUs ? nlohmann::json(*f.emptyDispatchUs) : nlohmann::json(nullptr)}};
+}
+
+std::optional<double> fixedCostMs(const CommandCounts& commands, const RunFacts& facts) {
+  if (!facts.emptyDispatchUs) return std::nullopt;
+  return commands.dispatches() * *facts.emptyDispatchUs * 1e-3;
+}
+
 nlohmann::json toJson(const CellResult& r) {
   auto spread = [](const Spread& s) { return toJson(s); };
   nlohmann::json stages;
@@ -147,6 +166,7 @@ nlohmann::json toJson(const CellResult& r) {
           {"policy_frames_before_timing",
            r.policyFramesBeforeTiming ? nlohmann::json(*r.policyFramesBeforeTiming) : nlohmann::json(nullptr)},
           {"policy_settled", r.policySettled},
+          {"commands", commandsJson(r)},
           {"detailed_frame", r.detailMeasured ? toJson(r.detailed) : nlohmann::json(nullptr)}};
 }
 

@@ -36,7 +36,21 @@ struct CellResult {
   // whether it had (false: it still explored after kMaxSettleFrames warm-up frames; the times mix arms).
   std::optional<uint32_t> policyFramesBeforeTiming;
   bool policySettled = true;
+  // The last timed frame's fixed costs (FrameStats::commands, submissions): the same in every timed frame
+  // but under the auto policy, whose decided plan the last one renders.
+  CommandCounts commands;
+  uint32_t submissions = 0;
 };
+
+// What a bench run measures once, before its first cell: the device's cost of an empty dispatch and its
+// barrier (renderer/vk/empty_dispatch.h; none without timestamps), which each row's fixed_cost_ms multiplies
+// by its dispatches.
+struct RunFacts {
+  std::optional<double> emptyDispatchUs;
+};
+nlohmann::json toJson(const RunFacts& f);
+// The estimate of a frame's fixed cost: its dispatches at the cost of an empty one (none if not measured).
+std::optional<double> fixedCostMs(const CommandCounts& commands, const RunFacts& facts);
 
 // The most frames a cell of the auto policy runs after its warm-up waiting for its plan to stop exploring (it
 // needs SortPolicyModel::kColdFrames + 2 * kMinSamples = 6 frames from a reset).

@@ -38,7 +38,7 @@ class CsvRow {
 std::string csvQuote(const std::string& s) { return "\"" + s + "\""; }
 
 nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
-                        const SceneFacts& scene, const CellResult& r) {
+                        const SceneFacts& scene, const CellResult& r, const RunFacts& run) {
   const Settings& s = cell.settings;
   const auto& b = r.detailed.bounces;
   CsvRow row;
@@ -81,13 +81,18 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   row.add("scene_bytes", scene.sceneBytes).add("bvh_build_ms", scene.bvhBuildMs).add("scene_load_ms", scene.sceneLoadMs);
   row.add("tracer_setup_ms", scene.tracerSetupMs);
   row.add("wide_bvh_nodes", scene.wideBvhNodes).add("wide_bvh_bytes", scene.wideBvhBytes);
+  // The frame's fixed costs (issue 36): its commands, and the estimate of what they cost before any work,
+  // dispatches x the run's empty dispatch (an estimate: a real stage's launch overlaps differently).
+  row.add("dispatches", r.commands.dispatches()).add("indirect_dispatches", r.commands.indirectDispatches);
+  row.add("barriers", r.commands.barriers).add("size_writes", r.commands.sizeWrites).add("submissions", r.submissions);
+  row.add("empty_dispatch_us", csvNumber(run.emptyDispatchUs)).add("fixed_cost_ms", csvNumber(fixedCostMs(r.commands, run)));
   return row.values();
 }
 
 }  // namespace
 
 nlohmann::json benchRecord(size_t cellIndex, uint32_t round, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
-                           const SceneFacts& scene, const CellResult& r) {
+                           const SceneFacts& scene, const CellResult& r, const RunFacts& run) {
   const Settings& s = cell.settings;
   return {{"cell", cellIndex},
           {"round", round},
@@ -99,7 +104,8 @@ nlohmann::json benchRecord(size_t cellIndex, uint32_t round, const VulkanContext
           {"settings", toJson(cell.settings)},
           {"scene", toJson(scene)},
           {"result", toJson(r)},
-          {"csv", csvRowOf(ctx, cell, view, scene, r)}};
+          {"run_facts", toJson(run)},
+          {"csv", csvRowOf(ctx, cell, view, scene, r, run)}};
 }
 
 BenchRecords readBenchRecords(const std::string& path) {

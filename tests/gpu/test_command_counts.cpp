@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "renderer/vk/empty_dispatch.h"
 #include "scenes/procedural.h"
 #include "tests/gpu_test.h"
 #include "tests/render_helpers.h"
@@ -175,6 +176,24 @@ TEST_F(CommandCountsTest, SortedBouncesAndSubmissions) {
   EXPECT_GT(submissions, 1u);
   EXPECT_EQ(done->submissions, submissions);
   EXPECT_EQ(done->commands, whole.commands);
+}
+
+}  // namespace
+}  // namespace raylab::test
+
+namespace raylab::test {
+namespace {
+
+class EmptyDispatchTest : public GpuTest {};
+
+// The empty dispatch's cost is a time a device takes (positive, and far below a millisecond on any device we
+// run), measured from dispatches the counting wrapper sees as ordinary ones.
+TEST_F(EmptyDispatchTest, CostsATimeOfItsOwn) {
+  if (!ctx().info().timestamps) GTEST_SKIP() << "the device has no timestamps";
+  const std::optional<double> us = measureEmptyDispatchUs(ctx(), 32, 3);
+  ASSERT_TRUE(us.has_value());
+  EXPECT_GT(*us, 0.0);
+  EXPECT_LT(*us, 1000.0);
 }
 
 }  // namespace
