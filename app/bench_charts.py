@@ -24,7 +24,8 @@ Sweeps over the path count (--sizes, --spps) name each case by its size and spp 
   paths_per_frame.png    the best sorted frame over the best unsorted one, and the megakernel's over the best
                          unsorted one, against paths per frame (width x height x spp, log), one line per case
                          and bounce count; below them the same ratios against the unsorted virtual warp
-                         efficiency of bounces >= 1
+                         efficiency of bounces >= 1; the named sizes the sweep has (720p, 1080p: the CSV's
+                         size_name) are dotted lines on the paths axis
 Sweeps along a camera path (--camera-path; <case> = scene-PATH, a file path by its stem) draw the stage
 breakdown (times over the path's frames) and, from motion.json (app/bench_path_charts.py):
   motion_frame_ms_<case>.png          work time of each path frame, one line per cell, cuts dotted
@@ -432,6 +433,17 @@ def path_count_ratios(rows):
     return {k: sorted(v) for k, v in lines.items()}
 
 
+def named_sizes(rows):
+    """[(paths per frame, "720p (1280x720)")] for the named sizes the sweep has (its CSV's size_name column,
+    filled by raylab from renderer/named_sizes.h: this script keeps no list of sizes of its own), by paths."""
+    marks = {}
+    for r in rows:
+        if r.get("size_name"):
+            marks[paths_per_frame(r)] = f'{r["size_name"]} ({r["width"]}x{r["height"]}' + (
+                f', {r["spp_per_frame"]} spp)' if str(r.get("spp_per_frame", "1")) != "1" else ")")
+    return sorted(marks.items())
+
+
 def paths_chart(rows, path):
     lines = path_count_ratios(rows)
     several_tracers = len({k[2] for k in lines}) > 1
@@ -443,9 +455,13 @@ def paths_chart(rows, path):
             axes[0][col].plot([p[0] for p in pts], [p[index] for p in pts], marker="o", color=colour, label=label)
             coherent = [p for p in pts if p[3] == p[3]]  # nan: not measured (--no-detail, the rt tracer)
             axes[1][col].scatter([p[3] for p in coherent], [p[index] for p in coherent], color=colour, label=label)
+    named = named_sizes(rows)
     for col, what in ((0, "best sorted frame"), (1, "megakernel frame")):
         top, bottom = axes[0][col], axes[1][col]
         top.set_xscale("log")
+        for paths, name in named:
+            top.axvline(paths, color="grey", ls=":", lw=0.8)
+            top.text(paths, 1.0, f" {name}", transform=top.get_xaxis_transform(), fontsize=7, va="top", color="grey")
         top.set_xlabel("paths per frame (width x height x spp)")
         bottom.set_xlabel("unsorted virtual warp efficiency, bounces >= 1")
         bottom.set_xlim(0, 1)

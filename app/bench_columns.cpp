@@ -25,7 +25,10 @@ std::vector<std::string> benchCsvColumns() {
                         // the spread over a sweep's rounds (app/bench_rounds.h); empty with one round
                         "rounds", "frame_ms_q1", "frame_ms_q3", "trace_after_first_ms_min", "trace_after_first_ms_max",
                         // a camera path's replay (app/bench_path.h); empty for still frames
-                        "camera_path", "path_frames", "path_total_ms", "path_mean_ms"})
+                        "camera_path", "path_frames", "path_total_ms", "path_mean_ms",
+                        // a frame's fixed costs (issue 36): its commands, the run's empty dispatch, their product
+                        "dispatches", "indirect_dispatches", "barriers", "size_writes", "submissions",
+                        "empty_dispatch_us", "fixed_cost_ms"})
     columns.push_back(c);
   for (const SettingRow& r : settingRows())
     for (const std::string& c : r.csvColumns)

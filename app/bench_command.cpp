@@ -27,6 +27,7 @@
 #include "renderer/device_limits.h"
 #include "renderer/rt_tracer.h"
 #include "renderer/stats_json.h"
+#include "renderer/vk/empty_dispatch.h"
 #include "renderer/git_revision.h"
 
 namespace raylab {
@@ -152,8 +153,8 @@ struct ReferenceCache {
 // cells failed. A case that fails (a scene that does not load, a device error) fails its cells and the sweep
 // goes on; a result that cannot be stored (WriteError) ends the sweep. Rounds interleave within a case, not
 // across cases: a case's scene and BVH are built once, and cells are compared within their case.
-size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanContext& ctx, const std::set<CellRound>& finished,
-                AppendFile& jsonl, AppendFile* pathFrames) {
+size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanContext& ctx, const RunFacts& run,
+                const std::set<CellRound>& finished, AppendFile& jsonl, AppendFile* pathFrames) {
   size_t total = 0;  // this shard's cells' rounds
   for (size_t i = 0; i < plan.cells.size(); ++i) total += shard.contains(i) ? plan.rounds : 0;
   size_t done = finished.size(), failed = 0;
@@ -218,7 +219,7 @@ size_t runCells(const BenchPlan& plan, const BenchShard& shard, const VulkanCont
             r = measureCell(tracer, cell.settings, plan.warmupFrames, plan.timedFrames, reference, errorCurve,
                             plan.detailFrame && round == 0);
           }
-          jsonl.append(benchRecord(index, round, ctx, cell, loaded.view.name, facts, r).dump() + "\n", /*durable=*/true);
+          jsonl.append(benchRecord(index, round, ctx, cell, loaded.view.name, facts, r, run).dump() + "\n", /*durable=*/true);
           double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
           const std::string later =
               screenNumber(r.traceAfterFirstMs ? std::optional(r.traceAfterFirstMs->median) : std::nullopt);
@@ -275,6 +276,10 @@ int runBenchCommand(const std::vector<std::string>& args) {
   const std::string jsonlPath = plan.outDir + "/results.jsonl";
   size_t failed = 0;
   std::string resolution;
+  // Once per run, before the cells: what a dispatch costs before any work, which each row's fixed_cost_ms
+  // multiplies by its dispatches.
+  RunFacts runFacts;
+  runFacts.emptyDispatchUs = measureEmptyDispatchUs(ctx);
   try {
     // results.csv and the other summaries exist only for a sweep that ended: an old one beside a new,
     // unfinished JSONL would lie.
@@ -302,7 +307,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
     std::optional<AppendFile> pathFrames;
     if (!plan.cameraPath.empty())
       pathFrames.emplace(plan.outDir + "/" + kPathFramesFile, resumeDir.empty() ? AppendFile::Start::Empty : AppendFile::Start::Keep);
-    failed = runCells(plan, shard, ctx, finished, jsonl, pathFrames ? &*pathFrames : nullptr);
+    failed = runCells(plan, shard, ctx, runFacts, finished, jsonl, pathFrames ? &*pathFrames : nullptr);
     jsonl.close();
     if (pathFrames) pathFrames->close();
     resolution = writeSweepSummaries(plan.outDir, readBenchRecords(jsonlPath).records);
@@ -318,6 +323,11 @@ int runBenchCommand(const std::vector<std::string>& args) {
               resolution.c_str(), cells,
               shard.whole() ? "" : (" (shard " + shard.text() + " of " + std::to_string(plan.cells.size()) + ")").c_str(),
               plan.rounds, failed, plan.outDir.c_str());
+  if (runFacts.emptyDispatchUs)
+    std::printf("bench: an empty dispatch and its barrier cost %.2f us on %s (fixed_cost_ms = dispatches x this, an "
+                "estimate)\n", *runFacts.emptyDispatchUs, ctx.info().name.c_str());
+  else
+    std::printf("bench: the device has no timestamps: no empty-dispatch cost, fixed_cost_ms stays empty\n");
   std::fflush(stdout);  // before the chart script's own lines
   const bool chartsFailed = plan.charts && !drawAndReportCharts(plan.outDir);
   if (ctx.validationErrors() > 0) return kExitValidation;

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "renderer/image_metrics.h"
+#include "renderer/stages.h"
 #include "renderer/stats_json.h"
 
 namespace raylab {
@@ -33,6 +34,44 @@ std::vector<double> measureErrorCurve(PathTracer& tracer, const Settings& settin
   return curve;
 }
 
+void TimedFrames::add(const FrameStats& st, double ms) {
+  frame.push_back(ms);
+  wall.push_back(st.wallMs);
+  rays += st.raysTraced;
+  total += ms;
+  std::map<std::string, double> perStage, perBounce;
+  double later = 0.0, camera = 0.0;
+  for (const StageTime& s : st.stages) {
+    if (const StageInfo* info = findStage(s.stage); info && info->role == StageRole::Instrument) continue;
+    perStage[s.stage] += s.ms;
+    if (s.bounce >= 0) perBounce[s.stage + "@" + std::to_string(s.bounce)] += s.ms;
+    if (s.stage == "trace" && s.bounce >= 1) later += s.ms, tracedLater = true;
+    if (s.stage == "trace" && s.bounce == 0) camera += s.ms;
+  }
+  uint64_t laterRays = 0;
+  for (size_t b = 1; b < st.bounces.size(); ++b) laterRays += st.bounces[b].rays;
+  if (camera > 0.0 && !st.bounces.empty()) cameraRate.push_back(st.bounces[0].rays / (camera * 1e-3));
+  if (later > 0.0) bounceRate.push_back(laterRays / (later * 1e-3));
+  for (const auto& [name, v] : perStage) stages[name].push_back(v);
+  for (const auto& [name, v] : perBounce) bounceStages[name].push_back(v);
+  traceLater.push_back(later);
+  commands = st.commands;
+  submissions = st.submissions;
+}
+
+void TimedFrames::fillInto(CellResult& r) const {
+  r.frameMs = spreadOf(frame);
+  r.wallMs = spreadOf(wall);
+  if (tracedLater) r.traceAfterFirstMs = spreadOf(traceLater);
+  if (!cameraRate.empty()) r.traceCameraRaysPerSecond = spreadOf(cameraRate);
+  if (!bounceRate.empty()) r.traceBounceRaysPerSecond = spreadOf(bounceRate);
+  for (const auto& [name, v] : stages) r.stageMs[name] = spreadOf(v);
+  for (const auto& [name, v] : bounceStages) r.stageBounceMs[name] = spreadOf(v);
+  r.raysPerSecond = total > 0.0 ? rays / (total * 1e-3) : 0.0;
+  r.commands = commands;
+  r.submissions = submissions;
+}
+
 CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t warmup, uint32_t timed,
                        const std::vector<glm::vec3>& reference, const std::vector<double>& errorCurve,
                        bool detailFrame) {
@@ -52,41 +91,12 @@ CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t wa
   }
   tracer.restartAccumulation();
 
-  std::vector<double> frame, wall, traceLater, cameraRate, bounceRate;
-  bool tracedLater = false;  // some frame had a trace stage of bounce >= 1
-  std::map<std::string, std::vector<double>> stages, bounceStages;
-  double total = 0.0;
-  uint64_t rays = 0;
+  TimedFrames frames;
   for (uint32_t f = 0; f < timed; ++f) {
     const FrameStats& st = tracer.renderFrame();
-    frame.push_back(st.frameMs);
-    wall.push_back(st.wallMs);
-    rays += st.raysTraced;
-    total += st.frameMs > 0.0 ? st.frameMs : st.wallMs;
-    std::map<std::string, double> perStage, perBounce;
-    double later = 0.0, camera = 0.0;
-    for (const StageTime& s : st.stages) {
-      perStage[s.stage] += s.ms;
-      if (s.bounce >= 0) perBounce[s.stage + "@" + std::to_string(s.bounce)] += s.ms;
-      if (s.stage == "trace" && s.bounce >= 1) later += s.ms, tracedLater = true;
-      if (s.stage == "trace" && s.bounce == 0) camera += s.ms;
-    }
-    uint64_t laterRays = 0;
-    for (size_t b = 1; b < st.bounces.size(); ++b) laterRays += st.bounces[b].rays;
-    if (camera > 0.0 && !st.bounces.empty()) cameraRate.push_back(st.bounces[0].rays / (camera * 1e-3));
-    if (later > 0.0) bounceRate.push_back(laterRays / (later * 1e-3));
-    for (const auto& [name, ms] : perStage) stages[name].push_back(ms);
-    for (const auto& [name, ms] : perBounce) bounceStages[name].push_back(ms);
-    traceLater.push_back(later);
+    frames.add(st, st.frameMs > 0.0 ? st.frameMs : st.wallMs);
   }
-  r.frameMs = spreadOf(frame);
-  r.wallMs = spreadOf(wall);
-  if (tracedLater) r.traceAfterFirstMs = spreadOf(traceLater);
-  if (!cameraRate.empty()) r.traceCameraRaysPerSecond = spreadOf(cameraRate);
-  if (!bounceRate.empty()) r.traceBounceRaysPerSecond = spreadOf(bounceRate);
-  for (auto& [name, v] : stages) r.stageMs[name] = spreadOf(v);
-  for (auto& [name, v] : bounceStages) r.stageBounceMs[name] = spreadOf(v);
-  r.raysPerSecond = total > 0.0 ? rays / (total * 1e-3) : 0.0;
+  frames.fillInto(r);
   if (!reference.empty()) r.finalRelMse = relativeMse(tracer.readRadiance(), reference);
   for (size_t k = 0; k < errorCurve.size(); ++k) {
     r.errorCurveMs.push_back(double(k + 1) * r.frameMs.median);
@@ -138,6 +148,23 @@ nlohmann::json toJson(const SceneFacts& f) {
           {"sbvh_build_ms", f.sbvhBuildMs}};
 }
 
+namespace {
+nlohmann::json commandsJson(const CellResult& r) {
+  nlohmann::json j = toJson(r.commands);
+  j["submissions"] = r.submissions;
+  return j;
+}
+}  // namespace
+
+nlohmann::json toJson(const RunFacts& f) {
+  return {{"empty_dispatch_us", f.emptyDispatchUs ? nlohmann::json(*f.emptyDispatchUs) : nlohmann::json(nullptr)}};
+}
+
+std::optional<double> fixedCostMs(const CommandCounts& commands, const RunFacts& facts) {
+  if (!facts.emptyDispatchUs) return std::nullopt;
+  return commands.dispatches() * *facts.emptyDispatchUs * 1e-3;
+}
+
 nlohmann::json toJson(const CellResult& r) {
   auto spread = [](const Spread& s) { return toJson(s); };
   nlohmann::json stages;
@@ -166,6 +193,7 @@ nlohmann::json toJson(const CellResult& r) {
                                                   {"total_ms", r.path->totalMs},
                                                   {"mean_ms", r.path->meanMs}}
                                  : nlohmann::json(nullptr)},
+          {"commands", commandsJson(r)},
           {"detailed_frame", r.detailMeasured ? toJson(r.detailed) : nlohmann::json(nullptr)}};
 }
 

@@ -48,6 +48,36 @@ struct CellResult {
   std::optional<uint32_t> policyFramesBeforeTiming;
   bool policySettled = true;
   std::optional<CellPath> path;           // a camera path's replay (none: still frames)
+  // The last timed frame's fixed costs (FrameStats::commands, submissions): the same in every timed frame
+  // but under the auto policy, whose decided plan the last one renders.
+  CommandCounts commands;
+  uint32_t submissions = 0;
+};
+
+// What a bench run measures once, before its first cell: the device's cost of an empty dispatch and its
+// barrier (renderer/vk/empty_dispatch.h; none without timestamps), which each row's fixed_cost_ms multiplies
+// by its dispatches.
+struct RunFacts {
+  std::optional<double> emptyDispatchUs;
+};
+nlohmann::json toJson(const RunFacts& f);
+// The estimate of a frame's fixed cost: its dispatches at the cost of an empty one (none if not measured).
+std::optional<double> fixedCostMs(const CommandCounts& commands, const RunFacts& facts);
+
+// The timed frames of a cell, frame by frame, made into its CellResult times: what measureCell and a camera
+// path's replay (app/bench_path.cpp) both collect. `ms` is the time a frame counts as (the GPU frame time, or
+// the work time along a path); the Instrument stages (the detail passes) are left out of the stages.
+struct TimedFrames {
+  std::vector<double> frame, wall, traceLater, cameraRate, bounceRate;
+  std::map<std::string, std::vector<double>> stages, bounceStages;
+  bool tracedLater = false;  // some frame had a trace stage of bounce >= 1
+  double total = 0.0;
+  uint64_t rays = 0;
+  CommandCounts commands;  // the last frame's
+  uint32_t submissions = 0;
+
+  void add(const FrameStats& st, double ms);
+  void fillInto(CellResult& r) const;
 };
 
 // The most frames a cell of the auto policy runs after its warm-up waiting for its plan to stop exploring (it

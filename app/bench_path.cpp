@@ -96,48 +96,24 @@ PathCellResult measurePathCell(PathTracer& tracer, const Settings& settings, con
   tracer.sortPolicy().reset();
   tracer.setDetailedStats(detailed);
 
-  std::vector<double> work, wall, traceLater;
-  bool tracedLater = false;
-  std::map<std::string, std::vector<double>> stages, bounceStages;
-  uint64_t rays = 0;
+  TimedFrames timed;
   DetailMeans means;
   for (uint32_t f = 0; f < path.frames; ++f) {
     const PathCamera camera = movePathCamera(tracer, path, f);
     const FrameStats& st = tracer.renderFrame();
     out.frames.push_back(pathFrameJson(f, camera, st, tracer.sortPlan(), f == 0, detailed));
-    work.push_back(st.workMs());
-    wall.push_back(st.wallMs);
-    rays += st.raysTraced;
-    std::map<std::string, double> perStage, perBounce;
-    double later = 0.0;
-    for (const StageTime& s : st.stages) {
-      // The detail passes and readbacks (StageRole::Instrument): outside the frame's work, as in workMs.
-      if (const StageInfo* info = findStage(s.stage); info && info->role == StageRole::Instrument) continue;
-      perStage[s.stage] += s.ms;
-      if (s.bounce >= 0) perBounce[s.stage + "@" + std::to_string(s.bounce)] += s.ms;
-      if (s.stage == "trace" && s.bounce >= 1) later += s.ms, tracedLater = true;
-    }
-    for (const auto& [name, ms] : perStage) stages[name].push_back(ms);
-    for (const auto& [name, ms] : perBounce) bounceStages[name].push_back(ms);
-    traceLater.push_back(later);
+    timed.add(st, st.workMs());
     if (detailed) means.add(st);
     if (f + 1 == path.frames) r.detailed = st;
   }
   tracer.setDetailedStats(false);
 
-  double total = 0.0;
-  for (double ms : work) total += ms;
-  r.frameMs = spreadOf(work);
-  r.wallMs = spreadOf(wall);
-  if (tracedLater) r.traceAfterFirstMs = spreadOf(traceLater);
-  for (auto& [name, v] : stages) r.stageMs[name] = spreadOf(v);
-  for (auto& [name, v] : bounceStages) r.stageBounceMs[name] = spreadOf(v);
-  r.raysPerSecond = total > 0.0 ? rays / (total * 1e-3) : 0.0;
+  timed.fillInto(r);
   if (settings.sorts()) r.sortedAfter = tracer.sortPlan().sortAfter;
   r.detailMeasured = detailed && path.frames > 0;
   if (r.detailMeasured) means.applyTo(r.detailed);
   else r.detailed = FrameStats{};
-  r.path = CellPath{path.path.name, path.frames, total, path.frames ? total / path.frames : 0.0};
+  r.path = CellPath{path.path.name, path.frames, timed.total, path.frames ? timed.total / path.frames : 0.0};
   return out;
 }
 

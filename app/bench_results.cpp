@@ -38,7 +38,7 @@ class CsvRow {
 std::string csvQuote(const std::string& s) { return "\"" + s + "\""; }
 
 nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
-                        const SceneFacts& scene, const CellResult& r) {
+                        const SceneFacts& scene, const CellResult& r, const RunFacts& run) {
   const Settings& s = cell.settings;
   const auto& b = r.detailed.bounces;
   CsvRow row;
@@ -91,13 +91,18 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   row.add("path_frames", r.path ? std::to_string(r.path->frames) : std::string());
   row.add("path_total_ms", csvNumber(r.path ? std::optional(r.path->totalMs) : std::nullopt));
   row.add("path_mean_ms", csvNumber(r.path ? std::optional(r.path->meanMs) : std::nullopt));
+  // The frame's fixed costs (issue 36): its commands, and the estimate of what they cost before any work,
+  // dispatches x the run's empty dispatch (an estimate: a real stage's launch overlaps differently).
+  row.add("dispatches", r.commands.dispatches()).add("indirect_dispatches", r.commands.indirectDispatches);
+  row.add("barriers", r.commands.barriers).add("size_writes", r.commands.sizeWrites).add("submissions", r.submissions);
+  row.add("empty_dispatch_us", csvNumber(run.emptyDispatchUs)).add("fixed_cost_ms", csvNumber(fixedCostMs(r.commands, run)));
   return row.values();
 }
 
 }  // namespace
 
 nlohmann::json benchRecord(size_t cellIndex, uint32_t round, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
-                           const SceneFacts& scene, const CellResult& r) {
+                           const SceneFacts& scene, const CellResult& r, const RunFacts& run) {
   const Settings& s = cell.settings;
   return {{"cell", cellIndex},
           {"round", round},
@@ -109,7 +114,8 @@ nlohmann::json benchRecord(size_t cellIndex, uint32_t round, const VulkanContext
           {"settings", toJson(cell.settings)},
           {"scene", toJson(scene)},
           {"result", toJson(r)},
-          {"csv", csvRowOf(ctx, cell, view, scene, r)}};
+          {"run_facts", toJson(run)},
+          {"csv", csvRowOf(ctx, cell, view, scene, r, run)}};
 }
 
 BenchRecords readBenchRecords(const std::string& path) {

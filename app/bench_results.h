@@ -16,9 +16,10 @@
 namespace raylab {
 
 // One results.jsonl line, one round of one cell: "cell" (its index in the plan), "round" (0-based), paths_per_frame (width x height x spp), device,
-// git_revision, view, label, settings, scene, result, and "csv" (column name -> the CSV's text).
+// git_revision, view, label, settings, scene, result, run_facts (measured once per run: the empty dispatch's
+// cost), and "csv" (column name -> the CSV's text).
 nlohmann::json benchRecord(size_t cellIndex, uint32_t round, const VulkanContext& ctx, const BenchCell& cell, const std::string& view,
-                           const SceneFacts& scene, const CellResult& r);
+                           const SceneFacts& scene, const CellResult& r, const RunFacts& run);
 
 struct BenchRecords {
   std::vector<nlohmann::json> records;  // in file order

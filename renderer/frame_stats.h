@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/frame_commands.h"
 #include "renderer/heatmap_stats.h"
 #include "renderer/stages.h"
 
@@ -67,6 +68,12 @@ struct FrameStats {
   // efficiency) do not exist for this frame: "not available with the rt tracer". Never reported as zeros.
   std::string traversalStatsUnavailable;
   HeatmapStats heatmap;  // the heatmap shown this frame: range, unit, pixel counts, the hovered pixel
+  // The frame's fixed costs (issue 36): the commands its recording issued (dispatches direct and indirect,
+  // barriers, indirect-size writes), in total and per stage, and its host round trips (submissions, each
+  // waited for: one for a whole frame, one per submission of a frame rendered in steps).
+  CommandCounts commands;
+  std::vector<StageCommands> stageCommands;
+  uint32_t submissions = 0;
 
   // GPU time of the frame no stage scope covers (barriers between scopes, driver work): shown as its own
   // bar, so the bars always add up to frameMs.

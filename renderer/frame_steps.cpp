@@ -13,6 +13,7 @@
 #include "renderer/reorder/key_strategies.h"
 #include "renderer/reorder/path_sorter.h"
 #include "renderer/rt_tracer.h"
+#include "renderer/vk/size_writes.h"
 #include "renderer/vk/stage_timer.h"
 
 namespace raylab {
@@ -110,7 +111,7 @@ void PathTracer::recordShade(VkCommandBuffer cmd, const gpu::PathStagePush& push
     shade_[1][fusesTraceShade].get().dispatchIndirect(cmd, push, live, liveDispatch);
     computeBarrier(cmd);
     const VkBufferCopy packed{PathBuffers::liveAppendOffset(bounce), 0, PathBuffers::kLiveBlockBytes};
-    vkCmdCopyBuffer(cmd, live, live, 1, &packed);
+    copySizes(cmd, live, live, packed);
   } else {
     (keysInShade ? pathSorter_->shadeWithKeys() : shade_[0][fusesTraceShade].get())
         .dispatchIndirect(cmd, push, live, liveDispatch);

@@ -10,6 +10,7 @@
 #include "renderer/rt_tracer.h"
 #include "renderer/heatmap_pass.h"
 #include "renderer/heatmap_rules.h"
+#include "renderer/vk/size_writes.h"
 #include "renderer/vk/stage_timer.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
@@ -36,8 +37,9 @@ gpu::GpuCamera makeGpuCamera(const Viewpoint& v, uint32_t width, uint32_t height
 
 namespace {
 // A path stage (one thread per path) as a pipeline built on first use, with its variant's constants.
-LazyPipeline pathStage(const VulkanContext& ctx, const char* shader, SpecConstants variant) {
-  return LazyPipeline(ctx, shader, sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, std::move(variant));
+LazyPipeline pathStage(const VulkanContext& ctx, const char* shader, SpecConstants variant,
+                       WritesSizes writesSizes = WritesSizes::No) {
+  return LazyPipeline(ctx, shader, sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, std::move(variant), writesSizes);
 }
 }  // namespace
 
@@ -54,17 +56,19 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared
       settings_(settings),
       camera_(camera),
       scene_(std::move(gpuScene)),
-      generate_(ctx, "generate", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
+      generate_(ctx, "generate", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {}, WritesSizes::Yes),
       accumulate_(ctx, "accumulate", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
       tonemap_(ctx, "tonemap", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
+      // The gathering trace finds the live count after a sort and the compacting shade appends the live
+      // paths: both write the next dispatch's size.
       trace_{{pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 0}, {RL_SPEC_FUSES_GATHER, 0}}),
-               pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 0}, {RL_SPEC_FUSES_GATHER, 1}})},
+               pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 0}, {RL_SPEC_FUSES_GATHER, 1}}, WritesSizes::Yes)},
               {pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 1}, {RL_SPEC_FUSES_GATHER, 0}}),
-               pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 1}, {RL_SPEC_FUSES_GATHER, 1}})}},
+               pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 1}, {RL_SPEC_FUSES_GATHER, 1}}, WritesSizes::Yes)}},
       shade_{{pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 0}}),
                pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 1}})},
-              {pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 1}, {RL_SPEC_FUSES_TRACE_SHADE, 0}}),
-               pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 1}, {RL_SPEC_FUSES_TRACE_SHADE, 1}})}},
+              {pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 1}, {RL_SPEC_FUSES_TRACE_SHADE, 0}}, WritesSizes::Yes),
+               pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 1}, {RL_SPEC_FUSES_TRACE_SHADE, 1}}, WritesSizes::Yes)}},
       megakernel_{pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 0}}),
                   pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 1}})},
       timer_(ctx) {
@@ -152,7 +156,10 @@ uint32_t PathTracer::recordSteps(VkCommandBuffer cmd, uint32_t count) {
   if (nextStep_ == 0) {
     frameStages_.clear();
     frameGpuMs_ = frameWallMs_ = 0.0;
+    frameCommands_.clear();
+    frameSubmissions_ = 0;
   }
+  CountCommands counting(cmd, frameCommands_);
   const uint32_t n = std::clamp<uint32_t>(count, 1u, uint32_t(pending.size()));
   timer_.reset(cmd);
   recorded_.clear();
@@ -190,7 +197,7 @@ void PathTracer::recordFrameBlock(VkCommandBuffer cmd) {
     // The blocks compacting shades append to start empty: no paths, zero groups of size (x, 1, 1).
     std::vector<uint32_t> empty(RL_LIVE_WORDS * (settings_.bounces - 1), 0);
     for (size_t b = 0; b < empty.size(); b += RL_LIVE_WORDS) empty[b + RL_LIVE_DISPATCH + 1] = empty[b + RL_LIVE_DISPATCH + 2] = 1;
-    vkCmdUpdateBuffer(cmd, buffers_->live.handle(), PathBuffers::liveAppendOffset(0), empty.size() * 4, empty.data());
+    updateSizes(cmd, buffers_->live.handle(), PathBuffers::liveAppendOffset(0), empty.size() * 4, empty.data());
   }
   computeBarrier(cmd);
 }
@@ -204,11 +211,7 @@ void PathTracer::recordCountersToHost(VkCommandBuffer cmd) {
   VkBufferCopy counters{0, 0, PathBuffers::counterBytes(countedBounces())};
   vkCmdCopyBuffer(cmd, buffers_->counters.handle(), buffers_->counterHistory.handle(), 1, &counters);
   if (detailedStats_) details_->recordToHost(cmd);
-  VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-  toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
+  hostReadBarrier(cmd);
 }
 
 }  // namespace raylab

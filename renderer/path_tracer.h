@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "renderer/reorder/sort_policy.h"
+#include "renderer/vk/command_counts.h"
 #include "renderer/vk/compute_pipeline.h"
 #include "renderer/vk/lazy_pipeline.h"
 #include "renderer/frame_stats.h"
@@ -169,6 +170,8 @@ class PathTracer {
   std::vector<StepTime> lastStepTimes_;
   std::vector<StageTime> frameStages_;
   double frameGpuMs_ = 0.0, frameWallMs_ = 0.0;
+  CommandTally frameCommands_;     // the commands the frame's steps recorded so far
+  uint32_t frameSubmissions_ = 0;  // the submissions finished so far (finishSteps)
   bool detailedStats_ = false;
 };
 

@@ -40,6 +40,7 @@ const FrameStats* PathTracer::finishSteps(double wallMs) {
   addStepStages(stages);
   frameGpuMs_ += timer_.spanMs();
   frameWallMs_ += wallMs;
+  ++frameSubmissions_;  // each submission of steps is waited for before this
   if (steps_.empty() || nextStep_ < steps_.size()) return nullptr;
   steps_.clear();
   nextStep_ = 0;
@@ -67,6 +68,9 @@ const FrameStats& PathTracer::completeFrame() {
   stats_.stages = std::move(frameStages_);
   frameStages_.clear();
   stats_.frameMs = frameGpuMs_;
+  stats_.commands = frameCommands_.total();
+  stats_.stageCommands = frameCommands_.stages();
+  stats_.submissions = frameSubmissions_;
   gatherCounters();
   if (settings_.sorts()) {
     pathSorter_->finishFrame(stats_);

@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "renderer/reorder/key_strategies.h"
+#include "renderer/named_sizes.h"
 #include "renderer/settings_rows.h"
 
 namespace raylab::setting_rows {
@@ -70,11 +71,17 @@ float floatIn(const NumberRange& r, const json& v, const std::string& key) {
 SettingRow sizeRow() {
   SettingRow r = rowOf("size", {"width", "height"}, {"width", "height"}, 1, L::kMaxSize,
                        kEffectReallocate | kEffectAccumulation);
-  r.hint = "WxH", r.help = "resolution, any size up to {hi}x{hi} (default {default})", r.sample = "33x17";
-  r.csvColumns = {"width", "height"};
+  r.hint = "WxH", r.help = "resolution, any size up to {hi}x{hi} or 720p (1280x720), 1080p (1920x1080) (default {default})";
+  r.sample = "33x17";
+  // size_name: the size's name where it has one (named_sizes.h), for the charts to mark.
+  r.csvColumns = {"width", "height", "size_name"};
   r.parseFn = [](const SettingRow&, Settings& s, const std::string& t) {
+    if (const NamedSize* named = findNamedSize(t)) {
+      s.width = named->width, s.height = named->height;
+      return;
+    }
     size_t x = t.find('x');
-    if (x == std::string::npos) throw SettingsError("--size expects WxH (e.g. 512x256), got '" + t + "'");
+    if (x == std::string::npos) throw SettingsError("--size expects WxH (e.g. 512x256) or 720p, 1080p, got '" + t + "'");
     s.width = uintFromText(kWidth, t.substr(0, x));
     s.height = uintFromText(kHeight, t.substr(x + 1));
   };
@@ -92,6 +99,8 @@ SettingRow sizeRow() {
   };
   r.csv = [](const Settings& s, std::map<std::string, std::string>& out) {
     out["width"] = std::to_string(s.width), out["height"] = std::to_string(s.height);
+    const NamedSize* named = namedSizeOf(s.width, s.height);
+    out["size_name"] = named ? named->name : "";
   };
   return r;
 }

@@ -23,6 +23,30 @@ json toJson(const HeatmapStats& h) {
   return j;
 }
 
+json toJson(const CommandCounts& c) {
+  return {{"dispatches", c.dispatches()},
+          {"direct_dispatches", c.directDispatches},
+          {"indirect_dispatches", c.indirectDispatches},
+          {"barriers", c.barriers},
+          {"size_writes", c.sizeWrites}};
+}
+
+namespace {
+// The frame's fixed costs: its commands in total, per stage, and its host round trips.
+json commandsJson(const FrameStats& s) {
+  json j = toJson(s.commands);
+  j["submissions"] = s.submissions;
+  json stages = json::array();
+  for (const StageCommands& c : s.stageCommands) {
+    json stage = toJson(c.counts);
+    stage["stage"] = c.stage;
+    stages.push_back(std::move(stage));
+  }
+  j["stages"] = std::move(stages);
+  return j;
+}
+}  // namespace
+
 json toJson(const FrameStats& s) {
   json stages = json::array();
   for (const StageTime& t : s.stages) stages.push_back({{"stage", t.stage}, {"bounce", t.bounce}, {"ms", t.ms}});
@@ -63,6 +87,7 @@ json toJson(const FrameStats& s) {
           {"scene_bytes", s.sceneBytes},
           {"acceleration_structure_bytes", s.accelerationStructureBytes},
           {"stages", stages},
+          {"commands", commandsJson(s)},
           {"bounces", bounces},
           {"heatmap", toJson(s.heatmap)}};
 }

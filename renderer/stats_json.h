@@ -10,6 +10,7 @@
 
 namespace raylab {
 
+nlohmann::json toJson(const CommandCounts& c);  // dispatches (direct, indirect), barriers, size writes
 nlohmann::json toJson(const FrameStats& s);
 // The heatmap shown: {view, bounce, range: [min, max], unit, scale, key_colour, ...}; null without one.
 nlohmann::json toJson(const HeatmapStats& h);

@@ -82,6 +82,24 @@ struct SortCopyPush {
   SORT_REF(SortUintBuf) countLimit;
 };
 
+// sort_small: the whole sort of at most SORT_SMALL_MAX pairs by one work group in shared memory, in one
+// dispatch (GpuSorter picks it below that count for the radix sort, issue 36: a radix sort of a few thousand
+// pairs is 3 dispatches and 3 barriers a pass, all launch cost). Stable, as the radix sort it stands in for:
+// it orders (effective key >> ignoredLowBits, input index). Its three arrays of keys, values and input
+// indices take 24 KiB of shared memory.
+#define SORT_SMALL_MAX 2048
+#define SORT_SMALL_LOG 11
+#define SORT_SMALL_GROUP 256
+struct SortSmallPush {
+  SORT_REF(SortUintBuf) keys;
+  SORT_REF(SortUintBuf) values;
+  SORT_REF(SortUintBuf) countLimit;
+  uint count;
+  uint keyBits;
+  uint ignoredLowBits;  // as the radix sort's, already clamped below the sorted bits
+  uint hasCountLimit;   // as SortRadixPush: sort only min(count, countLimit.v[0]) pairs
+};
+
 // OneSweep variant (decoupled look-back; only on devices with forward progress between work groups): one
 // `state` buffer holds, in 32-bit words,
 //   [0, 4 * SORT_RADIX)                     the global digit histogram of each pass

@@ -89,7 +89,12 @@ void drawStackedBars(const FrameStats& stats) {
   float x1 = p.x + static_cast<float>(std::min(1.0, rest / longest)) * barWidth;
   draw->AddRectFilled(p, ImVec2(std::max(x1, p.x + 1.0f), p.y + height), stageColor("unattributed"));
   ImGui::Dummy(ImVec2(barWidth, height));
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("GPU frame time outside every stage (barriers, driver work)");
+  // Where that time goes: the frame's fixed costs (FrameStats::commands, issue 36).
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("GPU frame time outside every stage (barriers, driver work); the frame issued %u dispatches "
+                      "(%u indirect), %u barriers, %u indirect-size writes in %u submissions",
+                      stats.commands.dispatches(), stats.commands.indirectDispatches, stats.commands.barriers,
+                      stats.commands.sizeWrites, stats.submissions);
   ImGui::SameLine();
   ImGui::Text("%.2f ms", rest);
 }

@@ -87,6 +87,11 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
       hist_ = GpuBuffer(ctx, (VkDeviceSize(SORT_RADIX) * maxGroups + SORT_RADIX) * 4);
     }
     copy_ = ComputePipeline(ctx, "sort_copy", sizeof(gpu::SortCopyPush), kCopyGroup);
+    // Keys, values and input indices of SORT_SMALL_MAX pairs in shared memory (sort_small.comp).
+    if (tuning.smallSortMax > 0 && limit >= 3ull * 4 * SORT_SMALL_MAX) {
+      smallSortMax_ = std::min<uint32_t>(tuning.smallSortMax, SORT_SMALL_MAX);
+      smallSort_ = ComputePipeline(ctx, "sort_small", sizeof(gpu::SortSmallPush), SORT_SMALL_GROUP);
+    }
     const VkDeviceSize elementBytes = std::max<VkDeviceSize>(16, VkDeviceSize(maxCount) * 4);
     scratchKeys_ = GpuBuffer(ctx, elementBytes);
     scratchValues_ = GpuBuffer(ctx, elementBytes);
@@ -124,7 +129,9 @@ void GpuSorter::record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddres
                       std::to_string(maxCount_));
   if (keyBits < 1 || keyBits > 32) throw VulkanError("sort: keyBits must be 1..32, got " + std::to_string(keyBits));
   if (count > 1) {
-    if (algorithm_ == SortAlgorithm::Radix && oneSweep_)
+    if (algorithm_ == SortAlgorithm::Radix && count <= smallSortMax_)
+      recordSmall(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits);
+    else if (algorithm_ == SortAlgorithm::Radix && oneSweep_)
       recordOneSweep(cmd, keys, values, count, keyBits);
     else if (algorithm_ == SortAlgorithm::Radix)
       recordRadix(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits);
@@ -174,6 +181,15 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
     srcValues = push.valuesOut;
   }
   if (passes % 2 == 1) recordCopyBack(cmd, keys, values, count, countLimit);
+}
+
+void GpuSorter::recordSmall(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
+                            uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) const {
+  // The bits the radix passes would order: the same clamp as recordRadix's.
+  const uint32_t sortedBits = keyBits >= 32 ? 32 : keyBits + 1;
+  gpu::SortSmallPush push{keys, values, countLimit, count, keyBits, std::min(ignoredLowBits, sortedBits - 1),
+                          countLimit != 0 ? 1u : 0u};
+  smallSort_.dispatchGroups(cmd, push, 1);
 }
 
 void GpuSorter::recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,

@@ -12,6 +12,9 @@
 // OneSweep (optional, Tuning::oneSweep): the same tile ranking, but one dispatch per pass using decoupled
 // look-back (plus one histogram dispatch for all passes). Work groups wait on earlier ones, so it is used
 // only on devices known to give forward progress (NVIDIA and AMD GPUs); elsewhere the portable path runs.
+// Small counts (radix and OneSweep, at most Tuning::smallSortMax pairs, SORT_SMALL_MAX by default): one
+// dispatch, one work group sorting them all in shared memory (sort_small.comp), stable like the radix passes
+// it replaces, which at such counts cost their launches and barriers, not their bytes (issue 36).
 // Bitonic (the study's baseline): any count, padded virtually to a power of two; steps whose distance fits a
 // 2048-element tile run in shared memory, the others as one dispatch per step. Not stable.
 // Tile: bitonic's first dispatch alone: each 2048-element tile sorted on its own, so the result is sorted only
@@ -43,6 +46,8 @@ class GpuSorter {
     // Tests only: run OneSweep on any device with one work group per dispatch, so no look-back ever waits;
     // checks its arithmetic where work groups have no forward progress (lavapipe). Slow.
     bool oneSweepSerialTest = false;
+    // Radix counts up to this many pairs take the single-dispatch small sort; 0: never (the passes always run).
+    uint32_t smallSortMax = SORT_SMALL_MAX;
   };
 
   // Whether the OneSweep variant may run on this device (a GPU known to give forward progress).
@@ -76,6 +81,9 @@ class GpuSorter {
   uint32_t radixTile() const { return radixTile_; }
   // True when record() runs the OneSweep variant (requested and supported).
   bool usesOneSweep() const { return oneSweep_; }
+  // The most pairs record() sorts with the single-dispatch small sort (0: none; radix only, and where the
+  // device's shared memory holds its arrays).
+  uint32_t smallSortMax() const { return smallSortMax_; }
 
  private:
   void recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
@@ -90,6 +98,8 @@ class GpuSorter {
   void recordTiles(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                    uint32_t keyBits, VkDeviceAddress countLimit);
   void recordLocal(VkCommandBuffer cmd, gpu::SortBitonicPush push, uint32_t mode) const;
+  void recordSmall(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
+                   uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) const;
 
   const VulkanContext* ctx_ = nullptr;
   SortAlgorithm algorithm_ = SortAlgorithm::None;
@@ -97,6 +107,7 @@ class GpuSorter {
   uint32_t radixTile_ = 0;
   bool oneSweep_ = false;
   bool oneSweepSerial_ = false;
+  uint32_t smallSortMax_ = 0;
 
   // Radix
   ComputePipeline histogram_;
@@ -111,6 +122,9 @@ class GpuSorter {
   ComputePipeline oneSweepHistogram_;
   ComputePipeline oneSweepPass_;
   GpuBuffer oneSweepState_;  // histograms, tile counters, look-back status (shaders/sort_types.h)
+
+  // Small counts
+  ComputePipeline smallSort_;
 
   // Bitonic
   ComputePipeline bitonicLocal_;

@@ -13,7 +13,7 @@ PathSorter::PathSorter(const VulkanContext& ctx, const Scene& scene, const Setti
     : ctx_(ctx),
       keys_(ctx, scene, cameraPos, settings, maxPaths),
       maxPaths_(maxPaths),
-      gather_(ctx, "gather_path_state", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE) {
+      gather_(ctx, "gather_path_state", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, {}, WritesSizes::Yes) {
   makeSorter(settings);
 }
 

@@ -10,8 +10,8 @@
 namespace raylab {
 
 ComputePipeline::ComputePipeline(const VulkanContext& ctx, const std::string& shaderName, uint32_t pushBytes,
-                                 uint32_t groupSize, const SpecConstants& variant)
-    : handle_(ctx, shaderName, pushBytes, VK_SHADER_STAGE_COMPUTE_BIT), groupSize_(groupSize) {
+                                 uint32_t groupSize, const SpecConstants& variant, WritesSizes writesSizes)
+    : handle_(ctx, shaderName, pushBytes, VK_SHADER_STAGE_COMPUTE_BIT), groupSize_(groupSize), writesSizes_(writesSizes) {
   SpecConstants constants{{RL_SPEC_GROUP_SIZE, groupSize}};
   constants.insert(constants.end(), variant.begin(), variant.end());
   const Specialization spec(constants, shaderName);
@@ -41,6 +41,7 @@ void ComputePipeline::dispatchGroups(VkCommandBuffer cmd, const void* push, uint
     throw VulkanError(handle_.name + ": " + std::to_string(groups) + " work groups exceed the device limit");
   handle_.bindAndPush(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, push);
   vkCmdDispatch(cmd, groups, 1, 1);
+  counted(cmd, CommandKind::Dispatch);
 }
 
 void ComputePipeline::dispatchThreads(VkCommandBuffer cmd, const void* push, uint64_t threads) const {
@@ -49,6 +50,12 @@ void ComputePipeline::dispatchThreads(VkCommandBuffer cmd, const void* push, uin
   if (size.x == 0) return;
   handle_.bindAndPush(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, push);
   vkCmdDispatch(cmd, size.x, size.y, 1);
+  counted(cmd, CommandKind::Dispatch);
+}
+
+void ComputePipeline::counted(VkCommandBuffer cmd, CommandKind kind) const {
+  countCommand(cmd, kind);
+  if (writesSizes_ == WritesSizes::Yes) countCommand(cmd, CommandKind::SizeWrite);
 }
 
 namespace {
@@ -72,6 +79,16 @@ void computeBarrier(VkCommandBuffer cmd) {
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
                            VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | extra,
                        0, 1, &barrier, 0, nullptr, 0, nullptr);
+  countCommand(cmd, CommandKind::Barrier);
+}
+
+void hostReadBarrier(VkCommandBuffer cmd) {
+  VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+  toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
+  countCommand(cmd, CommandKind::Barrier);
 }
 
 }  // namespace raylab

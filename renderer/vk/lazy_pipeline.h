@@ -15,13 +15,13 @@ namespace raylab {
 class LazyPipeline {
  public:
   LazyPipeline(const VulkanContext& ctx, std::string shader, uint32_t pushBytes, uint32_t groupSize,
-               SpecConstants variant = {})
+               SpecConstants variant = {}, WritesSizes writesSizes = WritesSizes::No)
       : ctx_(&ctx), shader_(std::move(shader)), pushBytes_(pushBytes), groupSize_(groupSize),
-        variant_(std::move(variant)) {}
+        variant_(std::move(variant)), writesSizes_(writesSizes) {}
 
   // The pipeline, built now if it was not yet (throws as ComputePipeline's constructor does).
   const ComputePipeline& get() {
-    if (!pipeline_) pipeline_.emplace(*ctx_, shader_, pushBytes_, groupSize_, variant_);
+    if (!pipeline_) pipeline_.emplace(*ctx_, shader_, pushBytes_, groupSize_, variant_, writesSizes_);
     return *pipeline_;
   }
 
@@ -30,6 +30,7 @@ class LazyPipeline {
   std::string shader_;
   uint32_t pushBytes_, groupSize_;
   SpecConstants variant_;
+  WritesSizes writesSizes_;
   std::optional<ComputePipeline> pipeline_;
 };
 

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "renderer/vk/align_up.h"
+#include "renderer/vk/command_counts.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
 
@@ -85,6 +86,7 @@ void RtPipeline::traceRays(VkCommandBuffer cmd, const void* push, uint32_t width
     throw VulkanError(handle_.name + ": " + std::to_string(width) + " rays exceed the device's launch limit");
   handle_.bindAndPush(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, push);
   handle_.ctx->rt().cmdTraceRays(cmd, &raygen_, &miss_, &hit_, &callable_, width, 1, 1);
+  countCommand(cmd, CommandKind::Dispatch);  // a launch of its own, as a compute dispatch is
 }
 
 }  // namespace raylab

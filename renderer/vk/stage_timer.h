@@ -9,6 +9,7 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/stages.h"
+#include "renderer/vk/command_counts.h"
 #include "renderer/vk/compute_pipeline.h"
 
 namespace raylab {
@@ -20,16 +21,19 @@ class StageTimer {
   virtual void end(VkCommandBuffer cmd) = 0;
 };
 
-// RAII scope: ScopedStage s(timer, cmd, "trace");
+// RAII scope: ScopedStage s(timer, cmd, "trace"); the commands recorded inside it count as the stage's
+// (command_counts.h), timed or not.
 class ScopedStage {
  public:
   ScopedStage(StageTimer* timer, VkCommandBuffer cmd, std::string_view stage) : timer_(timer), cmd_(cmd) {
     // Every stage has a row in renderer/stages.h, where the bench, the charts and the UI read them from.
     if (!findStage(stage)) throw std::logic_error("stage '" + std::string(stage) + "' is not in renderer/stages.h");
+    enterCommandStage(cmd_, stage);
     if (timer_) timer_->begin(cmd_, stage);
   }
   ~ScopedStage() {
     if (timer_) timer_->end(cmd_);
+    leaveCommandStage(cmd_);
   }
   ScopedStage(const ScopedStage&) = delete;
   ScopedStage& operator=(const ScopedStage&) = delete;

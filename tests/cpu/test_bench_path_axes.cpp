@@ -10,6 +10,7 @@
 
 #include "app/bench_sweep.h"
 #include "renderer/device_limits.h"
+#include "renderer/settings_table.h"
 
 namespace raylab {
 namespace {
@@ -58,10 +59,26 @@ std::string refusal(const std::vector<std::string>& args) {
   return "accepted";
 }
 
+// The real-time sizes by name (renderer/named_sizes.h): --sizes and --size take them as their WxH, and the
+// CSV names them (size_name), which the paths chart marks; other sizes have no name, and names are exact.
+TEST(BenchPathAxes, NamedSizesAreTheirWidthAndHeight) {
+  BenchPlan plan = parseBenchPlan({"--cases", "cornell@front", "--strategies", "fixed", "--sizes", "720p,1080p,33x17"});
+  EXPECT_EQ(groupsOf(plan), (std::vector<PathGroup>{{1280, 720, 1, plan.common.settings.bounces},
+                                                    {1920, 1080, 1, plan.common.settings.bounces},
+                                                    {33, 17, 1, plan.common.settings.bounces}}));
+  plan = parseBenchPlan({"--cases", "cornell@front", "--strategies", "fixed", "--size", "1080p"});
+  EXPECT_EQ(groupsOf(plan), (std::vector<PathGroup>{{1920, 1080, 1, plan.common.settings.bounces}}));
+  EXPECT_EQ(settingsCsvColumns(plan.cells.front().settings).at("size_name"), "1080p");
+  Settings plain;
+  plain.width = 1280, plain.height = 721;
+  EXPECT_EQ(settingsCsvColumns(plain).at("size_name"), "");
+  EXPECT_NE(refusal({"--cases", "cornell@front", "--sizes", "720P"}), "accepted");
+}
+
 TEST(BenchPathAxes, AbsurdSizesAndSppsAreRefusedNamingTheFlag) {
   EXPECT_EQ(refusal({"--sizes", "0x0"}), "--sizes: --size width must be between 1 and 8192, got 0");
   EXPECT_EQ(refusal({"--sizes", "512x256,100000x100000"}), "--sizes: --size width must be between 1 and 8192, got 100000");
-  EXPECT_EQ(refusal({"--sizes", "wide"}), "--sizes: --size expects WxH (e.g. 512x256), got 'wide'");
+  EXPECT_EQ(refusal({"--sizes", "wide"}), "--sizes: --size expects WxH (e.g. 512x256) or 720p, 1080p, got 'wide'");
   EXPECT_EQ(refusal({"--spps", "1,0"}), "--spps: --spp must be between 1 and 64, got 0");
   EXPECT_EQ(refusal({"--sizes", ","}), "--sizes needs at least one value, got ','");
   // Each size may pass alone and fail with an spp: the pair is checked as a whole.

@@ -1,5 +1,6 @@
-// GPU sorts against std::stable_sort on (key, index) pairs: radix must reproduce the stable order exactly,
-// bitonic must sort the keys and carry each value with its key.
+// GPU sorts against std::stable_sort on (key, index) pairs: radix (its passes, and the single-dispatch small
+// sort that stands in for them at small counts) must reproduce the stable order exactly, bitonic must sort the
+// keys and carry each value with its key.
 #include <algorithm>
 #include <cstdint>
 #include <memory>
@@ -8,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/vk/command_counts.h"
 #include "renderer/vk/gpu_buffer.h"
 #include "renderer/reorder/gpu_sort.h"
 #include "shaders/sort_types.h"
@@ -21,6 +23,7 @@ static_assert(sizeof(gpu::SortScanPush) == 16);
 static_assert(sizeof(gpu::SortBitonicPush) == 56);
 static_assert(sizeof(gpu::SortCopyPush) == 48);
 static_assert(sizeof(gpu::SortOneSweepPush) == 64);
+static_assert(sizeof(gpu::SortSmallPush) == 40);
 
 constexpr uint32_t kDead = 0xFFFFFFFFu;
 constexpr uint32_t kMaxCount = (1u << 20) + 3;
@@ -80,17 +83,18 @@ std::vector<uint32_t> stableOrder(const std::vector<uint32_t>& keys, uint32_t ke
   return order;
 }
 
-// What is sorted with: the portable radix sort, the OneSweep radix variant, the bitonic sort.
-enum class Variant { Radix, OneSweep, Bitonic };
+// What is sorted with: the portable radix sort's passes, the OneSweep radix variant, the bitonic sort, and the
+// radix sorter as the lab makes it (the small sort up to SORT_SMALL_MAX pairs, its passes above).
+enum class Variant { Radix, OneSweep, Bitonic, Small };
 
 std::string variantName(Variant v) {
-  return v == Variant::Radix ? "radix" : v == Variant::OneSweep ? "onesweep" : "bitonic";
+  return v == Variant::Radix ? "radix" : v == Variant::OneSweep ? "onesweep" : v == Variant::Bitonic ? "bitonic" : "small";
 }
 
 class GpuSortTest : public test::GpuTest {
  protected:
   static GpuSorter& sorter(Variant variant) {
-    static std::unique_ptr<GpuSorter> sorters[3];
+    static std::unique_ptr<GpuSorter> sorters[4];
     auto& slot = sorters[static_cast<int>(variant)];
     if (!slot) {
       GpuSorter::Tuning tuning;
@@ -98,6 +102,8 @@ class GpuSortTest : public test::GpuTest {
       // it (lavapipe), the serial test mode runs one work group per dispatch so the arithmetic is still checked.
       tuning.oneSweep = variant == Variant::OneSweep;
       tuning.oneSweepSerialTest = tuning.oneSweep && !GpuSorter::oneSweepSupported(ctx());
+      // The passes are tested at every count, small ones too; Variant::Small keeps the lab's default.
+      if (variant != Variant::Small) tuning.smallSortMax = 0;
       slot = std::make_unique<GpuSorter>(
           ctx(), variant == Variant::Bitonic ? SortAlgorithm::Bitonic : SortAlgorithm::Radix, kMaxCount, tuning);
       EXPECT_EQ(slot->usesOneSweep(), variant == Variant::OneSweep);
@@ -167,6 +173,9 @@ std::vector<SortCase> allCases() {
         if (v != Variant::Bitonic || n < kMaxCount || d == Dist::Uniform || d == Dist::Reversed ||
             d == Dist::Few || d == Dist::Dead12)
           cases.push_back({v, n, d});
+  // The small sort at its sizes, its largest, and the first count past it (the passes again).
+  for (uint32_t n : {1u, 2u, 19u, 2001u, uint32_t(SORT_SMALL_MAX), uint32_t(SORT_SMALL_MAX) + 1})
+    for (Dist d : dists) cases.push_back({Variant::Small, n, d});
   return cases;
 }
 
@@ -389,6 +398,71 @@ TEST_F(GpuSortTest, ReuseAndTunedShapes) {
     ctx().submitAndWait([&](VkCommandBuffer cmd) { tuned.record(cmd, keyBuf.address(), valueBuf.address(), 50000, 30); });
     EXPECT_EQ(valueBuf.downloadVector<uint32_t>(keys.size()), stableOrder(keys, 30)) << "keys per thread " << kpt;
   }
+}
+
+}  // namespace
+}  // namespace raylab
+
+namespace raylab {
+namespace {
+
+// Every key bit counts in the small sort (1 to 32 bits, dead keys on top), it honours a device-side count
+// limit (the pairs past it untouched) and ignores the low bits it is told to, stably, as the passes do.
+TEST_F(GpuSortTest, SmallSortBitsLimitAndIgnoredBits) {
+  GpuSorter& small = sorter(Variant::Small);
+  ASSERT_EQ(small.smallSortMax(), uint32_t(SORT_SMALL_MAX)) << "the device lacks the shared memory: not tested";
+  for (uint32_t bits : {1u, 7u, 8u, 9u, 16u, 24u, 30u, 32u}) {
+    std::mt19937 rng(bits);
+    const uint32_t mask = bits == 32 ? ~0u : (1u << bits) - 1u;
+    std::vector<uint32_t> keys(2001);
+    for (uint32_t& k : keys) k = rng() % 5 == 0 ? kDead : rng() & mask;
+    keys[17] = mask;
+    SCOPED_TRACE("bits " + std::to_string(bits));
+    sortAndCheck(Variant::Small, keys, bits);
+  }
+  const uint32_t n = SORT_SMALL_MAX - 7;
+  for (uint32_t limit : {0u, 1u, 777u, n, n + 5}) {
+    const std::vector<uint32_t> keys = makeKeys(Dist::Dead12, n, limit);
+    LimitedSort in(ctx(), keys, limit);
+    in.sortWith(small, 12);
+    const uint32_t sorted = std::min(n, limit);
+    std::vector<uint32_t> wantKeys = keys, wantValues = in.values;
+    const std::vector<uint32_t> order = stableOrder(std::vector<uint32_t>(keys.begin(), keys.begin() + sorted), 12);
+    for (uint32_t i = 0; i < sorted; ++i) wantKeys[i] = keys[order[i]], wantValues[i] = order[i];
+    SCOPED_TRACE("limit " + std::to_string(limit));
+    EXPECT_EQ(in.keyBuf.downloadVector<uint32_t>(n), wantKeys);
+    EXPECT_EQ(in.valueBuf.downloadVector<uint32_t>(n), wantValues);
+  }
+  const uint32_t bits = 23;
+  for (uint32_t ignored : {1u, 8u, 9u, 23u}) {
+    std::vector<uint32_t> keys = makeKeys(Dist::Dead12, n, ignored), values(n);
+    for (uint32_t& k : keys) k = k == kDead ? kDead : k & ((1u << bits) - 1u);
+    std::iota(values.begin(), values.end(), 0u);
+    GpuBuffer keyBuf = makeBufferFrom(ctx(), keys), valueBuf = makeBufferFrom(ctx(), values);
+    ctx().submitAndWait([&](VkCommandBuffer cmd) { small.record(cmd, keyBuf.address(), valueBuf.address(), n, bits, 0, ignored); });
+    std::stable_sort(values.begin(), values.end(), [&](uint32_t a, uint32_t b) {
+      return (gpu::sortEffectiveKey(keys[a], bits) >> ignored) < (gpu::sortEffectiveKey(keys[b], bits) >> ignored);
+    });
+    EXPECT_EQ(valueBuf.downloadVector<uint32_t>(n), values) << "ignored " << ignored;
+  }
+}
+
+// The small sort is what its name says: one dispatch up to its threshold, the passes past it and where it is
+// turned off (counted as a frame's commands are, command_counts.h).
+TEST_F(GpuSortTest, SmallSortIsOneDispatchUpToItsThreshold) {
+  auto dispatches = [&](GpuSorter& s, uint32_t n) {
+    GpuBuffer keys = makeBufferFrom(ctx(), makeKeys(Dist::Uniform, n, 5));
+    GpuBuffer values = makeBufferFrom(ctx(), LimitedSort::iota(n));
+    CommandTally tally;
+    ctx().submitAndWait([&](VkCommandBuffer cmd) {
+      CountCommands counting(cmd, tally);
+      s.record(cmd, keys.address(), values.address(), n, 30);
+    });
+    return tally.total().dispatches();
+  };
+  EXPECT_EQ(dispatches(sorter(Variant::Small), SORT_SMALL_MAX), 1u);
+  EXPECT_EQ(dispatches(sorter(Variant::Small), SORT_SMALL_MAX + 1), 3 * GpuSorter::radixPasses(30));
+  EXPECT_EQ(dispatches(sorter(Variant::Radix), SORT_SMALL_MAX), 3 * GpuSorter::radixPasses(30));
 }
 
 }  // namespace

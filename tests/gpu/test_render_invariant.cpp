@@ -11,6 +11,7 @@
 #include "tests/gpu_test.h"
 #include "tests/render_helpers.h"
 #include "scenes/procedural.h"
+#include "shaders/sort_types.h"
 
 namespace raylab::test {
 
@@ -314,6 +315,41 @@ TEST_F(SortInvariantLayouts, EveryStrategySortAndPolicyRendersTheUnsortedImageOf
       expectSameImage(renderRadiance(context, scene, s, view), unsorted,
                       what + " on the " + toString(layout) + " BVH, " + toString(collapse) + " collapse");
     }
+  }
+}
+
+// The radix sort has two forms: the single-dispatch small sort up to SORT_SMALL_MAX pairs (every frame above is
+// that small) and its passes past it. Both render the unsorted image; each frame's sort stage says which ran
+// (one dispatch per sorted bounce, or the passes' several).
+class SortInvariantSizes : public GpuTest {};
+
+TEST_F(SortInvariantSizes, SmallSortAndRadixPassesRenderTheUnsortedImage) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("hall");
+  for (const auto& [width, height] : {std::pair{37u, 19u}, std::pair{48u, 43u}}) {
+    Settings base = smallFrame(width, height, 3);
+    const bool small = base.width * base.height <= SORT_SMALL_MAX;
+    ASSERT_EQ(small, width == 37u) << "the sizes no longer straddle the small sort's threshold";
+    const std::vector<glm::vec3> unsorted = renderRadiance(ctx(), scene, base, view);
+    for (KeyStrategy strategy : {KeyStrategy::Fixed, KeyStrategy::TwoPoint, KeyStrategy::Average})
+      for (Fusion fusion : {Fusion::None, Fusion::Gather}) {
+        Settings s = base;
+        s.strategy = strategy;
+        s.sort = SortAlgorithm::Radix;
+        s.sortPolicy = SortPolicy::Always;
+        s.fusion = fusion;
+        const std::string what = toString(strategy) + " " + toString(fusion) + " at " + std::to_string(width) + "x" +
+                                 std::to_string(height);
+        PathTracer tracer(ctx(), scene, s, view);
+        uint32_t sortDispatches = 0;
+        for (const StageCommands& c : tracer.renderFrame().stageCommands)
+          if (c.stage == "sort") sortDispatches += c.counts.dispatches();
+        if (small)
+          EXPECT_EQ(sortDispatches, s.bounces - 1) << what << ": not the small sort";
+        else
+          EXPECT_GT(sortDispatches, 3 * (s.bounces - 1)) << what << ": not the radix passes";
+        expectSameImage(tracer.readRadiance(), unsorted, what);
+      }
   }
 }
 

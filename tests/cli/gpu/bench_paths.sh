@@ -64,7 +64,7 @@ python3 - "$dir/whole" "$dir/part" <<'PY'
 import csv, sys
 def timing(c):
     return (c.endswith('_ms') or c.startswith('frame_ms') or c.startswith('trace_after_first_ms')
-            or c.endswith('rays_per_second'))
+            or c.endswith('rays_per_second') or c.endswith('_us'))
 a = list(csv.DictReader(open(sys.argv[1] + '/results.csv')))
 b = list(csv.DictReader(open(sys.argv[2] + '/results.csv')))
 assert len(a) == len(b) == 12

@@ -7,7 +7,7 @@
 # with --no-charts, so that the script draws every chart itself).
 #
 # Timing columns, which no two runs share: frame_ms_*, trace_after_first_ms, every *_ms stage column,
-# rays_per_second (and the trace's), bvh_build_ms, sbvh_build_ms, scene_load_ms, tracer_setup_ms. Everything else (settings, labels,
+# rays_per_second (and the trace's), bvh_build_ms, sbvh_build_ms, scene_load_ms, tracer_setup_ms, empty_dispatch_us (fixed_cost_ms). Everything else (settings, labels,
 # triangles and BVH bytes, final_rel_mse, key bits, prediction and coherence figures) must match. The
 # sweep runs with --compaction none: with compaction the packing order of the live paths (one atomic per
 # subgroup) follows what the tracer ran before, so the SIMT and virtual warp efficiency of cells whose order
@@ -57,7 +57,7 @@ records = [json.loads(line) for line in open(part + '/results.jsonl')]
 assert sorted((r['cell'], r['round']) for r in records) == [(c, r) for c in range(5) for r in range(2)], records
 def timing(column):
     return (column.endswith('_ms') or column.startswith('frame_ms') or column.startswith('trace_after_first_ms')
-            or column.endswith('rays_per_second'))
+            or column.endswith('rays_per_second') or column.endswith('_us'))
 a = list(csv.DictReader(open(whole + '/results.csv')))
 b = list(csv.DictReader(open(part + '/results.csv')))
 assert [r['label'] for r in a] == [r['label'] for r in b], ([r['label'] for r in a], [r['label'] for r in b])

@@ -32,7 +32,7 @@ import csv, json, sys
 whole, merged, top, k = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
 def timing(c):
     return (c.endswith('_ms') or c.startswith('frame_ms') or c.startswith('trace_after_first_ms')
-            or c.endswith('rays_per_second'))
+            or c.endswith('rays_per_second') or c.endswith('_us'))
 a = list(csv.DictReader(open(whole + '/results.csv')))
 b = list(csv.DictReader(open(merged + '/results.csv')))
 assert len(a) == len(b) == 10, (len(a), len(b))

@@ -36,10 +36,13 @@ top, k = sys.argv[1], int(sys.argv[2])
 # differs run to run on a multi-threaded device) and the auto policy's decisions and what follows from them
 # (it decides from measured stage times). bench_shards.sh checks those equal too, with --compaction none
 # and no auto policy.
+# The commands a frame issues follow the auto policy's plan (a sorted bounce adds keys, sort, reorder).
 RUN_DEPENDENT = {'simt_efficiency', 'virtual_warp_efficiency', 'virtual_warp_efficiency_after_first', 'sorted_after',
-                 'prediction_error_mean', 'prediction_error_median', 'cell_hit_rate'}
+                 'prediction_error_mean', 'prediction_error_median', 'cell_hit_rate',
+                 'dispatches', 'indirect_dispatches', 'barriers', 'size_writes'}
 def timing(c):
-    return c.endswith('_ms') or c.startswith('frame_ms') or c.endswith('rays_per_second') or c in RUN_DEPENDENT
+    return (c.endswith('_ms') or c.endswith('_us') or c.startswith('frame_ms') or c.endswith('rays_per_second')
+            or c in RUN_DEPENDENT)
 total = 0
 for size in ('32x16', '64x32'):
     a = list(csv.DictReader(open('%s/whole/size-%s/results.csv' % (top, size))))
