@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Trace rays per second per bounce (rays / trace ms, from each frame's stages), and frame times, medians over
-frames 2 on and then over the rounds (min-max over rounds). Usage: analyse.py DIR (stats.tar.xz unpacked)."""
+frames 2 on and then over the rounds (min-max over rounds). Usage: analyse.py DIR (stats.tar.xz unpacked; also h200-sbvh's trace*.tar.xz)."""
 import collections
 import glob
 import json
@@ -21,7 +21,10 @@ def trace_rates(frame):
 def main(folder):
     rows = collections.defaultdict(list)  # (kind, bin, bvh, size) -> per-round figures
     for path in sorted(glob.glob(os.path.join(folder, "*.json"))):
-        kind, binary, bvh, size, _ = os.path.basename(path)[:-5].split("-")
+        parts = os.path.basename(path)[:-5].split("-")
+        if len(parts) != 5:  # kind-binary-bvh-size-round; other files (facts) are no frames
+            continue
+        kind, binary, bvh, size, _ = parts
         frames = json.load(open(path))["frames"][2:]
         rates = [trace_rates(f) for f in frames]
         rows[(kind, binary, bvh, size)].append({

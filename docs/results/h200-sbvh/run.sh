@@ -8,13 +8,7 @@
 # and 4096x2048, 4 bounces, binary and sbvh, split and fused trace+shade, 3 rounds.
 # Carry .dev/bins.tar.xz (build-device/raylab: new; .dev/old/raylab: before; Sponza; the loader) and the
 # Embree library, as h200-true-figures/run.sh says.
-tar -xJf .dev/bins.tar.xz
-for f in .dev/carry/gl/*.deb; do dpkg -x $f /; done; ldconfig
-xz -dkf build-device/lib/*.xz
-mkdir -p .dev/old/lib && cp build-device/lib/*.so* .dev/old/lib/
-S=.dev/sponza/Sponza.gltf
-mkdir -p /tmp/out
-nvidia-smi --query-gpu=name,driver_version --format=csv > $OUT/gpu.txt 2>&1
+source docs/results/device-unpack.sh  # also sets S (Sponza), makes /tmp/out, writes $OUT/gpu.txt
 for round in 1 2 3; do
   for bin in old new; do
     B=$([ $bin = new ] && echo build-device/raylab || echo .dev/old/raylab)

@@ -5,13 +5,7 @@
 # stage's rays per second as in run.sh (Sponza CameraMain, 2 bounces, unsorted, split, no compaction), sbvh,
 # 2048x1024 and 4096x2048, three interleaved rounds. (2) Which layout is fastest: the bench over sbvh and wide
 # (Sponza, the hall, the clutter room; 1920x1080 and 4096x2048; 4 bounces; unsorted, two-point; 3 rounds).
-tar -xJf .dev/bins.tar.xz
-for f in .dev/carry/gl/*.deb; do dpkg -x $f /; done; ldconfig
-xz -dkf build-device/lib/*.xz
-mkdir -p .dev/hack/lib && cp build-device/lib/*.so* .dev/hack/lib/
-S=.dev/sponza/Sponza.gltf
-mkdir -p /tmp/out
-nvidia-smi --query-gpu=name,driver_version --format=csv > $OUT/gpu.txt 2>&1
+source docs/results/device-unpack.sh  # also sets S (Sponza), makes /tmp/out, writes $OUT/gpu.txt
 for round in 1 2 3; do
   for bin in new hack; do
     B=$([ $bin = new ] && echo build-device/raylab || echo .dev/hack/raylab)
