@@ -31,8 +31,12 @@ std::string fixed(double v, int digits) {
 std::string recoveryText(const nlohmann::json& r) {
   const std::string at = "cut@" + std::to_string(r.at("cut_frame").get<uint32_t>()) + ": ";
   if (r.at("before").is_null()) return at + "no error before it";
-  if (r.at("frames").is_null()) return at + "never (" + std::to_string(r.at("frames_seen").get<uint32_t>()) + " frames seen)";
-  return at + std::to_string(r.at("frames").get<uint32_t>());
+  // The frames to the segment's own settled level, where it has one (path_recovery.h says why both).
+  const nlohmann::json settle = r.value("frames_to_settle", nlohmann::json());
+  const std::string own = settle.is_number() ? " (settles in " + std::to_string(settle.get<uint32_t>()) + ")" : "";
+  if (r.at("frames").is_null())
+    return at + "never (" + std::to_string(r.at("frames_seen").get<uint32_t>()) + " frames seen)" + own;
+  return at + std::to_string(r.at("frames").get<uint32_t>()) + own;
 }
 
 }  // namespace
@@ -138,7 +142,7 @@ std::string pathSummaryMarkdown(const nlohmann::json& summary) {
     md += "## " + key.second + " along " + key.first + " (" + std::to_string(cells.front()->at("frames").get<uint32_t>()) +
           " frames)\n\n";
     md += "| cell | mean frame ms | path total ms | mean prediction error | frames to recover after a cut (within " +
-          std::to_string(tolerance) + "% of before) |\n|---|---:|---:|---:|---|\n";
+          std::to_string(tolerance) + "% of before; in brackets, of the level it settles at) |\n|---|---:|---:|---:|---|\n";
     for (const nlohmann::json* c : cells) {
       std::string recovery;
       for (const nlohmann::json& r : c->at("recovery")) recovery += (recovery.empty() ? "" : ", ") + recoveryText(r);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "app/bench_spread.h"
+
 namespace raylab {
 
 std::vector<CutRecovery> recoveryAfterCuts(const std::vector<std::optional<double>>& error, const std::vector<bool>& cut,
@@ -26,6 +28,17 @@ std::vector<CutRecovery> recoveryAfterCuts(const std::vector<std::optional<doubl
           r.frames = uint32_t(f - c);
           break;
         }
+    std::vector<double> secondHalf;
+    for (size_t f = c + (end - c) / 2; f < end; ++f)
+      if (error[f]) secondHalf.push_back(*error[f]);
+    if (!secondHalf.empty()) {
+      r.settled = spreadOf(secondHalf).median;
+      for (size_t f = c; f < end; ++f)
+        if (error[f] && *error[f] <= *r.settled * (1.0 + tolerance)) {
+          r.framesToSettle = uint32_t(f - c);
+          break;
+        }
+    }
     out.push_back(r);
   }
   return out;
@@ -36,7 +49,9 @@ nlohmann::json toJson(const CutRecovery& r) {
           {"before", r.before ? nlohmann::json(*r.before) : nlohmann::json(nullptr)},
           {"frames", r.frames ? nlohmann::json(*r.frames) : nlohmann::json(nullptr)},
           {"recovered", r.frames.has_value()},
-          {"frames_seen", r.framesSeen}};
+          {"frames_seen", r.framesSeen},
+          {"settled", r.settled ? nlohmann::json(*r.settled) : nlohmann::json(nullptr)},
+          {"frames_to_settle", r.framesToSettle ? nlohmann::json(*r.framesToSettle) : nlohmann::json(nullptr)}};
 }
 
 }  // namespace raylab

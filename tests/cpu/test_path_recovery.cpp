@@ -72,6 +72,36 @@ TEST(PathRecovery, ErrorThatSettlesHigherNeverRecovers) {
   EXPECT_TRUE(toJson(r[0])["frames"].is_null());
 }
 
+// The segment's own level: an error that settles 50% above the level before the cut never returns "before",
+// but it settles, and the frames to its settled level (the median of the segment's second half) are those of
+// the decay; a faster decay settles sooner. Frames without a value are skipped.
+TEST(PathRecovery, ErrorSettlesAtTheNewViewsOwnLevel) {
+  for (double decay : {0.3, 0.6}) {
+    Decay d = decaying(30, 5, 0.2, 0.9, 0.3, decay);
+    d.error[29] = std::nullopt;
+    const std::vector<CutRecovery> r = recoveryAfterCuts(d.error, d.cut);
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_FALSE(r[0].frames.has_value());
+    ASSERT_TRUE(r[0].settled);
+    // The second half of the segment (frames 17..28 measured): within a hair of the settle level.
+    EXPECT_NEAR(*r[0].settled, 0.3, 0.3 * 0.01);
+    ASSERT_TRUE(r[0].framesToSettle);
+    EXPECT_EQ(r[0].framesToSettle, expectedFrames(d, 5, *r[0].settled, kRecoveryTolerance)) << decay;
+    EXPECT_GT(*r[0].framesToSettle, 0u);
+    EXPECT_EQ(toJson(r[0])["frames_to_settle"].get<uint32_t>(), *r[0].framesToSettle);
+  }
+  const Decay fast = decaying(30, 5, 0.2, 0.9, 0.3, 0.3), slow = decaying(30, 5, 0.2, 0.9, 0.3, 0.6);
+  EXPECT_LT(*recoveryAfterCuts(fast.error, fast.cut)[0].framesToSettle,
+            *recoveryAfterCuts(slow.error, slow.cut)[0].framesToSettle);
+  // Nothing measured after the cut: no settled level, no frames.
+  Decay blank = decaying(20, 5, 0.2, 0.9, 0.3, 0.5);
+  for (size_t f = 5; f < 20; ++f) blank.error[f] = std::nullopt;
+  const CutRecovery none = recoveryAfterCuts(blank.error, blank.cut)[0];
+  EXPECT_FALSE(none.settled.has_value());
+  EXPECT_FALSE(none.framesToSettle.has_value());
+  EXPECT_TRUE(toJson(none)["settled"].is_null());
+}
+
 TEST(PathRecovery, NoJumpIsZeroFramesAndLowerErrorCounts) {
   Decay d = decaying(12, 4, 0.2, 0.2, 0.2, 0.5);
   EXPECT_EQ(recoveryAfterCuts(d.error, d.cut)[0].frames, std::optional<uint32_t>(0));
