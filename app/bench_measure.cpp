@@ -72,15 +72,25 @@ void TimedFrames::fillInto(CellResult& r) const {
   r.submissions = submissions;
 }
 
+std::string sortPlanText(const std::vector<bool>& sortAfter) {
+  std::string text;
+  for (size_t k = 0; k < sortAfter.size(); ++k) text += k + 1 == sortAfter.size() ? '-' : sortAfter[k] ? 'Y' : 'N';
+  return text;
+}
+
+void warmUpFrames(PathTracer& tracer, uint32_t warmup) {
+  auto start = std::chrono::steady_clock::now();
+  for (uint32_t f = 0; f < warmup || std::chrono::steady_clock::now() - start < std::chrono::milliseconds(500); ++f)
+    tracer.renderFrame();
+}
+
 CellResult measureCell(PathTracer& tracer, const Settings& settings, uint32_t warmup, uint32_t timed,
                        const std::vector<glm::vec3>& reference, const std::vector<double>& errorCurve,
                        bool detailFrame) {
   CellResult r;
   tracer.setDetailedStats(false);
   tracer.applySettings(settings);
-  auto start = std::chrono::steady_clock::now();
-  for (uint32_t f = 0; f < warmup || std::chrono::steady_clock::now() - start < std::chrono::milliseconds(500); ++f)
-    tracer.renderFrame();
+  warmUpFrames(tracer, warmup);
   // auto is timed from the frame its plan stops exploring: timed while it explores, a cell of 8.4M paths read
   // the unsorted arm's time while its plan sorted every bounce (H200, issue 34).
   // (A probe frame measures too: timing then starts after it.)
@@ -148,14 +158,6 @@ nlohmann::json toJson(const SceneFacts& f) {
           {"sbvh_build_ms", f.sbvhBuildMs}};
 }
 
-namespace {
-nlohmann::json commandsJson(const CellResult& r) {
-  nlohmann::json j = toJson(r.commands);
-  j["submissions"] = r.submissions;
-  return j;
-}
-}  // namespace
-
 nlohmann::json toJson(const RunFacts& f) {
   return {{"empty_dispatch_us", f.emptyDispatchUs ? nlohmann::json(*f.emptyDispatchUs) : nlohmann::json(nullptr)}};
 }
@@ -193,7 +195,7 @@ nlohmann::json toJson(const CellResult& r) {
                                                   {"total_ms", r.path->totalMs},
                                                   {"mean_ms", r.path->meanMs}}
                                  : nlohmann::json(nullptr)},
-          {"commands", commandsJson(r)},
+          {"commands", commandsJson(r.commands, r.submissions)},
           {"detailed_frame", r.detailMeasured ? toJson(r.detailed) : nlohmann::json(nullptr)}};
 }
 

@@ -64,6 +64,14 @@ nlohmann::json toJson(const RunFacts& f);
 // The estimate of a frame's fixed cost: its dispatches at the cost of an empty one (none if not measured).
 std::optional<double> fixedCostMs(const CommandCounts& commands, const RunFacts& facts);
 
+// A sort plan as the CSV's sorted_after and path_frames.jsonl write it: "Y"/"N" per bounce whose rays the plan
+// sorts after, "-" for the last bounce (nothing follows it), e.g. "YNY-".
+std::string sortPlanText(const std::vector<bool>& sortAfter);
+
+// A cell's warm-up: `warmup` frames and at least half a second of them, back to back (pipelines built, the
+// GPU's clocks up), before anything is timed: measureCell and a camera path's replay alike.
+void warmUpFrames(PathTracer& tracer, uint32_t warmup);
+
 // The timed frames of a cell, frame by frame, made into its CellResult times: what measureCell and a camera
 // path's replay (app/bench_path.cpp) both collect. `ms` is the time a frame counts as (the GPU frame time, or
 // the work time along a path); the Instrument stages (the detail passes) are left out of the stages.

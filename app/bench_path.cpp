@@ -1,6 +1,5 @@
 #include "app/bench_path.h"
 
-#include <chrono>
 #include <map>
 
 #include "app/bench_spread.h"
@@ -10,12 +9,6 @@ namespace raylab {
 namespace {
 
 nlohmann::json optional(double v) { return v < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(v); }
-
-std::string planText(const std::vector<bool>& sortAfter) {
-  std::string text;
-  for (size_t k = 0; k < sortAfter.size(); ++k) text += k + 1 == sortAfter.size() ? '-' : sortAfter[k] ? 'Y' : 'N';
-  return text;
-}
 
 // The mean over the path's detailed frames of each bounce's accuracy and coherence figures (where measured):
 // what the CSV's prediction_error_mean, cell_hit_rate and warp-efficiency columns show for a path cell.
@@ -74,7 +67,7 @@ nlohmann::json pathFrameJson(uint32_t f, const PathCamera& camera, const FrameSt
   frame["cell_hit_rate_mean"] = optional(meanOverBounces(st.bounces, &BounceStats::cellHitRate, true));
   frame["length_cache_occupancy"] = optional(st.lengthCacheOccupancy);
   frame["learning_restarted"] = learningRestarted;
-  frame["sorted_after"] = planText(plan.sortAfter);
+  frame["sorted_after"] = sortPlanText(plan.sortAfter);
   frame["measuring"] = plan.measuring;
   frame["detailed"] = detailed;
   return frame;
@@ -89,9 +82,7 @@ PathCellResult measurePathCell(PathTracer& tracer, const Settings& settings, con
   // Warm-up (pipelines, clocks) at the path's first camera, then the learned state is dropped: the replay
   // starts as `raylab render --camera-path` does on a fresh tracer, so every cell and round replays alike.
   movePathCamera(tracer, path, 0);
-  auto start = std::chrono::steady_clock::now();
-  for (uint32_t f = 0; f < warmup || std::chrono::steady_clock::now() - start < std::chrono::milliseconds(500); ++f)
-    tracer.renderFrame();
+  warmUpFrames(tracer, warmup);
   tracer.restartLearning();
   tracer.sortPolicy().reset();
   tracer.setDetailedStats(detailed);

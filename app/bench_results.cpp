@@ -78,9 +78,7 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   row.add("key_bits", detail(r.detailed.keyBits)).add("length_cache_bytes", detail(double(r.detailed.lengthCacheBytes)));
   row.add("final_rel_mse", csvNumber(r.finalRelMse));
   // Which bounces the policy's decided plan sorts after, e.g. "YNY-" (- : the last bounce).
-  std::string sortedAfter;
-  for (size_t k = 0; k < r.sortedAfter.size(); ++k) sortedAfter += k + 1 == r.sortedAfter.size() ? '-' : r.sortedAfter[k] ? 'Y' : 'N';
-  row.add("sorted_after", sortedAfter);
+  row.add("sorted_after", sortPlanText(r.sortedAfter));
   row.add("triangles", scene.triangles).add("bvh_nodes", scene.bvhNodes).add("bvh_bytes", scene.bvhBytes);
   row.add("scene_bytes", scene.sceneBytes).add("bvh_build_ms", scene.bvhBuildMs).add("scene_load_ms", scene.sceneLoadMs);
   row.add("tracer_setup_ms", scene.tracerSetupMs);

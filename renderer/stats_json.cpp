@@ -31,11 +31,16 @@ json toJson(const CommandCounts& c) {
           {"size_writes", c.sizeWrites}};
 }
 
+json commandsJson(const CommandCounts& commands, uint32_t submissions) {
+  json j = toJson(commands);
+  j["submissions"] = submissions;
+  return j;
+}
+
 namespace {
 // The frame's fixed costs: its commands in total, per stage, and its host round trips.
-json commandsJson(const FrameStats& s) {
-  json j = toJson(s.commands);
-  j["submissions"] = s.submissions;
+json frameCommandsJson(const FrameStats& s) {
+  json j = commandsJson(s.commands, s.submissions);
   json stages = json::array();
   for (const StageCommands& c : s.stageCommands) {
     json stage = toJson(c.counts);
@@ -87,7 +92,7 @@ json toJson(const FrameStats& s) {
           {"scene_bytes", s.sceneBytes},
           {"acceleration_structure_bytes", s.accelerationStructureBytes},
           {"stages", stages},
-          {"commands", commandsJson(s)},
+          {"commands", frameCommandsJson(s)},
           {"bounces", bounces},
           {"heatmap", toJson(s.heatmap)}};
 }

@@ -11,6 +11,8 @@
 namespace raylab {
 
 nlohmann::json toJson(const CommandCounts& c);  // dispatches (direct, indirect), barriers, size writes
+// A frame's fixed costs as --stats and the bench write them: toJson(commands) with "submissions".
+nlohmann::json commandsJson(const CommandCounts& commands, uint32_t submissions);
 nlohmann::json toJson(const FrameStats& s);
 // The heatmap shown: {view, bounce, range: [min, max], unit, scale, key_colour, ...}; null without one.
 nlohmann::json toJson(const HeatmapStats& h);

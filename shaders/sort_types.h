@@ -88,7 +88,6 @@ struct SortCopyPush {
 // it orders (effective key >> ignoredLowBits, input index). Its three arrays of keys, values and input
 // indices take 24 KiB of shared memory.
 #define SORT_SMALL_MAX 2048
-#define SORT_SMALL_LOG 11
 #define SORT_SMALL_GROUP 256
 struct SortSmallPush {
   SORT_REF(SortUintBuf) keys;
