@@ -45,6 +45,7 @@ namespace {
 // and fails a build that goes past it; the flattening checks our own depth against RL_BVH_STACK.
 constexpr uint32_t kEmbreeMaxDepth = RL_BVH_STACK - 2;
 constexpr uint32_t kEmbreeLeafLimit = RTC_BUILD_MAX_PRIMITIVES_PER_LEAF;
+static_assert(kEmbreeLeafLimit <= (1u << RL_LEAF_COUNT_BITS), "a leaf must fit the traversal's leaf word");
 
 // The temporary tree, in memory Embree hands out per thread (rtcThreadLocalAlloc) and frees with the BVH.
 // An interior node also counts its subtree (set with its children, which Embree sets once they are complete):

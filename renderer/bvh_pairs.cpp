@@ -1,11 +1,18 @@
 #include "renderer/bvh_pairs.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace raylab {
 namespace {
 
 void setChild(gpu::BvhPairNode& pair, int slot, const gpu::BvhNode& child, uint32_t pairIndex) {
+  // The traversal carries a leaf child as one word (RL_LEAF_TAG): its first entry and count must fit it.
+  if (child.triCount > (1u << RL_LEAF_COUNT_BITS) || (child.triCount > 0 && child.leftOrFirst >= RL_LEAF_ENTRY_LIMIT))
+    throw std::invalid_argument("pairNodes: a leaf of " + std::to_string(child.triCount) + " triangles from entry " +
+                                std::to_string(child.leftOrFirst) + " does not fit the traversal's leaf word (at most " +
+                                std::to_string(1u << RL_LEAF_COUNT_BITS) + " triangles, entries below " +
+                                std::to_string(RL_LEAF_ENTRY_LIMIT) + ")");
   float* x = &pair.xBounds.x;
   float* y = &pair.yBounds.x;
   float* z = &pair.zBounds.x;

@@ -97,10 +97,25 @@ bool intersectLeaf(TriangleQuads entries, uint first, uint count, vec3 origin, v
   return anyHit && hit.t > 0.0;
 }
 
+// A leaf child travels through the traversal (the next node, the stack) as one word: RL_LEAF_TAG, its first
+// leaf entry above RL_LEAF_COUNT_BITS bits of its count - 1 (GpuScene refuses trees whose leaves do not fit).
+// Interior children are pair-node indices (below RL_TRAVERSAL_DONE, which is below RL_LEAF_TAG).
+uint leafWord(uint first, uint count) { return RL_LEAF_TAG | (first << RL_LEAF_COUNT_BITS) | (count - 1u); }
+bool isLeafWord(uint word) { return word >= RL_LEAF_TAG; }
+
+// One leaf (its word) against the ray; true when anyHit may stop.
+bool intersectLeafWord(TriangleQuads tris, uint word, vec3 origin, vec3 dir, inout HitRecord hit, inout float tMax,
+                       bool anyHit) {
+  const uint first = (word & ~RL_LEAF_TAG) >> RL_LEAF_COUNT_BITS;
+  const uint count = (word & ((1u << RL_LEAF_COUNT_BITS) - 1u)) + 1u;
+  return intersectLeaf(tris, first, count, origin, dir, hit, tMax, anyHit);
+}
+
 // A binary tree as pair nodes (BvhPairNode), with or without spatial splits (GpuScene::nodes and leafTriangles
-// are the chosen tree's): each iteration fetches one node, four 16-byte words, and tests both children's boxes;
-// leaf children are intersected there and then, interior ones visited nearer first (the farther pushed).
-// anyHit: stop at the first hit (shadow rays). `steps` counts the pair nodes visited.
+// are the chosen tree's). Each iteration either tests a pair node's two boxes (one fetch of four 16-byte words)
+// or intersects one leaf: a leaf is visited like a node, so every lane runs the one triangle loop at one place
+// in the code. Interior and leaf children alike are visited nearer first, the farther pushed.
+// anyHit: stop at the first hit (shadow rays). `steps` counts the iterations: pair nodes and leaves visited.
 HitRecord traverseBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool anyHit) {
   HitRecord hit = noHit();
   const vec3 invDir = safeInverse(dir);
@@ -113,24 +128,25 @@ HitRecord traverseBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool an
   while (true) {
     hit.steps++;
     RL_TRAVERSAL_STEP();
+    if (node >= RL_LEAF_TAG) {
+      if (intersectLeafWord(tris, node, origin, dir, hit, tMax, anyHit)) return hit;
+      if (sp == 0u) break;
+      node = stack[--sp];
+      continue;
+    }
     const uvec4 children = floatBitsToUint(nodes.v[4u * node + 3u]);
-    vec2 d = intersectPair(nodes.v[4u * node], nodes.v[4u * node + 1u], nodes.v[4u * node + 2u], invDir, originInv,
-                           tMax);
-    bool hit0 = d.x < 1e30 && children.x != RL_BVH_NO_CHILD, hit1 = d.y < 1e30 && children.y != RL_BVH_NO_CHILD;
-    if (hit0 && children.z > 0u) {
-      if (intersectLeaf(tris, children.x, children.z, origin, dir, hit, tMax, anyHit)) return hit;
-      hit0 = false;
-    }
-    if (hit1 && children.w > 0u) {
-      if (intersectLeaf(tris, children.y, children.w, origin, dir, hit, tMax, anyHit)) return hit;
-      hit1 = false;
-    }
+    const vec2 d = intersectPair(nodes.v[4u * node], nodes.v[4u * node + 1u], nodes.v[4u * node + 2u], invDir,
+                                 originInv, tMax);
+    const bool hit0 = d.x < 1e30 && children.x != RL_BVH_NO_CHILD;
+    const bool hit1 = d.y < 1e30 && children.y != RL_BVH_NO_CHILD;
+    const uint child0 = children.z > 0u ? leafWord(children.x, children.z) : children.x;
+    const uint child1 = children.w > 0u ? leafWord(children.y, children.w) : children.y;
     if (hit0 && hit1) {
       const bool firstNearer = d.x <= d.y;
-      if (sp < RL_BVH_STACK) stack[sp++] = firstNearer ? children.y : children.x;
-      node = firstNearer ? children.x : children.y;
+      if (sp < RL_BVH_STACK) stack[sp++] = firstNearer ? child1 : child0;
+      node = firstNearer ? child0 : child1;
     } else if (hit0 || hit1) {
-      node = hit0 ? children.x : children.y;
+      node = hit0 ? child0 : child1;
     } else {
       if (sp == 0u) break;
       node = stack[--sp];

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "renderer/bvh.h"
+#include "renderer/bvh_pairs.h"
 #include "renderer/bvh_sah.h"
 #include "tests/scene_checks.h"
 #include "scenes/procedural.h"
@@ -306,6 +307,29 @@ TEST(BvhSah, TempleTreeNoWorseThanReferences) {
   EXPECT_LT(embree, median);
   RecordProperty("sah_embree", std::to_string(embree));
   RecordProperty("sah_median_split", std::to_string(median));
+}
+
+
+// The traversal carries a leaf child as one word (shaders/shared_types.h, RL_LEAF_TAG): a leaf of the most
+// triangles that word holds becomes a pair node whose slot keeps its range; one triangle more, or a first
+// entry past the word's limit, is refused by name rather than traced wrong.
+TEST(BvhPairs, LeavesMustFitTheTraversalsLeafWord) {
+  constexpr uint32_t most = 1u << RL_LEAF_COUNT_BITS;
+  Bvh bvh;
+  bvh.nodes = {{glm::vec3(0), 1u, glm::vec3(2, 1, 0), 0u},
+               {glm::vec3(0), 0u, glm::vec3(1, 1, 0), most},
+               {glm::vec3(1, 0, 0), most, glm::vec3(2, 1, 0), 1u}};
+  const std::vector<gpu::BvhPairNode> pairs = pairNodes(bvh);
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_EQ(pairs[0].child[0], 0u);
+  EXPECT_EQ(pairs[0].count[0], most);
+  EXPECT_EQ(pairs[0].child[1], most);
+  EXPECT_EQ(pairs[0].count[1], 1u);
+  bvh.nodes[1].triCount = most + 1;
+  EXPECT_THROW(pairNodes(bvh), std::invalid_argument);
+  bvh.nodes[1].triCount = most;
+  bvh.nodes[2].leftOrFirst = RL_LEAF_ENTRY_LIMIT;
+  EXPECT_THROW(pairNodes(bvh), std::invalid_argument);
 }
 
 }  // namespace
