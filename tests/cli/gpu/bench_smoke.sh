@@ -91,7 +91,7 @@ for scene in facts:
 print('ok: scale sweep', t1, t2, 'triangles, BVH', b1, b2, 'bytes')
 PY
 if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
-  /usr/bin/python3 "$source_dir/app/bench_charts.py" "$dir/scale" > /dev/null
+  /usr/bin/python3 "$source_dir/app/bench/bench_charts.py" "$dir/scale" > /dev/null
   for chart in crossover_triangles_hall.png crossover_bounces_hall.png stages_temple-detail-1e4-hall-b2.png; do
     [ -s "$dir/scale/$chart" ] || { echo "FAIL: bench_charts.py drew no $chart"; ls "$dir/scale"; exit 1; }
   done
