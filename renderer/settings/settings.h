@@ -91,7 +91,7 @@ enum class Fusion { None, Keys, Gather, Both };
 // stages (trace, shade, and keys, sort and reorder where a sort follows) visit only live paths, in full
 // warps. Every bounce but the last, sorted or not, except where shade makes the keys (Fusion::Keys). Same
 // image bit for bit (a path's id, not its slot, picks its pixel and random numbers).
-// Measured on an H200 (docs/results/h200-compaction): the unsorted frame 0.70-0.97x (openings at 8 bounces to
+// Measured on an H200 (docs/results/archive/h200-compaction): the unsorted frame 0.70-0.97x (openings at 8 bounces to
 // the hall at 4), more than sorting ever gained there; on lavapipe 0.62-0.90x on alley, openings and Sponza.
 // So it is the default. With coarse keys (fixed, 8 sorted bits) the sorted frames lose 0.1-0.2 ms: the stable
 // sort keeps equal keys in slot order, which compaction scrambles at subgroup granularity.
@@ -102,7 +102,7 @@ enum class Compaction { None, Shade };
 // nothing reads the hits between trace and shade (length-cache learning after a sort, detailed statistics, a
 // heatmap of that bounce, keys made in shade, a trace that gathers after a sort); those bounces stay split.
 // Same image bit for bit (the same traversal of the same floats).
-// Measured on an H200 (docs/results/h200-trace-shade): unsorted frames 0.92-0.99x, sorted ones never slower;
+// Measured on an H200 (docs/results/archive/h200-trace-shade): unsorted frames 0.92-0.99x, sorted ones never slower;
 // with compaction the unsorted wavefront is then within 5% of the megakernel but on the hall at 4 bounces.
 // The default stays split, the per-stage view the timing panel teaches; use fused for GPU measurements.
 enum class TraceShade { Split, Fused };

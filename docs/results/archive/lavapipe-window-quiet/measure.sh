@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Window vs headless at 320x180, 4 bounces, per strategy (issue 18's table). Validation off.
 set -eu
-repo=$(cd "$(dirname "$0")/../../.." && pwd)
+repo=$(cd "$(dirname "$0")/../../../.." && pwd)
 raylab=${RAYLAB:-$repo/build/raylab}  # run it in an empty folder: the logs, stats and PNGs go there
 frames=16
 strategies="none fixed average gaussian two-point"
