@@ -96,7 +96,7 @@ if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
     [ -s "$dir/scale/$chart" ] || { echo "FAIL: bench_charts.py drew no $chart"; ls "$dir/scale"; exit 1; }
   done
   # The stacked stages are the CSV's stage columns (renderer/stages.h's order) that some cell timed.
-  /usr/bin/python3 - "$source_dir/app" "$dir/scale" <<'PY'
+  /usr/bin/python3 - "$source_dir/app/bench" "$dir/scale" <<'PY'
 import json, sys
 sys.path.insert(0, sys.argv[1])
 folder = sys.argv[2]
