@@ -2,8 +2,8 @@
 
 #include "app/command_errors.h"
 
-#include "renderer/settings_table.h"
-#include "renderer/settings_validation.h"
+#include "renderer/settings/settings_table.h"
+#include "renderer/settings/settings_validation.h"
 
 namespace raylab {
 

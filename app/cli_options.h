@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "renderer/vk/validation_mode.h"
 
 namespace raylab {

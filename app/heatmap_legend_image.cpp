@@ -6,7 +6,7 @@
 #include <glm/glm.hpp>
 #include <stb/stb_easy_font.h>
 
-#include "renderer/heatmap_colours.h"
+#include "renderer/heatmap/heatmap_colours.h"
 
 namespace raylab {
 namespace {

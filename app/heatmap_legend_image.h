@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/heatmap_stats.h"
+#include "renderer/heatmap/heatmap_stats.h"
 
 namespace raylab {
 

@@ -4,11 +4,11 @@
 #include <string>
 #include <vector>
 
-#include "app/bench_command.h"
+#include "app/bench/bench_command.h"
 #include "app/render_command.h"
 #include "app/scene_setup.h"
 #include "app/sortbench_command.h"
-#include "app/study_command.h"
+#include "app/study/study_command.h"
 #include "app/window_command.h"
 #include "renderer/vk/vk_check.h"
 
@@ -24,7 +24,7 @@ void printHelp() {
       "  raylab render [options]     render headless to a PNG (raylab render --help)\n"
       "  raylab sortbench [options]  time the GPU sorts alone (raylab sortbench --help)\n"
       "  raylab bench [options]      sweep strategies and sorts, write CSV/JSON (raylab bench --help;\n"
-      "                              charts: app/bench_charts.py)\n"
+      "                              charts: app/bench/bench_charts.py)\n"
       "  raylab study SCENE[@VIEW]   where sorting pays on a scene: a standard sweep and an HTML report\n"
       "                              (raylab study --help)\n"
       "  raylab devices              list Vulkan devices and whether each can run --tracer rt and --ser\n"

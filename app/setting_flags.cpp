@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "app/cli_options.h"
-#include "renderer/settings_table.h"
+#include "renderer/settings/settings_table.h"
 
 namespace raylab {
 namespace {

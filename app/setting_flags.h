@@ -1,13 +1,13 @@
 // Render flags applied on top of existing Settings, with exactly the CLI's validation. parseCommonOptions
 // always starts from default Settings; the window needs "change this one field of what I have" (a script's
 // `set strategy gaussian`, command-line flags over the settings remembered in imgui.ini, flags after
-// `--settings FILE.json`). Each flag is a row of the settings table (renderer/settings_table.h).
+// `--settings FILE.json`). Each flag is a row of the settings table (renderer/settings/settings_table.h).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 
 namespace raylab {
 

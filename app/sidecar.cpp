@@ -8,7 +8,7 @@
 
 #include "app/fly_camera.h"
 #include "app/setting_flags.h"
-#include "renderer/heatmap_rules.h"
+#include "renderer/heatmap/heatmap_rules.h"
 #include "renderer/stats_json.h"
 #include "renderer/git_revision.h"
 

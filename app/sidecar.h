@@ -12,7 +12,7 @@
 #include "app/cli_options.h"
 #include "app/learned_history.h"
 #include "renderer/frame_stats.h"
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "renderer/vk/vk_context.h"
 #include "scenes/scene.h"
 

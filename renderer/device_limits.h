@@ -1,5 +1,5 @@
 // Whether a device can hold and launch a frame of the settings' paths, said before anything renders. The
-// settings' own limits (renderer/settings_validation.h: at most 8192 a side, 2^26 paths a frame) hold on
+// settings' own limits (renderer/settings/settings_validation.h: at most 8192 a side, 2^26 paths a frame) hold on
 // every device; these are the device's own: how many threads its dispatches can cover in rows
 // (renderer/vk/dispatch_size.h), how many rays one ray-tracing launch may have (--tracer rt), and the
 // largest single allocation, which must hold one 16-byte element of every path's state.
@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "renderer/vk/vk_context.h"
 
 namespace raylab {

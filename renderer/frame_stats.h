@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "renderer/frame_commands.h"
-#include "renderer/heatmap_stats.h"
+#include "renderer/heatmap/heatmap_stats.h"
 #include "renderer/stages.h"
 
 namespace raylab {

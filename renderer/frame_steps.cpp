@@ -7,8 +7,8 @@
 
 #include "renderer/detail_stats.h"
 #include "renderer/detail_sums.h"
-#include "renderer/heatmap_pass.h"
-#include "renderer/heatmap_rules.h"
+#include "renderer/heatmap/heatmap_pass.h"
+#include "renderer/heatmap/heatmap_rules.h"
 #include "renderer/reorder/key_functions.h"
 #include "renderer/reorder/key_strategies.h"
 #include "renderer/reorder/path_sorter.h"

@@ -1,7 +1,7 @@
 #include "renderer/gpu_scene.h"
 
-#include "renderer/bvh_leaf_records.h"
-#include "renderer/bvh_pairs.h"
+#include "renderer/bvh/bvh_leaf_records.h"
+#include "renderer/bvh/bvh_pairs.h"
 #include "renderer/vk/vk_context.h"
 
 namespace raylab {

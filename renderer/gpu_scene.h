@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "renderer/bvh.h"
-#include "renderer/bvh_wide.h"
+#include "renderer/bvh/bvh.h"
+#include "renderer/bvh/bvh_wide.h"
 #include "renderer/vk/gpu_buffer.h"
 #include "scenes/scene.h"
 #include "shaders/shared_types.h"
@@ -60,7 +60,7 @@ class GpuSceneData {
 };
 
 // The triangles as the shaders read them (v0 and two edges), in BVH order: uploaded, and read by the CPU
-// twin of the traversal (renderer/bvh_traverse_cpu.h).
+// twin of the traversal (renderer/bvh/bvh_traverse_cpu.h).
 std::vector<gpu::GpuTriangle> bvhOrderTriangles(const std::vector<Triangle>& triangles,
                                                 const std::vector<uint32_t>& triangleOrder);
 

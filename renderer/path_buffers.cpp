@@ -1,6 +1,6 @@
 #include "renderer/path_buffers.h"
 
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "renderer/vk/vk_context.h"
 
 namespace raylab {

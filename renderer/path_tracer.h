@@ -16,7 +16,7 @@
 #include "renderer/gpu_scene.h"
 #include "renderer/vk/gpu_timer.h"
 #include "renderer/path_buffers.h"
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "scenes/scene.h"
 
 namespace raylab {

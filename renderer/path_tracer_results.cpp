@@ -9,7 +9,7 @@
 #include "renderer/detail_sums.h"
 #include "renderer/reorder/path_sorter.h"
 #include "renderer/rt_tracer.h"
-#include "renderer/heatmap_pass.h"
+#include "renderer/heatmap/heatmap_pass.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
 

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "renderer/vk/acceleration_structure.h"
 #include "renderer/vk/rt_pipeline.h"
 #include "shaders/key_types.h"

@@ -1,11 +1,11 @@
 // JSON forms of FrameStats and the device, used by --stats, the benchmark and screenshot sidecars; that of
-// Settings is renderer/settings_json.h (included here: whoever writes stats writes the settings beside them).
+// Settings is renderer/settings/settings_json.h (included here: whoever writes stats writes the settings beside them).
 #pragma once
 
 #include <nlohmann/json.hpp>
 
 #include "renderer/frame_stats.h"
-#include "renderer/settings_json.h"
+#include "renderer/settings/settings_json.h"
 #include "renderer/vk/vk_context.h"
 
 namespace raylab {

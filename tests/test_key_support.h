@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "renderer/bvh_leaf_records.h"
-#include "renderer/bvh_pairs.h"
+#include "renderer/bvh/bvh_leaf_records.h"
+#include "renderer/bvh/bvh_pairs.h"
 #include "renderer/vk/gpu_buffer.h"
 #include "renderer/reorder/key_functions.h"
 #include "renderer/reorder/key_stage.h"

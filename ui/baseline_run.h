@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 
 namespace raylab {
 

@@ -5,8 +5,8 @@
 
 #include <imgui.h>
 
-#include "renderer/heatmap_colours.h"
-#include "renderer/heatmap_rules.h"
+#include "renderer/heatmap/heatmap_colours.h"
+#include "renderer/heatmap/heatmap_rules.h"
 #include "ui/panel_layout.h"
 
 namespace raylab {

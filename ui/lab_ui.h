@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/frame_stats.h"
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "ui/baseline_run.h"
 #include "ui/panel_layout.h"
 #include "ui/speed_accuracy_book.h"

@@ -6,9 +6,9 @@
 
 #include <imgui.h>
 
-#include "renderer/heatmap_rules.h"
+#include "renderer/heatmap/heatmap_rules.h"
 #include "renderer/reorder/key_strategies.h"
-#include "renderer/settings_table.h"
+#include "renderer/settings/settings_table.h"
 #include "ui/clip_check.h"
 #include "ui/panel_layout.h"
 

@@ -1,9 +1,9 @@
 // The method panel: everything about how rays are reordered, as edits of Settings (and the resolution
 // scale of the view). Every slider is clamped to the range where the method is defined (its row of the
-// settings table, renderer/settings_table.h).
+// settings table, renderer/settings/settings_table.h).
 #pragma once
 
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "ui/ui_state.h"
 
 namespace raylab {

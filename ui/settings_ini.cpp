@@ -7,7 +7,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
-#include "renderer/settings_json.h"
+#include "renderer/settings/settings_json.h"
 
 namespace raylab {
 namespace {

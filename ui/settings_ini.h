@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "ui/ui_state.h"
 
 namespace raylab {

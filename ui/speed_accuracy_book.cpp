@@ -6,7 +6,7 @@
 
 #include "renderer/reorder/key_functions.h"
 #include "renderer/reorder/key_strategies.h"
-#include "renderer/settings_table.h"
+#include "renderer/settings/settings_table.h"
 #include "renderer/stages.h"
 
 namespace raylab {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "renderer/frame_stats.h"
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 
 namespace raylab {
 

@@ -4,7 +4,7 @@
 // plot's numbered legend). "Measure baselines" asks for those through Settings (baseline_run.h).
 #pragma once
 
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "ui/baseline_run.h"
 #include "ui/speed_accuracy_book.h"
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "renderer/frame_stats.h"
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "ui/timing_history.h"
 #include "ui/ui_state.h"
 

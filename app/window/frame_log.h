@@ -10,7 +10,7 @@
 
 #include "app/window/live_render.h"
 #include "renderer/checked_write.h"
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 
 namespace raylab {
 

@@ -5,7 +5,7 @@
 
 #include <imgui.h>
 
-#include "renderer/heatmap_pass.h"
+#include "renderer/heatmap/heatmap_pass.h"
 #include "renderer/path_tracer.h"
 
 namespace raylab {

@@ -13,7 +13,7 @@
 #include "app/window/swapchain.h"
 #include "renderer/path_tracer.h"
 #include "renderer/reorder/key_stage.h"
-#include "renderer/settings_table.h"
+#include "renderer/settings/settings_table.h"
 #include "renderer/vk/vk_context.h"
 
 namespace raylab {

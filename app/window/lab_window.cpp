@@ -16,7 +16,7 @@
 #include "app/window/wall_clock.h"
 #include "app/window/presenter.h"
 #include "app/window/swapchain.h"
-#include "renderer/heatmap_rules.h"
+#include "renderer/heatmap/heatmap_rules.h"
 #include "renderer/path_tracer.h"
 #include "renderer/rt_tracer.h"
 #include "renderer/vk/vk_context.h"

@@ -15,7 +15,7 @@
 #include "app/window/glfw_window.h"
 #include "app/window/imgui_layer.h"
 #include "app/window/window_options.h"
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "ui/lab_ui.h"
 #include "ui/settings_ini.h"
 #include "ui/ui_state.h"

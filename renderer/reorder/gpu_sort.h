@@ -29,7 +29,7 @@
 
 #include "renderer/vk/compute_pipeline.h"
 #include "renderer/vk/gpu_buffer.h"
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "shaders/sort_types.h"
 
 namespace raylab {

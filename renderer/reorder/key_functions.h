@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "shaders/key_types.h"
 
 namespace raylab {

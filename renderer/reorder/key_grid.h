@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "scenes/scene.h"
 #include "shaders/key_types.h"
 

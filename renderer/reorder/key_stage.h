@@ -20,7 +20,7 @@
 #include "renderer/vk/gpu_buffer.h"
 #include "renderer/reorder/key_grid.h"
 #include "renderer/reorder/length_cache.h"
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "renderer/vk/stage_timer.h"
 #include "scenes/scene.h"
 #include "shaders/key_types.h"

@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "shaders/key_types.h"
 
 namespace raylab {

@@ -17,7 +17,7 @@
 #include "renderer/vk/gpu_buffer.h"
 #include "renderer/reorder/gpu_sort.h"
 #include "renderer/reorder/key_stage.h"
-#include "renderer/settings.h"
+#include "renderer/settings/settings.h"
 #include "scenes/scene.h"
 
 namespace raylab {

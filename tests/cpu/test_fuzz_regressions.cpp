@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "app/bench_sweep.h"
+#include "app/bench/bench_sweep.h"
 #include "app/sidecar.h"
 #include "app/ui_script.h"
 #include "scenes/gltf_loader.h"

@@ -11,8 +11,8 @@
 #include "tests/temp_path.h"
 #include "app/learned_history.h"
 #include "app/sidecar.h"
-#include "renderer/heatmap_rules.h"
-#include "renderer/settings_validation.h"
+#include "renderer/heatmap/heatmap_rules.h"
+#include "renderer/settings/settings_validation.h"
 
 namespace raylab {
 namespace {

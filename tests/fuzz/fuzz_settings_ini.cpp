@@ -3,7 +3,7 @@
 // use. Saved settings that are accepted must pass validateSettings.
 #include <imgui.h>
 
-#include "renderer/settings_validation.h"
+#include "renderer/settings/settings_validation.h"
 #include "tests/fuzz/fuzz_input.h"
 #include "ui/settings_ini.h"
 

@@ -1,10 +1,10 @@
 // Screenshot sidecars and settings files (`--settings FILE.json`, app/sidecar.h), which read Settings
-// through settingsFromJson (renderer/settings_json.h) and the camera. The only acceptable failure is
+// through settingsFromJson (renderer/settings/settings_json.h) and the camera. The only acceptable failure is
 // UsageError; a file that is accepted must hold settings that pass validateSettings and a usable camera.
 #include <cmath>
 
 #include "app/sidecar.h"
-#include "renderer/settings_validation.h"
+#include "renderer/settings/settings_validation.h"
 #include "tests/fuzz/fuzz_input.h"
 
 namespace {

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "renderer/heatmap_rules.h"
+#include "renderer/heatmap/heatmap_rules.h"
 #include "renderer/rt_tracer.h"
 #include "renderer/vk/validation_layer.h"
 #include "scenes/procedural.h"

@@ -17,12 +17,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "renderer/bvh.h"
-#include "renderer/bvh_wide.h"
-#include "renderer/bvh_wide_slots.h"
+#include "renderer/bvh/bvh.h"
+#include "renderer/bvh/bvh_wide.h"
+#include "renderer/bvh/bvh_wide_slots.h"
 #include "renderer/checked_write.h"
-#include "renderer/settings_table.h"
-#include "renderer/settings_validation.h"
+#include "renderer/settings/settings_table.h"
+#include "renderer/settings/settings_validation.h"
 #include "scenes/scene_library.h"
 
 namespace {

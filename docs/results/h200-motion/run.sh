@@ -2,7 +2,7 @@
 # Issue 37 on the H200, one device call (about 6-7 minutes of GPU time; not run yet): `raylab bench
 # --camera-path` on the clutter room and Sponza at 2048x1024 and 4096x2048 (2.1M and 8.4M paths), 4
 # bounces, over a 240-frame walk and a 240-frame cut path, one round (the detailed replay: its times are
-# work times, the detail passes left out, app/bench_path.h). Cells: the megakernel, the unsorted wavefront,
+# work times, the detail passes left out, app/bench/bench_path.h). Cells: the megakernel, the unsorted wavefront,
 # two-point, average and gaussian under always and auto (auto against the better of always and never =
 # unsorted over the whole path); on the cut paths also gaussian's reset threshold 5, 20 (the study's) and
 # inf. The clutter room has no walk of its own: its built-in pan (along the shelves) is its walk. Sponza's

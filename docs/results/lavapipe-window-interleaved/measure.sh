@@ -2,7 +2,7 @@
 # Window against headless at 320x180, 4 bounces (issue 18's table), measured so that the machine's drift
 # cancels: each method's window run and its headless run are adjacent in time (a pair), in ABBA order over
 # ROUNDS rounds (window first in even rounds, headless first in odd ones), and analyse.py takes the median of
-# the pairs' ratios. The first procedure (../lavapipe-window-quiet/measure.sh) ran all window frames, then
+# the pairs' ratios. The first procedure (../archive/lavapipe-window-quiet/measure.sh) ran all window frames, then
 # all headless ones, 1-2 minutes apart: the same headless frame moved by 12% between its runs.
 # Run it in an empty folder: RAYLAB=path/to/raylab ROUNDS=5 bash measure.sh; then python3 analyse.py.
 set -eu

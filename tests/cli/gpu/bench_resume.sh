@@ -95,7 +95,7 @@ if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
   chart="$dir/whole/coherence_cornell-front.png"
   ln -s /dev/full "$chart"
   set +e
-  /usr/bin/python3 "$source_dir/app/bench_charts.py" "$dir/whole" >"$dir/charts.log" 2>&1
+  /usr/bin/python3 "$source_dir/app/bench/bench_charts.py" "$dir/whole" >"$dir/charts.log" 2>&1
   rc=$?
   set -e
   [ $rc -ne 0 ] && grep -q "cannot write $chart: No space left on device" "$dir/charts.log" ||

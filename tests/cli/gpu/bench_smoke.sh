@@ -91,12 +91,12 @@ for scene in facts:
 print('ok: scale sweep', t1, t2, 'triangles, BVH', b1, b2, 'bytes')
 PY
 if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
-  /usr/bin/python3 "$source_dir/app/bench_charts.py" "$dir/scale" > /dev/null
+  /usr/bin/python3 "$source_dir/app/bench/bench_charts.py" "$dir/scale" > /dev/null
   for chart in crossover_triangles_hall.png crossover_bounces_hall.png stages_temple-detail-1e4-hall-b2.png; do
     [ -s "$dir/scale/$chart" ] || { echo "FAIL: bench_charts.py drew no $chart"; ls "$dir/scale"; exit 1; }
   done
   # The stacked stages are the CSV's stage columns (renderer/stages.h's order) that some cell timed.
-  /usr/bin/python3 - "$source_dir/app" "$dir/scale" <<'PY'
+  /usr/bin/python3 - "$source_dir/app/bench" "$dir/scale" <<'PY'
 import json, sys
 sys.path.insert(0, sys.argv[1])
 folder = sys.argv[2]

@@ -54,7 +54,7 @@ PY
 grep -q "accumulating for 1.5 s" <<<"$out" || { echo "FAIL: no budget message"; echo "$out"; exit 1; }
 
 # --bvh wide renders with the wide BVH: the stats say so, give its size, and count its own (fewer) steps per
-# camera ray than the binary tree's for the same frame (tests/gpu/test_bvh_wide_render.cpp compares the images).
+# camera ray than the binary tree's for the same frame (tests/gpu/bvh/test_bvh_wide_render.cpp compares the images).
 for bvh in binary wide; do
   RAYLAB_VALIDATE=1 "$raylab" render --bvh $bvh --scene temple --view hall --size 33x17 --out "$dir/$bvh.png" \
     --stats "$dir/$bvh.json" >/dev/null

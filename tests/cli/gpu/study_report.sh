@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# app/study_report.py over two tiny bench sweeps (two image sizes, two bounce counts): one self-contained
+# app/study/study_report.py over two tiny bench sweeps (two image sizes, two bounce counts): one self-contained
 # HTML file (every chart a data: URL, nothing fetched), the verdict for each bounce count, the crossover
 # table with both path counts, the image check passing; then the same report over a copy whose sorted cell
 # claims another relative MSE must say the invariant is broken, and a folder without results exits 2.
@@ -9,7 +9,7 @@ repo="$2"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 /usr/bin/python3 -c "import matplotlib" 2>/dev/null || { echo "skip: python3-matplotlib is not installed"; exit 0; }
-report() { /usr/bin/python3 "$repo/app/study_report.py" "$@"; }
+report() { /usr/bin/python3 "$repo/app/study/study_report.py" "$@"; }
 for size in 32x16 64x32; do
   "$raylab" bench --cases temple@hall --strategies two-point --bounces 2,3 --size "$size" --timed-frames 2 \
     --warmup 1 --reference-spp 2 --rounds 2 --out-dir "$dir/b-$size" >"$dir/b-$size.log" 2>&1 ||

@@ -1,0 +1,153 @@
+#include "renderer/bvh/bvh_traverse_cpu.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace raylab {
+namespace {
+
+float cpuIntersectBox(glm::vec3 bmin, glm::vec3 bmax, glm::vec3 origin, glm::vec3 invDir, float tMax) {
+  const glm::vec3 t0 = (bmin - origin) * invDir;
+  const glm::vec3 t1 = (bmax - origin) * invDir;
+  const glm::vec3 tn = glm::min(t0, t1);
+  const glm::vec3 tf = glm::max(t0, t1);
+  const float enter = std::max(std::max(tn.x, tn.y), std::max(tn.z, 0.0f));
+  const float leave = std::min(std::min(tf.x, tf.y), std::min(tf.z, tMax));
+  return enter <= leave ? enter : 1e30f;
+}
+
+void cpuIntersectTriangle(const gpu::GpuTriangle& tri, uint32_t index, glm::vec3 origin, glm::vec3 dir, CpuHit& hit,
+                          float& tMax) {
+  const glm::vec3 p = glm::cross(dir, tri.e2);
+  const float det = glm::dot(tri.e1, p);
+  if (std::abs(det) < 1e-12f) return;
+  const float inv = 1.0f / det;
+  const glm::vec3 s = origin - tri.v0;
+  const float u = glm::dot(s, p) * inv;
+  if (u < 0.0f || u > 1.0f) return;
+  const glm::vec3 q = glm::cross(s, tri.e1);
+  const float v = glm::dot(dir, q) * inv;
+  if (v < 0.0f || u + v > 1.0f) return;
+  const float t = glm::dot(tri.e2, q) * inv;
+  if (t > 0.0f && t < tMax) {
+    tMax = t;
+    hit.t = t;
+    hit.triangle = index;
+    hit.bary = {u, v};
+  }
+}
+
+glm::vec3 cpuSafeInverse(glm::vec3 d) {
+  const float eps = 1e-20f;
+  glm::vec3 r;
+  for (int k = 0; k < 3; ++k) r[k] = 1.0f / (std::abs(d[k]) > eps ? d[k] : (d[k] >= 0.0f ? eps : -eps));
+  return r;
+}
+
+}  // namespace
+
+CpuHit traverseBinaryCpu(const std::vector<gpu::BvhNode>& nodes, const std::vector<gpu::GpuTriangle>& triangles,
+                         glm::vec3 origin, glm::vec3 dir, float tMax, bool anyHit) {
+  CpuHit hit;
+  const glm::vec3 invDir = cpuSafeInverse(dir);
+  uint32_t stack[RL_BVH_STACK];
+  uint32_t sp = 0, node = 0;
+  if (cpuIntersectBox(nodes[0].boundsMin, nodes[0].boundsMax, origin, invDir, tMax) >= 1e30f) return hit;
+  while (true) {
+    hit.steps++;
+    hit.nodeVisits++;
+    const gpu::BvhNode& n = nodes[node];
+    if (n.triCount > 0) {
+      hit.triangleTests += n.triCount;
+      for (uint32_t i = 0; i < n.triCount; ++i)
+        cpuIntersectTriangle(triangles[n.leftOrFirst + i], n.leftOrFirst + i, origin, dir, hit, tMax);
+      if (anyHit && hit.t > 0.0f) return hit;
+      if (sp == 0) break;
+      node = stack[--sp];
+      continue;
+    }
+    uint32_t left = n.leftOrFirst, right = left + 1;
+    float dl = cpuIntersectBox(nodes[left].boundsMin, nodes[left].boundsMax, origin, invDir, tMax);
+    float dr = cpuIntersectBox(nodes[right].boundsMin, nodes[right].boundsMax, origin, invDir, tMax);
+    if (dl > dr) {
+      std::swap(dl, dr);
+      std::swap(left, right);
+    }
+    if (dl >= 1e30f) {
+      if (sp == 0) break;
+      node = stack[--sp];
+      continue;
+    }
+    node = left;
+    if (dr < 1e30f && sp < RL_BVH_STACK) stack[sp++] = right;
+  }
+  return hit;
+}
+
+CpuHit intersectAllCpu(const std::vector<gpu::GpuTriangle>& triangles, glm::vec3 origin, glm::vec3 dir, float tMax) {
+  CpuHit hit;
+  for (uint32_t i = 0; i < triangles.size(); ++i) cpuIntersectTriangle(triangles[i], i, origin, dir, hit, tMax);
+  return hit;
+}
+
+CpuHit traverseWideCpu(const BvhWide& bvh, const std::vector<gpu::GpuTriangle>& triangles, glm::vec3 origin,
+                       glm::vec3 dir, float tMax, bool anyHit) {
+  CpuHit hit;
+  const glm::vec3 invDir = cpuSafeInverse(dir);
+  const uint32_t octant = (dir.x < 0.0f ? 1u : 0u) | (dir.y < 0.0f ? 2u : 0u) | (dir.z < 0.0f ? 4u : 0u);
+  glm::uvec2 stack[RL_BVH_STACK];
+  uint32_t sp = 0;
+  glm::uvec2 nodeGroup(0u, (1u << 8) | (1u << octant));
+  while (true) {
+    if ((nodeGroup.y & 0xFFu) == 0) {
+      if (sp == 0) break;
+      nodeGroup = stack[--sp];
+    }
+    const uint32_t position = std::countr_zero(nodeGroup.y & 0xFFu);
+    nodeGroup.y &= ~(1u << position);
+    const uint32_t slot = position ^ octant;
+    const uint32_t nodeIndex = nodeGroup.x + std::popcount((nodeGroup.y >> 8) & ((1u << slot) - 1u));
+
+    hit.steps++;
+    hit.nodeVisits++;
+    const gpu::BvhWideNode& n = bvh.nodes[nodeIndex];
+    const uint32_t interiorMask = wideInteriorMask(n);
+    uint32_t nodeHits = 0, triangleHits = 0;
+    // The ray in the node's quantized frame, as the shader does: a child plane q is at t = q * tScale + tOrigin.
+    const glm::vec3 scale = wideScale(n);
+    const glm::vec3 tScale = scale * invDir, tOrigin = (n.origin - origin) * invDir;
+    for (uint32_t s = 0; s < RL_BVH_WIDTH; ++s) {
+      // Near and far planes by the ray's sign per axis, as the shader picks them (no min and max per child).
+      const glm::vec3 lo = wideLowPlanes(n, s), hi = wideHighPlanes(n, s);
+      glm::vec3 qnear, qfar;
+      for (int k = 0; k < 3; ++k) {
+        const bool negative = (octant >> k) & 1u;
+        qnear[k] = negative ? hi[k] : lo[k];
+        qfar[k] = negative ? lo[k] : hi[k];
+      }
+      const glm::vec3 tn = qnear * tScale + tOrigin, tf = qfar * tScale + tOrigin;
+      const float enter = std::max(std::max(tn.x, tn.y), std::max(tn.z, 0.0f));
+      const float leave = std::min(std::min(tf.x, tf.y), std::min(tf.z, tMax));
+      if (enter > leave) continue;
+      if (interiorMask & (1u << s))
+        nodeHits |= 1u << (s ^ octant);
+      else
+        triangleHits |= wideLeafBits(wideMeta(n, s));
+    }
+    if (nodeHits != 0) {  // descending: the siblings wait on the stack
+      if ((nodeGroup.y & 0xFFu) != 0) stack[sp++] = nodeGroup;
+      nodeGroup = {n.childBase, (interiorMask << 8) | nodeHits};
+    }
+    while (triangleHits != 0) {  // the node's triangle group, in the same step
+      const uint32_t index = n.triBase + std::countr_zero(triangleHits);
+      triangleHits &= triangleHits - 1u;
+      hit.triangleTests++;
+      cpuIntersectTriangle(triangles[index], index, origin, dir, hit, tMax);
+      if (anyHit && hit.t > 0.0f) return hit;
+    }
+  }
+  return hit;
+}
+
+}  // namespace raylab
