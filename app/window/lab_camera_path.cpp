@@ -21,6 +21,9 @@ void LabWindow::stepCameraPath() {
   if (pathPlayer_.playing() && settings_.scene != pathScene_) {
     pathPlayer_.stop();
     cameraModel_.path.status = "the path stopped: another scene was loaded";
+  } else if (pathPlayer_.playing() && !pathPlayer_.holds(camera_.viewpoint())) {
+    pathPlayer_.stop();
+    cameraModel_.path.status = "the path stopped: the camera was moved";
   }
   if (std::optional<Viewpoint> v = pathPlayer_.moveIfDue(*tracer_)) camera_.reset(*v, camera_.speed());
   if (!recorder_.recording()) return;

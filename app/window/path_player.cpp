@@ -7,12 +7,20 @@ void PathPlayer::play(PathRender path) {
   frame_ = 0;
   playing_ = path_.frames > 0;
   due_ = playing_;
+  moved_ = false;
 }
 
 std::optional<Viewpoint> PathPlayer::moveIfDue(PathTracer& tracer) {
   if (!playing_ || !due_) return std::nullopt;
   due_ = false;
-  return movePathCamera(tracer, path_, frame_).view;
+  current_ = movePathCamera(tracer, path_, frame_).view;
+  moved_ = true;
+  return current_;
+}
+
+bool PathPlayer::holds(const Viewpoint& v) const {
+  return !moved_ || (v.position == current_.position && v.target == current_.target && v.up == current_.up &&
+         v.yfovRadians == current_.yfovRadians);
 }
 
 bool PathPlayer::frameDone() {

@@ -31,12 +31,17 @@ class PathPlayer {
   // A render frame completed: it was the current path frame's, so the next one is due. True when that was
   // the path's last frame (playing stops).
   bool frameDone();
+  // Whether `view` is the camera the path put in last (true before the first): one that is not was moved
+  // some other way (a viewpoint button, a pasted camera, R), which ends the playing.
+  bool holds(const Viewpoint& view) const;
 
  private:
   PathRender path_;
   bool playing_ = false;
   bool due_ = false;  // the current path frame's camera is not in the tracer yet
   uint32_t frame_ = 0;
+  Viewpoint current_;  // the camera of the path frame moved in last
+  bool moved_ = false;  // current_ is set: a path frame was moved in since play()
 };
 
 }  // namespace raylab
