@@ -4,9 +4,9 @@
 #include <cstdio>
 
 #include "app/camera_path_builtin.h"
-#include "app/camera_path_file.h"
 #include "app/cli_options.h"
 #include "renderer/path_tracer.h"
+#include "app/camera_path_file.h"
 
 namespace raylab {
 namespace {
