@@ -39,7 +39,9 @@ const char* const kRenderHelp =
     "  --detail-every N       with --stats: the detailed figures (warp efficiency, prediction error, keys) on\n"
     "                         every Nth frame, from frame 0 (default 1: every frame; 0: none). Their GPU passes\n"
     "                         are the counters stage (instrument_ms), outside work_ms; frames without them show\n"
-    "                         what they cost\n";
+    "                         what they cost\n"
+    "  --frame-digests        with --stats: each frame's \"radiance_digest\", a hash of its radiance's bits, to\n"
+    "                         compare two renders frame by frame (the sorted-equals-unsorted invariant)\n";
 
 void printRenderUsage(const std::string& error) {
   printUsageError("raylab render", error);
@@ -66,6 +68,7 @@ struct RenderRequest {
   uint32_t detailEvery = 1;    // --detail-every; 0: no detailed frame
   std::string learnedNote;     // --settings FILE.json whose length cache learned over more than its frames
   std::optional<PathRender> path;  // --camera-path
+  bool frameDigests = false;       // --frame-digests
 };
 
 // Parses the arguments and loads the scene; any error is reported as the command's exit code.
@@ -76,6 +79,8 @@ int parseRenderRequest(const std::vector<std::string>& givenArgs, RenderRequest&
     if (auto budget = takeFlag(args, "--time-budget")) r.budgetSeconds = parseFloat("--time-budget", *budget, 0.001f, 86400.0f);
     const auto detailEvery = takeFlag(args, "--detail-every");
     if (detailEvery) r.detailEvery = parseUint("--detail-every", *detailEvery, 0, SettingLimits::kMaxFrames);
+    if (const auto at = std::find(args.begin(), args.end(), "--frame-digests"); at != args.end())
+      r.frameDigests = true, args.erase(at);
     const std::string cameraText = takeFlag(args, "--camera").value_or("");
     const std::optional<std::string> pathSpec = takeFlag(args, "--camera-path");
     r.options = parseOptionsWithSettingsFile(args, &sidecarCamera, nullptr, &r.learnedNote);
@@ -87,6 +92,8 @@ int parseRenderRequest(const std::vector<std::string>& givenArgs, RenderRequest&
     if (auto why = heatmapUnavailable(r.options.settings)) throw UsageError("--heatmap " + *why);
     if (detailEvery && r.options.statsPath.empty())
       throw UsageError("--detail-every needs --stats FILE.json: the detailed figures go there");
+    if (r.frameDigests && r.options.statsPath.empty())
+      throw UsageError("--frame-digests needs --stats FILE.json: the digests go there");
     r.loaded = loadSceneForSettings(r.options.settings);
     if (sidecarCamera) r.loaded.view = *sidecarCamera;
     if (!cameraText.empty()) {
@@ -109,7 +116,7 @@ int parseRenderRequest(const std::vector<std::string>& givenArgs, RenderRequest&
 
 // Renders --frames frames, or fewer when the time budget runs out first.
 RenderTotals accumulate(PathTracer& tracer, const RenderRequest& r) {
-  if (r.path) return renderAlongPath(tracer, *r.path, !r.options.statsPath.empty(), r.detailEvery);
+  if (r.path) return renderAlongPath(tracer, *r.path, !r.options.statsPath.empty(), r.detailEvery, r.frameDigests);
   const Settings& s = r.options.settings;
   RenderTotals t;
   const auto started = std::chrono::steady_clock::now();
@@ -124,7 +131,7 @@ RenderTotals accumulate(PathTracer& tracer, const RenderRequest& r) {
       t.budgetSpent = true;
       break;
     }
-    renderCountedFrame(tracer, f, stats, r.detailEvery, t);
+    renderCountedFrame(tracer, f, stats, r.detailEvery, t, r.frameDigests);
   }
   return t;
 }

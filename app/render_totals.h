@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/radiance_digest.h"
 #include "renderer/path_tracer.h"
 #include "renderer/stats_json.h"
 
@@ -40,15 +41,16 @@ struct RenderTotals {
 
 // Frame `f` of a render: detailed where --detail-every says (with --stats only), rendered, added to `t`, and
 // with --stats its JSON appended to t.frames. Returns that JSON for the caller's own fields (nullptr without
-// --stats).
+// --stats). `digest` (--frame-digests): the JSON has the frame's "radiance_digest" (radiance_digest.h).
 inline nlohmann::json* renderCountedFrame(PathTracer& tracer, uint32_t f, bool stats, uint32_t detailEvery,
-                                          RenderTotals& t) {
+                                          RenderTotals& t, bool digest = false) {
   tracer.setDetailedStats(stats && detailEvery > 0 && f % detailEvery == 0);
   const FrameStats& st = tracer.renderFrame();
   t.add(f, st);
   if (!stats) return nullptr;
   nlohmann::json frame = toJson(st);
   frame["detailed"] = tracer.detailedStats();
+  if (digest) frame["radiance_digest"] = radianceDigest(tracer.readRadiance());
   t.frames.push_back(std::move(frame));
   return &t.frames.back();
 }

@@ -68,11 +68,15 @@ ScriptAction parseLine(const std::vector<std::string>& w) {
   } else if (verb == "memory") {
     expectArgs(1, "memory LABEL");
     a.kind = K::Memory, a.value = checkedName("memory label", w[1]);
+  } else if (verb == "press") {
+    expectArgs(1, "press KEY");
+    a.kind = K::Press, a.value = scriptKeyName(w[1]);
+    if (a.value.empty()) throw ScriptError("press: unknown key '" + w[1] + "' (a letter, F1..F12, Tab or Esc, optionally shift+)");
   } else if (verb == "quit") {
     expectArgs(0, "quit");
     a.kind = K::Quit;
   } else {
-    throw ScriptError("unknown action '" + verb + "' (set, camera, view, wait, screenshot, screenshot-window, reset-layout, restart-learning, memory, quit)");
+    throw ScriptError("unknown action '" + verb + "' (set, camera, view, wait, screenshot, screenshot-window, reset-layout, restart-learning, memory, press, quit)");
   }
   return a;
 }
@@ -103,6 +107,22 @@ std::vector<ScriptAction> loadScript(const std::string& path) {
   std::stringstream text;
   text << in.rdbuf();
   return parseScript(text.str(), path);
+}
+
+std::string scriptKeyName(const std::string& text) {
+  std::string t;
+  for (char c : text) t += char(std::toupper(static_cast<unsigned char>(c)));
+  std::string shift;
+  if (t.rfind("SHIFT+", 0) == 0) shift = "shift+", t = t.substr(6);
+  if (t.size() == 1 && t[0] >= 'A' && t[0] <= 'Z') return shift + t;
+  if (t == "TAB") return shift + "Tab";
+  if (t == "ESC") return shift + "Esc";
+  if (t.size() >= 2 && t.size() <= 3 && t[0] == 'F' && std::isdigit(static_cast<unsigned char>(t[1])) &&
+      (t.size() == 2 || std::isdigit(static_cast<unsigned char>(t[2])))) {
+    const int n = std::stoi(t.substr(1));
+    if (n >= 1 && n <= 12) return shift + "F" + std::to_string(n);
+  }
+  return "";
 }
 
 const ScriptAction* ScriptRunner::next() {

@@ -10,6 +10,8 @@
 //   screenshot-window NAME   the same with the panels
 //   reset-layout             put the panels back where they open by default (the "Reset layout" button)
 //   restart-learning         a fresh length cache and accumulation (the L key): what a re-render learns
+//   press KEY                press a hotkey as the keyboard would: a letter, F1..F12, Tab or Esc, with an
+//                            optional "shift+" (press K starts or stops recording a camera path)
 //   memory LABEL             print the process's resident memory as one JSON line on stdout:
 //                            {"memory":LABEL,"frame":N,"vm_rss_kib":K,"vm_hwm_kib":K} (the soak reads it)
 //   quit                     close the window (the end of the file does too)
@@ -30,12 +32,12 @@ struct ScriptError : std::runtime_error {
 };
 
 struct ScriptAction {
-  enum class Kind { Set, Camera, View, Wait, Screenshot, ScreenshotWindow, ResetLayout, RestartLearning, Memory, Quit };
+  enum class Kind { Set, Camera, View, Wait, Screenshot, ScreenshotWindow, ResetLayout, RestartLearning, Memory, Quit, Press };
   Kind kind = Kind::Quit;
   int line = 0;
   std::string key;    // Set: the flag name
   std::string value;  // Set: its value; View: the viewpoint; Screenshot*: the file name; Camera: the text;
-                      // Memory: the label
+                      // Memory: the label; Press: the key (scriptKeyName's form)
   uint32_t frames = 0;  // Wait
 };
 
@@ -43,6 +45,10 @@ struct ScriptAction {
 // file in messages ("FILE:LINE: ..."). Throws ScriptError.
 std::vector<ScriptAction> parseScript(const std::string& text, const std::string& source);
 std::vector<ScriptAction> loadScript(const std::string& path);
+
+// A key `press` takes, as "A".."Z", "F1".."F12", "Tab" or "Esc" with an optional "shift+" (any case in the
+// script); empty when `text` names none.
+std::string scriptKeyName(const std::string& text);
 
 // Where the script is: the window asks it for the next action each frame.
 class ScriptRunner {

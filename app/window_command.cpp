@@ -30,7 +30,8 @@ const char* const kWindowHelp =
     "                           set KEY VALUE (any render flag without dashes: set heatmap sort-key),\n"
     "                           camera X Y Z TX TY TZ [fov D], view NAME, wait N (frames),\n"
     "                           screenshot NAME, screenshot-window NAME, reset-layout,\n"
-    "                           restart-learning, memory LABEL, quit; # starts a comment\n"
+    "                           restart-learning, memory LABEL, press KEY (a hotkey: press K records a\n"
+    "                           camera path), quit; # starts a comment\n"
     "  --screenshot-dir DIR   where F12 / Shift+F12 and scripts save (default CONFIG/screenshots)\n"
     "  --ini FILE             layout and last settings (default CONFIG/imgui.ini; none for scripts)\n"
     "  CONFIG is $XDG_CONFIG_HOME/raylab or ~/.config/raylab\n"
@@ -38,7 +39,9 @@ const char* const kWindowHelp =
     "  --frame-log FILE       write one JSON line per UI frame: ui_ms, render_ms, frame_done, preview, ...\n"
     "                         (python3 app/frame_log_report.py FILE reports p50/p95 and time to preview)\n"
     "  --render-budget-ms MS  render work per UI frame, 1..1000 (default 40): a frame that takes longer\n"
-    "                         renders its stages over several UI frames, after a coarse preview\n";
+    "                         renders its stages over several UI frames, after a coarse preview\n"
+    "  --camera-path FILE|builtin:NAME  play a camera path: one path frame per rendered frame, as `raylab render\n"
+    "                         --camera-path` replays it (Play/Stop in the Scene panel, or P); K records one\n";
 
 // The window's own flags that take a value; everything else is a render flag.
 bool isWindowValueFlag(const std::string& a) {
@@ -95,10 +98,11 @@ WindowOptions parseWindowOptions(const std::vector<std::string>& args) {
     else if (a == "--scale") o.scale = parseFloat("--scale", valueOf(rest, i), 0.05f, 2.0f);
     else if (a == "--frame-log") o.frameLog = checkedFrameLog(valueOf(rest, i));
     else if (a == "--render-budget-ms") o.renderBudgetMs = parseFloat("--render-budget-ms", valueOf(rest, i), 1.0f, 1000.0f);
+    else if (a == "--camera-path") o.cameraPath = valueOf(rest, i);  // resolved against the scene as it loads
     else {
       std::vector<std::string> known = commonOptionNames();
       for (const char* f : {"--script", "--screenshot-dir", "--ini", "--reset", "--window-size", "--scale", "--frame-log",
-                            "--render-budget-ms"})
+                            "--render-budget-ms", "--camera-path"})
         known.push_back(f);
       throw UsageError(unknownOptionMessage(a, known));
     }
@@ -137,7 +141,8 @@ int renderHeadless(const std::string& why, const std::vector<std::string>& args)
   std::fprintf(stderr, "raylab: %s; rendering headless instead (raylab render --help for the options)\n", why.c_str());
   std::vector<std::string> renderArgs = renderArgsOf(args);
   auto given = [&](const char* flag) { return std::find(args.begin(), args.end(), flag) != args.end(); };
-  if (!given("--frames") && !given("--time-budget") && !given("--settings"))
+  // A camera path renders its own frames, one image each: no accumulation budget applies to it.
+  if (!given("--frames") && !given("--time-budget") && !given("--settings") && !given("--camera-path"))
     renderArgs.insert(renderArgs.end(), {"--time-budget", kHeadlessBudget});
   return runRenderCommand(renderArgs);
 }

@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "ui/camera_path_section.h"
 #include "ui/panel_layout.h"
 
 namespace raylab {
@@ -117,6 +118,7 @@ UiRequests drawCameraScenePanel(const CameraModel& m) {
   drawWriteFailures(m);
   // Screenshots first: at 1280x720 they sat below the fold, under the scene and camera sections.
   if (ImGui::CollapsingHeader("Screenshots", ImGuiTreeNodeFlags_DefaultOpen)) drawCapture(m, r);
+  if (ImGui::CollapsingHeader("Camera path", ImGuiTreeNodeFlags_DefaultOpen)) drawCameraPathSection(m.path, r);
   if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) drawScene(m, r);
   if (ImGui::CollapsingHeader("Viewpoints", ImGuiTreeNodeFlags_DefaultOpen)) drawViewpoints(m, r);
   if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) drawCamera(m, r);

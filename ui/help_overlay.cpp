@@ -19,6 +19,8 @@ void drawHelpOverlay(bool* open) {
         {"O", "toggle orbit mode around the target"},
         {"R", "reset the camera to the current viewpoint"},
         {"L", "restart learning: a fresh length cache and accumulation, as a re-render of a screenshot has"},
+        {"K", "record a camera path; again: stop and save it beside the screenshots (replay: --camera-path)"},
+        {"P", "play the camera path (--camera-path, else the last recorded) one frame per render frame; stop"},
         {"F12", "save the render as PNG + JSON sidecar"},
         {"Shift+F12", "save the whole window with the panels"},
         {"Tab", "hide or show the panels"},

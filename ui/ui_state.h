@@ -30,6 +30,16 @@ struct ViewOptions {
   static constexpr float kMaxScale = 2.0f;
 };
 
+// The camera path section of the camera/scene panel (issue 37): what plays and what is being recorded.
+struct CameraPathModel {
+  std::string spec;          // what Play plays: --camera-path, or the last path recorded; empty: none yet
+  bool playing = false;
+  uint32_t frame = 0, frames = 0;  // while playing: the path frame being rendered, of how many
+  bool recording = false;
+  uint32_t recordedFrames = 0;     // keyframes recorded so far (one per UI frame)
+  std::string status;        // what the last recording saved or why it failed, why a path did not play
+};
+
 // Shown by the camera/scene panel; the window fills it every frame.
 struct CameraModel {
   std::string scene;
@@ -46,6 +56,7 @@ struct CameraModel {
   std::string lastScreenshot;  // what the last screenshot wrote, or why it failed
   std::vector<std::string> writeFailures;  // every file the window could not write (shots, imgui.ini, frame log)
   std::string deviceName;
+  CameraPathModel path;
 };
 
 struct UiRequests {
@@ -56,6 +67,8 @@ struct UiRequests {
   std::optional<float> speed;
   bool screenshotRender = false;
   bool screenshotWindow = false;
+  bool togglePathPlayback = false;  // Play / Stop (the P key)
+  bool togglePathRecording = false; // Record / Stop and save (the K key)
   bool resetLayout = false;  // the panels go back to their default places (LabUi does it, next frame)
   bool redrawPanels = false; // a panel was moved inside the window after it was drawn: draw them again
 };

@@ -6,6 +6,7 @@
 #include "app/camera_path/camera_path_builtin.h"
 #include "app/cli_options.h"
 #include "renderer/path_tracer.h"
+#include "app/camera_path_file.h"
 
 namespace raylab {
 namespace {
@@ -39,12 +40,12 @@ PathRender pathRenderFor(const std::string& spec, const Scene& scene, std::optio
   return p;
 }
 
-RenderTotals renderAlongPath(PathTracer& tracer, const PathRender& p, bool stats, uint32_t detailEvery) {
+RenderTotals renderAlongPath(PathTracer& tracer, const PathRender& p, bool stats, uint32_t detailEvery, bool digests) {
   RenderTotals t;
   std::fprintf(stderr, "raylab: camera path %s, %u frames\n", p.path.name.c_str(), p.frames);
   for (uint32_t f = 0; f < p.frames; ++f) {
     const PathCamera camera = movePathCamera(tracer, p, f);
-    nlohmann::json* frame = renderCountedFrame(tracer, f, stats, detailEvery, t);
+    nlohmann::json* frame = renderCountedFrame(tracer, f, stats, detailEvery, t, digests);
     if (!frame) continue;
     (*frame)["path_frame"] = f;
     addPathCameraJson(*frame, camera);
@@ -66,11 +67,7 @@ void addPathCameraJson(nlohmann::json& frame, const PathCamera& camera) {
 }
 
 nlohmann::json pathRenderJson(const PathRender& p) {
-  nlohmann::json keyframes = nlohmann::json::array();
-  for (const CameraKeyframe& k : p.path.keyframes)
-    keyframes.push_back({{"frame", k.frame}, {"position", vec3Json(k.position)}, {"target", vec3Json(k.target)},
-                         {"fov", k.fovDegrees}, {"cut", k.cut}});
-  return {{"source", p.path.name}, {"path_frames", p.path.frames}, {"keyframes", keyframes}};
+  return {{"source", p.path.name}, {"path_frames", p.path.frames}, {"keyframes", cameraKeyframesJson(p.path.keyframes)}};
 }
 
 }  // namespace raylab

@@ -44,8 +44,10 @@ PathCamera movePathCamera(PathTracer& tracer, const PathRender& p, uint32_t f);
 void addPathCameraJson(nlohmann::json& frame, const PathCamera& camera);
 
 // Renders the path's frames; with `stats`, one JSON frame each: the frame's stats, "path_frame", "camera"
-// (position, target, fov in degrees) and "cut". Detailed figures every `detailEvery`th frame (0: none).
-RenderTotals renderAlongPath(PathTracer& tracer, const PathRender& p, bool stats, uint32_t detailEvery);
+// (position, target, fov in degrees) and "cut". Detailed figures every `detailEvery`th frame (0: none);
+// `digests`: each frame's radiance digest too (--frame-digests).
+RenderTotals renderAlongPath(PathTracer& tracer, const PathRender& p, bool stats, uint32_t detailEvery,
+                             bool digests = false);
 
 // The path as the --stats file records it: its name, frames rendered and keyframes.
 nlohmann::json pathRenderJson(const PathRender& p);

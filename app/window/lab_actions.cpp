@@ -9,6 +9,7 @@
 #include "app/window/lab_input.h"
 #include "app/window/lab_window.h"
 #include "app/window/presenter.h"
+#include "app/window/script_keys.h"
 #include "app/window/screenshot.h"
 #include "app/window/swapchain.h"
 #include "renderer/path_tracer.h"
@@ -33,6 +34,8 @@ void LabWindow::handleHotkeys() {
       case Hotkey::ScreenshotRender: pendingRenderShot_ = freshScreenshotName(options_.screenshotDir, "render"); break;
       case Hotkey::ScreenshotWindow: pendingWindowShot_ = freshScreenshotName(options_.screenshotDir, "window"); break;
       case Hotkey::RestartLearning: tracer_->restartLearning(); break;
+      case Hotkey::RecordPath: togglePathRecording(); break;
+      case Hotkey::PlayPath: togglePathPlayback(); break;
     }
   }
 }
@@ -48,6 +51,8 @@ void LabWindow::handleRequests(const UiRequests& r) {
   if (r.speed) camera_.setSpeed(*r.speed);
   if (r.screenshotRender) pendingRenderShot_ = freshScreenshotName(options_.screenshotDir, "render");
   if (r.screenshotWindow) pendingWindowShot_ = freshScreenshotName(options_.screenshotDir, "window");
+  if (r.togglePathPlayback) togglePathPlayback();
+  if (r.togglePathRecording) togglePathRecording();
 }
 
 // Loads a scene and a renderer for it, or throws (SceneLoadError, UsageError, VulkanError) keeping the
@@ -161,6 +166,7 @@ void LabWindow::runAction(const ScriptAction& a) {
       std::printf("%s\n", memoryReportLine(a.value, frames_, readProcessMemory()).c_str());
       std::fflush(stdout);
       break;
+    case K::Press: pressScriptKey(*input_, a.value); break;
     case K::Quit: quit_ = true; break;
     case K::Wait: break;  // the runner counts the frames
   }

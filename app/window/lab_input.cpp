@@ -69,6 +69,12 @@ void LabInput::onKey(GLFWwindow* window, int key, int, int action, int mods) {
     case GLFW_KEY_L:  // a fresh length cache and accumulation: what a re-render of a screenshot learns
       if (!typing) in->hotkeys_.push_back(Hotkey::RestartLearning);
       break;
+    case GLFW_KEY_K:  // record a camera path (keyframes), again to stop and save it
+      if (!typing) in->hotkeys_.push_back(Hotkey::RecordPath);
+      break;
+    case GLFW_KEY_P:  // play the camera path, again to stop
+      if (!typing) in->hotkeys_.push_back(Hotkey::PlayPath);
+      break;
     default: break;
   }
 }
@@ -91,6 +97,8 @@ void LabInput::onMouseButton(GLFWwindow* window, int button, int action, int) {
     in->looking_ = false;
   }
 }
+
+void LabInput::press(int key, int mods) { onKey(window_, key, 0, GLFW_PRESS, mods); }
 
 std::vector<Hotkey> LabInput::takeHotkeys() {
   std::vector<Hotkey> out;

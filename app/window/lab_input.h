@@ -11,13 +11,16 @@ struct GLFWwindow;
 
 namespace raylab {
 
-enum class Hotkey { Help, ScreenshotRender, ScreenshotWindow, TogglePanels, ToggleOrbit, CloseHelp, ResetView, RestartLearning };
+enum class Hotkey { Help, ScreenshotRender, ScreenshotWindow, TogglePanels, ToggleOrbit, CloseHelp, ResetView, RestartLearning,
+                    RecordPath, PlayPath };
 
 class LabInput {
  public:
   // Must be constructed before the ImGui GLFW backend, which chains the callbacks installed here.
   explicit LabInput(GLFWwindow* window);
   std::vector<Hotkey> takeHotkeys();
+  // A key press as the keyboard would deliver it (GLFW key and modifiers): a script's `press`.
+  void press(int key, int mods);
   // Movement since the last call; `seconds` is the frame time movement scales with.
   CameraInput cameraInput(float seconds);
   // Whether any input arrived (keys, characters, mouse buttons, moves, scrolls, focus) since the last call:

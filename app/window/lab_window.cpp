@@ -48,6 +48,14 @@ LabWindow::LabWindow(const WindowOptions& options)
   chooseStartSettings();
   loadStartScene();
   if (options_.sidecar && options_.sidecar->camera) scene_.view = *options_.sidecar->camera;
+  if (!options_.cameraPath.empty()) {
+    // A bad path is a usage error (exit 2) before any window opens. The tracer starts at the path's first
+    // camera, as render's replay does (the key grid, when clamped to the camera, starts there too).
+    pathPlayer_.play(pathRenderFor(options_.cameraPath, scene_.scene, std::nullopt));
+    pathScene_ = settings_.scene;
+    cameraModel_.path.spec = options_.cameraPath;
+    scene_.view = cameraAt(pathPlayer_.path().path, 0, pathPlayer_.path().up).view;
+  }
   if (!options_.script.empty()) script_.emplace(loadScript(options_.script));
   if (!options_.frameLog.empty()) frameLog_ = std::make_unique<FrameLog>(options_.frameLog);
   openWindow();
@@ -156,6 +164,7 @@ int LabWindow::run() {
   auto oldInt = std::signal(SIGINT, requestStop), oldTerm = std::signal(SIGTERM, requestStop);
   while (!stopRequested && frame()) {
   }
+  finishRecording();  // a recording still running when the window closes is saved, not lost
   std::signal(SIGINT, oldInt);
   std::signal(SIGTERM, oldTerm);
   loopMsTotal_ = msSince(started);
@@ -225,6 +234,7 @@ bool LabWindow::frame() {
   noteSlowStep();
   // Statistics, screenshots and the script's frame count follow whole render frames only.
   ui_.onFrame(tracer_->settings(), *turn.frameDone);
+  onPathFrameDone();
   learned_.onFrame(tracer_.get(), tracer_->accumulatedFrames(), tracer_->keyStage().cacheEpoch());
   ++frames_;
   wallMsTotal_ += turn.frameDone->wallMs;
@@ -337,7 +347,11 @@ void LabWindow::noteSlowStep() {
   view_.slowStageNote = text;
 }
 
-void LabWindow::updateCamera(float seconds) { camera_.update(input_->cameraInput(seconds)); }
+void LabWindow::updateCamera(float seconds) {
+  const CameraInput in = input_->cameraInput(seconds);  // taken while a path plays too: no backlog after it
+  if (!pathPlayer_.playing()) camera_.update(in);
+  stepCameraPath();
+}
 
 void LabWindow::fillCameraModel() {
   cameraModel_.scene = settings_.scene;
@@ -349,6 +363,7 @@ void LabWindow::fillCameraModel() {
   cameraModel_.cameraShortText = cameraToShortText(camera_.viewpoint());
   cameraModel_.orbit = camera_.orbit();
   cameraModel_.speed = camera_.speed();
+  fillCameraPathModel();
 }
 
 void LabWindow::resetCamera(const Viewpoint& view) {

@@ -8,12 +8,14 @@
 #include <optional>
 #include <string>
 
+#include "app/camera_path_recorder.h"
 #include "app/fly_camera.h"
 #include "app/learned_history.h"
 #include "app/scene_setup.h"
 #include "app/ui_script.h"
 #include "app/window/glfw_window.h"
 #include "app/window/imgui_layer.h"
+#include "app/window/path_player.h"
 #include "app/window/window_options.h"
 #include "renderer/settings/settings.h"
 #include "ui/lab_ui.h"
@@ -74,6 +76,15 @@ class LabWindow {
   void reportWriteFailure(const std::string& message);
   void resetCamera(const Viewpoint& view);
 
+  // lab_camera_path.cpp: playing and recording camera paths (issue 37)
+  void stepCameraPath();
+  void onPathFrameDone();
+  void togglePathPlayback();
+  void playCameraPath(const std::string& spec);
+  void togglePathRecording();
+  void finishRecording();
+  void fillCameraPathModel();
+
   WindowOptions options_;
   // Declared before imgui_, so they outlive it: ImGui writes imgui.ini through ini_ while being destroyed.
   Settings settings_;
@@ -109,6 +120,10 @@ class LabWindow {
   double presentMs_ = 0.0;  // what presenting the window took, smoothed (LiveRender leaves it room)
   uint64_t frames_ = 0;
   LearnedHistory learned_;  // whether a screenshot's length cache learned over its frames only
+  PathPlayer pathPlayer_;
+  std::string pathScene_;       // the scene the playing path was resolved for (a new scene stops it)
+  CameraPathRecorder recorder_;
+  SidecarContent recording_;    // the recording's sidecar as of its last keyframe (settings, stats, device)
   uint64_t uiFrames_ = 0;
   double wallMsTotal_ = 0.0, loopMsTotal_ = 0.0;
 };

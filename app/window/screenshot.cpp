@@ -39,7 +39,10 @@ std::string freshScreenshotName(const std::string& dir, const std::string& kind)
   std::time_t now = std::time(nullptr);
   std::strftime(stamp, sizeof(stamp), "%Y%m%d-%H%M%S", std::localtime(&now));
   std::string base = kind + "-" + stamp, name = base;
-  for (int i = 2; std::filesystem::exists(std::filesystem::path(dir) / (name + ".png")); ++i)
+  // NAME.json too: a recorded camera path (recorded_path_file.h) has a sidecar and no PNG.
+  for (int i = 2; std::filesystem::exists(std::filesystem::path(dir) / (name + ".png")) ||
+                  std::filesystem::exists(std::filesystem::path(dir) / (name + ".json"));
+       ++i)
     name = base + "-" + std::to_string(i);
   return name;
 }

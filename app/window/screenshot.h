@@ -13,7 +13,8 @@ namespace raylab {
 std::string writeScreenshot(const std::string& dir, const std::string& name, const std::vector<uint32_t>& rgba,
                             SidecarContent content);
 
-// "render-20261123-193301" (or "-2", "-3" when that name is taken in DIR): for F12 and Shift+F12.
+// "render-20261123-193301" (or "-2", "-3" when that name is taken in DIR): for F12 and Shift+F12, and
+// recorded camera paths ("path-...").
 std::string freshScreenshotName(const std::string& dir, const std::string& kind);
 
 }  // namespace raylab

@@ -22,6 +22,7 @@ struct WindowOptions {
   std::optional<float> scale;          // --scale: render size / window size
   std::string frameLog;                // --frame-log FILE: one JSON line per UI frame (frame_log.h)
   double renderBudgetMs = 40.0;        // --render-budget-ms: render work per UI frame (live_render.h)
+  std::string cameraPath;              // --camera-path FILE|builtin:NAME: played from the start (path_player.h)
 };
 
 // Opens the window and runs until it is closed or the script quits. Returns an exit code; throws
