@@ -1,6 +1,6 @@
 // Closest-hit and any-hit traversal of the compressed 8-wide BVH (shared_types.h: BvhWideNode), after Ylitie,
 // Karras and Laine (HPG 2017). Included by bvh_traverse.glsl, whose HitRecord, box and triangle tests it uses;
-// its C++ twin is renderer/bvh_traverse_cpu.cpp (keep the two in step).
+// its C++ twin is renderer/bvh/bvh_traverse_cpu.cpp (keep the two in step).
 //
 // The stack holds node groups, not nodes (CWBVH's): (first child node, the children's interior-slot mask << 8 |
 // a hit mask over visit positions). Visit position i of slot s is s ^ octant(ray), so the lowest set bit is the

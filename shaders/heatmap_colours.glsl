@@ -1,5 +1,5 @@
 // Heatmap values to colours; each function is the twin of the one of the same name in
-// renderer/heatmap_colours.cpp (tests/gpu/test_heatmap_colours.cpp compares the two on the GPU's output).
+// renderer/heatmap/heatmap_colours.cpp (tests/gpu/heatmap/test_heatmap_colours.cpp compares the two on the GPU's output).
 // Needs heatmap_types.h and rng.glsl.
 #ifndef RAYLAB_HEATMAP_COLOURS_GLSL
 #define RAYLAB_HEATMAP_COLOURS_GLSL

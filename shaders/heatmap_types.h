@@ -1,4 +1,4 @@
-// Heatmap pass push constants and named slots, shared by C++ and GLSL (see renderer/heatmap_pass.h).
+// Heatmap pass push constants and named slots, shared by C++ and GLSL (see renderer/heatmap/heatmap_pass.h).
 #ifndef RAYLAB_HEATMAP_TYPES_H
 #define RAYLAB_HEATMAP_TYPES_H
 
@@ -9,7 +9,7 @@
 namespace raylab::gpu {
 #endif
 
-// Values of HeatmapView (renderer/settings.h), in the same order.
+// Values of HeatmapView (renderer/settings/settings.h), in the same order.
 #define RL_HEAT_SORT_KEY 1u
 #define RL_HEAT_CELL_HIT 2u
 #define RL_HEAT_STEPS 3u

@@ -1,7 +1,7 @@
 #version 460
 // The BVH traversal on its own, for tests: for each given ray the closest hit (traceClosest) and the
 // shadow-ray answer (occluded) of the same functions the trace stage, the megakernel and next-event
-// estimation call, so the test checks exactly what renders use (tests/gpu/test_embree_hits.cpp).
+// estimation call, so the test checks exactly what renders use (tests/gpu/bvh/test_embree_hits.cpp).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require

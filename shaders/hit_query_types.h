@@ -1,4 +1,4 @@
-// hit_query.comp's push constants, shared with its C++ caller (tests/gpu/test_embree_hits.cpp). Data only,
+// hit_query.comp's push constants, shared with its C++ caller (tests/gpu/bvh/test_embree_hits.cpp). Data only,
 // scalar block layout; tests/cpu/test_shared_layout.cpp asserts the host size.
 #ifndef RAYLAB_HIT_QUERY_TYPES_H
 #define RAYLAB_HIT_QUERY_TYPES_H

@@ -81,7 +81,7 @@ struct BvhNode {
 // The binary BVH as the GPU walks it: each interior node stored as its two children's boxes, the layout of Aila
 // and Laine (HPG 2009), so one 64-byte fetch of four aligned 16-byte words tests both children, and a leaf child
 // is its triangle range in the parent's slot (no fetch of its own). Built from the BvhNode tree on the host
-// (renderer/bvh_pairs.h); the same leaves and BVH-order triangles, so every consumer of the order is unchanged.
+// (renderer/bvh/bvh_pairs.h); the same leaves and BVH-order triangles, so every consumer of the order is unchanged.
 struct BvhPairNode {
   vec4 xBounds;   // child 0 lo.x, hi.x, child 1 lo.x, hi.x
   vec4 yBounds;
@@ -99,7 +99,7 @@ struct BvhPairNode {
 #define RL_LEAF_ENTRY_LIMIT (1u << (31u - RL_LEAF_COUNT_BITS))
 #define RL_TRAVERSAL_DONE 0x7FFFFFFFu  // the traversal's end: neither a pair node (fewer) nor a leaf word
 
-// Compressed 8-wide BVH node (renderer/bvh_wide.h collapses the binary tree into these; traversal in
+// Compressed 8-wide BVH node (renderer/bvh/bvh_wide.h collapses the binary tree into these; traversal in
 // shaders/bvh_traverse_wide.glsl), after Ylitie, Karras and Laine (HPG 2017): up to 8 children whose boxes are
 // quantized to 8 bits per plane against the node's `origin` and a power-of-two scale per axis, so a child's box
 // is origin + q * 2^e (rounded outwards when built: it always contains the child's exact box). A child slot is
@@ -131,7 +131,7 @@ struct BvhWideNode {
 
 // A leaf entry of a binary tree: its triangle as the traversal tests it (v0 and two edges, GpuTriangle's floats)
 // and the triangle's BVH-order index, which is what a hit reports. With spatial splits a triangle has an entry
-// in every leaf its parts fell into (renderer/bvh_leaf_records.h).
+// in every leaf its parts fell into (renderer/bvh/bvh_leaf_records.h).
 struct GpuLeafTriangle {
   vec3 v0;
   uint triangle;  // BVH-order index (GpuTriangle, the emitters, the hits)

@@ -6,7 +6,7 @@
 #include "app/camera_path/camera_path_builtin.h"
 #include "app/cli_options.h"
 #include "renderer/path_tracer.h"
-#include "app/camera_path_file.h"
+#include "app/camera_path/camera_path_file.h"
 
 namespace raylab {
 namespace {

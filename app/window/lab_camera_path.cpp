@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "app/camera_path_builtin.h"
+#include "app/camera_path/camera_path_builtin.h"
 #include "app/cli_options.h"
 #include "app/window/lab_window.h"
 #include "app/window/recorded_path_file.h"

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "app/camera_path_recorder.h"
+#include "app/camera_path/camera_path_recorder.h"
 #include "app/fly_camera.h"
 #include "app/learned_history.h"
 #include "app/scene_setup.h"

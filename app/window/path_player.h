@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "app/render_camera_path.h"
+#include "app/camera_path/render_camera_path.h"
 
 namespace raylab {
 

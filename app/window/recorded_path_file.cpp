@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "app/camera_path_file.h"
+#include "app/camera_path/camera_path_file.h"
 #include "renderer/checked_write.h"
 
 namespace raylab {

@@ -1,5 +1,5 @@
 // Saving a camera path recorded in the window: NAME.path.json, the path in the form `--camera-path` reads
-// (app/camera_path_file.h), and NAME.json beside it, a sidecar as screenshots have (app/sidecar.h: the
+// (app/camera_path/camera_path_file.h), and NAME.json beside it, a sidecar as screenshots have (app/sidecar.h: the
 // settings, scene, device, revision and the last frame's statistics, the first keyframe as its camera),
 // with "camera_path" naming the path file and "replay" the command that renders it:
 //   raylab render --settings NAME.json --camera-path NAME.path.json
@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "app/camera_path.h"
+#include "app/camera_path/camera_path.h"
 #include "app/sidecar.h"
 
 namespace raylab {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "app/camera_path.h"
+#include "app/camera_path/camera_path.h"
 #include "scenes/scene.h"
 
 namespace raylab {

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/camera_path.h"
+#include "app/camera_path/camera_path.h"
 
 namespace raylab {
 

@@ -1,4 +1,4 @@
-#include "app/camera_path_recorder.h"
+#include "app/camera_path/camera_path_recorder.h"
 
 #include <glm/trigonometric.hpp>
 

@@ -1,4 +1,4 @@
-#include "app/camera_path_file.h"
+#include "app/camera_path/camera_path_file.h"
 
 namespace raylab {
 namespace {

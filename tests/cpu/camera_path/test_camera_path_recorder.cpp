@@ -1,4 +1,4 @@
-// Recording a camera path in the window (app/camera_path_recorder.h) and saving it (app/camera_path_file.h):
+// Recording a camera path in the window (app/camera_path/camera_path_recorder.h) and saving it (app/camera_path/camera_path_file.h):
 // what was recorded comes back from the saved text through the parser `--camera-path` uses, every keyframe
 // bit for bit, and replays the recorded cameras exactly at their frames; a recording the parser would refuse
 // is refused when it stops, not when it is replayed. And the script's `press KEY`, which the window test
@@ -7,8 +7,8 @@
 
 #include <cstring>
 
-#include "app/camera_path_file.h"
-#include "app/camera_path_recorder.h"
+#include "app/camera_path/camera_path_file.h"
+#include "app/camera_path/camera_path_recorder.h"
 #include "app/ui_script.h"
 
 namespace raylab {
