@@ -38,6 +38,13 @@ uint32_t checkCasePath(const std::string& scene, const std::string& pathSpec) {
   }
 }
 
+std::vector<std::string> caseBuiltinPaths(const std::string& scene) {
+  std::vector<std::string> specs;
+  for (const std::string& name : builtinCameraPathNames(loadForChecks(scene, scene)))
+    specs.push_back(kBuiltinPathPrefix + name);
+  return specs;
+}
+
 void checkCaseView(const std::string& scene, const std::string& view) {
   if (view.empty()) return;
   const Scene s = loadForChecks(scene, scene + "@" + view);

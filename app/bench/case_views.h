@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace raylab {
 
@@ -15,5 +16,9 @@ void checkCaseView(const std::string& scene, const std::string& view);
 // Throws UsageError ("--camera-path: ...") when `pathSpec` names no usable camera path for `scene` (an unknown
 // built-in, a file that does not parse), loading the scene as checkCaseView does. Returns the path's frames.
 uint32_t checkCasePath(const std::string& scene, const std::string& pathSpec);
+
+// The built-in camera paths of `scene` as --camera-path values ("builtin:orbit", ...), loading it as
+// checkCaseView does; empty for a scene without one.
+std::vector<std::string> caseBuiltinPaths(const std::string& scene);
 
 }  // namespace raylab

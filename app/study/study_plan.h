@@ -5,9 +5,13 @@
 // study cell o gives its bench `--shard ((i - o) mod K)/K`: the K study shards are then K distinct bench
 // shards of every size, disjoint and together the whole size, and `raylab study --merge` merges each size
 // with `raylab bench --merge`.
+// After the sizes come the motion sweeps (issue 37): one `raylab bench --camera-path` per built-in path of the
+// scene (or the path given with --camera-path), at one size, so the report can say what reordering does under
+// a moving camera.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -19,6 +23,7 @@ namespace raylab {
 struct StudyPreset {
   std::vector<std::string> sizes;
   std::string bounces, strategies, timedFrames, warmup, rounds;
+  std::string pathFrames;  // the motion sweeps' --frames: a camera path's first N frames (empty: all of it)
 };
 StudyPreset studyPreset(bool quick, bool cpuDevice);
 // A preset in words: "sizes 512x256, 2048x1024; 4 bounces; fixed, two-point; 6 timed frames after 3 warm-up;
@@ -38,6 +43,7 @@ struct StudyOptions {
   std::string device;
   std::vector<std::string> passOn;  // --validate flags, given to every bench run
   BenchShard shard;                 // --shard i/K (0/1: the whole study)
+  std::string cameraPath;           // --camera-path FILE|builtin:NAME: the one motion sweep (empty: every built-in)
 };
 
 struct StudySize {
@@ -52,5 +58,27 @@ struct StudySize {
 
 // Throws UsageError for what bench would refuse (a bad size, strategy or scene name).
 std::vector<StudySize> studyPlan(const StudyOptions& options, const StudyPreset& preset);
+
+// One motion sweep: the study's strategies (always and auto, the unsorted wavefront being "never", and the
+// megakernel) replaying one camera path with `raylab bench --camera-path`, whose motion.json the report reads.
+struct StudyMotion {
+  std::string path;                    // builtin:NAME or the given file
+  std::string folder;                  // OUT/motion-NAME
+  std::vector<std::string> benchArgs;
+};
+
+// The paths the motion sweeps replay: --camera-path's, else every built-in path of the target's scene
+// (none for a scene without one). Throws UsageError for a path bench would refuse (a missing file, an
+// unknown built-in), loading the scene as bench's checks do.
+std::vector<std::string> studyMotionPaths(const StudyOptions& options);
+// The motion sweeps of studyMotionPaths, at the largest of the study's sizes up to kMotionMaxPaths paths per
+// frame (the size where a path's frames stay cheap enough to replay whole), the study's first bounce count,
+// the preset's path-frame cap. None with --shard: `raylab bench --merge` does not merge path frames yet, so a
+// sharded study could not rebuild motion.json (kShardedMotionNote says so in the report).
+inline constexpr uint64_t kMotionMaxPaths = 2048ull * 1024ull;
+inline constexpr const char* kShardedMotionNote =
+    "a sharded study measures no camera path: `raylab bench --merge` does not merge path frames yet";
+std::vector<StudyMotion> studyMotionPlan(const StudyOptions& options, const StudyPreset& preset,
+                                         const std::vector<std::string>& paths);
 
 }  // namespace raylab

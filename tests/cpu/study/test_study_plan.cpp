@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/cli_options.h"
 #include "app/study/study_plan.h"
 
 namespace raylab {
@@ -119,6 +120,66 @@ TEST(StudyPlan, RoundsReachEveryBench) {
   for (const StudySize& s : studyPlan(o, studyPreset(false, true))) EXPECT_EQ(roundsOf(s.benchArgs), "3");
   o.rounds = "5";
   for (const StudySize& s : studyPlan(o, studyPreset(false, true))) EXPECT_EQ(roundsOf(s.benchArgs), "5");
+}
+
+}  // namespace
+}  // namespace raylab
+
+namespace raylab {
+namespace {
+
+std::string valueOf(const std::vector<std::string>& args, const std::string& flag) {
+  for (size_t i = 0; i + 1 < args.size(); ++i)
+    if (args[i] == flag) return args[i + 1];
+  return {};
+}
+
+// The motion section's sweeps (issue 37): one bench along each built-in path of the scene (the view left out:
+// a path sets the camera), at the largest size up to kMotionMaxPaths, the first bounce count, the preset's
+// path-frame cap; a given --camera-path replaces them; a sharded study has none.
+TEST(StudyPlan, MotionSweepsReplayEveryBuiltinPath) {
+  StudyOptions o;
+  o.target = "temple@hall";
+  o.outDir = "out";
+  o.sizes = {"32x16", "4096x2048", "2048x1024", "64x32"};
+  o.bounces = "3,5";
+  o.strategies = "two-point";
+  const StudyPreset quick = studyPreset(/*quick=*/true, /*cpuDevice=*/true);
+  const std::vector<std::string> paths = studyMotionPaths(o);
+  EXPECT_EQ(paths, (std::vector<std::string>{"builtin:orbit", "builtin:walk", "builtin:cut"}));
+  const std::vector<StudyMotion> plan = studyMotionPlan(o, quick, paths);
+  ASSERT_EQ(plan.size(), 3u);
+  for (size_t i = 0; i < plan.size(); ++i) {
+    const std::vector<std::string>& a = plan[i].benchArgs;
+    EXPECT_EQ(valueOf(a, "--camera-path"), paths[i]);
+    EXPECT_EQ(valueOf(a, "--cases"), "temple");
+    EXPECT_EQ(valueOf(a, "--size"), "2048x1024");
+    EXPECT_EQ(valueOf(a, "--bounces"), "3");
+    EXPECT_EQ(valueOf(a, "--strategies"), "two-point");
+    EXPECT_EQ(valueOf(a, "--sort-policies"), "always,auto");
+    EXPECT_EQ(valueOf(a, "--frames"), quick.pathFrames);
+    EXPECT_EQ(valueOf(a, "--out-dir"), plan[i].folder);
+  }
+  EXPECT_EQ(plan[2].folder, "out/motion-cut");
+  EXPECT_TRUE(valueOf(studyMotionPlan(o, studyPreset(false, false), paths)[0].benchArgs, "--frames").empty())
+      << "the full GPU study replays whole paths";
+  // Every size above kMotionMaxPaths: the smallest of them.
+  o.sizes = {"4096x2048", "2560x2048"};
+  EXPECT_EQ(valueOf(studyMotionPlan(o, quick, paths)[0].benchArgs, "--size"), "2560x2048");
+
+  o.cameraPath = "builtin:walk";
+  EXPECT_EQ(studyMotionPaths(o), (std::vector<std::string>{"builtin:walk"}));
+  o.shard = BenchShard{1, 2};
+  EXPECT_TRUE(studyMotionPlan(o, quick, studyMotionPaths(o)).empty()) << "bench --merge keeps no path frames";
+}
+
+TEST(StudyPlan, AMissingPathFileIsAUsageError) {
+  StudyOptions o;
+  o.target = "cornell";
+  o.cameraPath = "/nonexistent/walk.json";
+  EXPECT_THROW(studyMotionPaths(o), UsageError);
+  o.cameraPath = "builtin:walk";  // the temple's, not cornell's
+  EXPECT_THROW(studyMotionPaths(o), UsageError);
 }
 
 }  // namespace
