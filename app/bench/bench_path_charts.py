@@ -49,24 +49,26 @@ def motion_chart(plt, cells, key, ylabel, title, path):
 
 
 def path_charts(plt, folder, device=""):
-    """Draws motion_frame_ms_SCENE-PATH.png and motion_prediction_error_SCENE-PATH.png; returns their count."""
+    """Draws motion_frame_ms_SCENE-PATH.png and motion_prediction_error_SCENE-PATH.png; returns
+    {(scene, camera_path): [their paths]} (the study's report links them)."""
     motion = load_motion(folder)
     if not motion:
-        return 0
+        return {}
     groups = {}
     for c in motion["cells"]:
         groups.setdefault((c["scene"], c["camera_path"]), []).append(c)
-    written = 0
+    written = {}
     for (scene, camera_path), cells in groups.items():
         name = f"{safe(scene)}-{safe(camera_path)}"
         about = f"{scene} along {camera_path}, {cells[0]['frames']} frames{', ' + device if device else ''}"
         rounds = max(c["rounds"] for c in cells)
+        charts = [os.path.join(folder, f"motion_{what}_{name}.png") for what in ("frame_ms", "prediction_error")]
         motion_chart(plt, cells, "frame_ms", "GPU work time per frame (ms)",
                      f"Frame time along the path\n{about} (median of {rounds} round{'s' if rounds != 1 else ''})",
-                     os.path.join(folder, f"motion_frame_ms_{name}.png"))
+                     charts[0])
         motion_chart(plt, cells, "prediction_error", "prediction error / scene diagonal\n(mean over bounces >= 1)",
                      f"Prediction error along the path\n{about} (the detailed replay)",
-                     os.path.join(folder, f"motion_prediction_error_{name}.png"))
+                     charts[1])
         print(f"motion charts for {name} in {folder}")
-        written += 2
+        written[(scene, camera_path)] = charts
     return written

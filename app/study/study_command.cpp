@@ -31,7 +31,7 @@ std::string studyHelp() {
   return
     "usage: raylab study SCENE[@VIEW] [--quick] [--out-dir DIR] [--sizes WxH,...] [--bounces N,...]\n"
     "                    [--strategies a,b,...] [--rounds N] [--device NAME|N] [--validate[=sync|gpu-av]]\n"
-    "                    [--shard i/K]\n"
+    "                    [--shard i/K] [--camera-path FILE|builtin:NAME | --no-motion]\n"
     "       raylab study temple --thesis [--out-dir DIR] [--rounds N] [--device NAME|N]\n"
     "       raylab study --merge DIR... [--out-dir OUT]\n"
     "  --out-dir DIR       where the study goes (default study-out, in the current folder)\n"
@@ -55,6 +55,15 @@ std::string studyHelp() {
     "                      in plan order) with g mod K = i, 0 <= i < K: one of K disjoint parts, for K GPUs\n"
     "                      or hosts (every shard with the same flags but --out-dir and --device); writes the\n"
     "                      results but no report\n"
+    "  --camera-path FILE|builtin:NAME  the camera path of the motion section (default: every built-in path of\n"
+    "                      the scene, `raylab bench --camera-path builtin:list`): after the sizes, one\n"
+    "                      `raylab bench --camera-path` per path at the largest size of at most\n"
+    "                      " + std::to_string(kMotionMaxPaths) + " paths per frame and the first bounce count, the strategies under\n"
+    "                      always and auto against the unsorted\n"
+    "                      wavefront (never) and the megakernel, in DIR/motion-NAME/; the report's \"Under a\n"
+    "                      moving camera\" tables each from its motion.json. The presets cut a path to its\n"
+    "                      first frames (above); a sharded study measures no path\n"
+    "  --no-motion         no camera path: the still views only\n"
     "  --thesis            the source study's Tables 4.1-4.2 and section 4.3 re-measured: temple alley, hall and\n"
     "                      openings at 2048x1024 (256x128 on a CPU device; one --sizes value replaces it),\n"
     "                      4 bounces; unsorted, fixed, origin-direction, average, and gaussian reset at 20 on\n"
@@ -83,15 +92,20 @@ StudyOptions parseStudyOptions(const std::vector<std::string>& args) {
     else if (a == "--rounds") o.rounds = std::to_string(parseUint(a, value(), 1, kMaxRounds));
     else if (a == "--device") o.device = value();
     else if (a == "--shard") o.shard = parseShard(value());
+    else if (a == "--camera-path") o.cameraPath = value();
+    else if (a == "--no-motion") o.noMotion = true;
     else if (a == "--validate" || a.rfind("--validate=", 0) == 0) o.passOn.push_back(a);
     else if (a.rfind("--", 0) == 0)
       throw UsageError(unknownOptionMessage(a, {"--quick", "--thesis", "--out-dir", "--sizes", "--bounces", "--strategies",
-                                                "--device", "--shard", "--validate", "--merge"}));
+                                                "--device", "--shard", "--validate", "--merge",
+                                                "--camera-path", "--no-motion"}));
     else if (o.target.empty()) o.target = a;
     else throw UsageError("one scene per study, got '" + o.target + "' and '" + a + "'");
   }
   if (o.target.empty()) throw UsageError("which scene? raylab study SCENE[@VIEW]");
   if (o.outDir.empty()) throw UsageError("--out-dir needs a folder");
+  if (o.noMotion && !o.cameraPath.empty()) throw UsageError("--camera-path and --no-motion: give one of them");
+  if (o.thesis && !o.cameraPath.empty()) throw UsageError("--thesis re-measures still views: --camera-path does not apply");
   for (const std::string& size : o.sizes) parseCommonOptions({"--size", size});  // --size's rules, said at once
   if (const size_t at = o.target.rfind('@'); at != std::string::npos)  // a bad view is exit 2 before any sweep
     checkCaseView(o.target.substr(0, at), o.target.substr(at + 1));
@@ -140,10 +154,14 @@ StudyRecord readStudyRecord(const std::string& dir) {
 
 // The report from every size's folder; a missing Python or matplotlib leaves the results and says how to
 // make the report elsewhere.
-int makeReport(const std::string& outDir, const std::vector<std::string>& folders, const std::string& note) {
+// `motion`: the motion sweeps' folders; `motionNote`: why there are none (the report says it in their place).
+int makeReport(const std::string& outDir, const std::vector<std::string>& folders, const std::string& note,
+               const std::vector<std::string>& motion, const std::string& motionNote) {
   const std::string out = outDir + "/report.html";
   std::vector<std::string> args;
   if (!note.empty()) args = {"--note", note};
+  for (const std::string& m : motion) args.insert(args.end(), {"--motion", m});
+  if (!motionNote.empty()) args.insert(args.end(), {"--motion-note", motionNote});
   args.push_back(out);
   args.insert(args.end(), folders.begin(), folders.end());
   const ChartsOutcome report = runLabScript("study/study_report.py", args);
@@ -232,7 +250,7 @@ int runStudyMerge(const std::vector<std::string>& args) {
   }
   std::printf("study: merged %zu shards of %zu sizes into %s\n", dirs.size(), study.sizes.size(), outDir.c_str());
   std::fflush(stdout);
-  return makeReport(outDir, folders, study.note);
+  return makeReport(outDir, folders, study.note, {}, kShardedMotionNote);
 }
 
 }  // namespace
@@ -245,6 +263,8 @@ int runStudyCommand(const std::vector<std::string>& args) {
   if (std::find(args.begin(), args.end(), "--merge") != args.end()) return runStudyMerge(args);
   StudyOptions o;
   std::vector<StudySize> plan;
+  std::vector<StudyMotion> motion;
+  std::string motionNote;  // why the report has no motion sweeps, where it has none
   bool cpu = false;
   std::string note;
   try {
@@ -253,6 +273,11 @@ int runStudyCommand(const std::vector<std::string>& args) {
     if (o.thesis) return runThesisStudy(o, cpu);
     const StudyPreset preset = studyPreset(o.quick, cpu);
     plan = studyPlan(o, preset);
+    const std::vector<std::string> paths = o.noMotion ? std::vector<std::string>{} : studyMotionPaths(o);
+    motion = studyMotionPlan(o, preset, paths);
+    if (o.noMotion) motionNote = "left out (--no-motion)";
+    else if (!o.shard.whole()) motionNote = kShardedMotionNote;
+    else if (paths.empty()) motionNote = o.target + " has no built-in camera path: give one with --camera-path FILE";
     if (cpu && o.sizes.empty())
       note = "Measured on a CPU device: the sizes are ones it renders in minutes (up to " + plan.back().size +
              "), far below where sorting pays on a GPU.";
@@ -299,6 +324,19 @@ int runStudyCommand(const std::vector<std::string>& args) {
     folders.push_back(plan[i].folder);
     doneWork += pathsOf(plan[i].size) * plan[i].shardCells();
   }
+  if (!motionNote.empty()) std::fprintf(stderr, "raylab study: %s\n", motionNote.c_str());
+  std::vector<std::string> motionFolders;
+  for (size_t i = 0; i < motion.size(); ++i) {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "raylab study: camera path %s (%zu of %zu), %.0f s so far\n", motion[i].path.c_str(), i + 1,
+                 motion.size(), elapsed);
+    if (const int rc = runBenchCommand(motion[i].benchArgs); rc != kExitOk) {
+      std::fprintf(stderr, "raylab study: the bench along %s exited %d; the sizes and paths done so far are in %s\n",
+                   motion[i].path.c_str(), rc, o.outDir.c_str());
+      return rc;
+    }
+    motionFolders.push_back(motion[i].folder);
+  }
   if (!o.shard.whole()) {
     std::printf("study: shard %s done, results in %s; no report from one shard: once all %u shards are done,\n"
                 "  raylab study --merge DIR... --out-dir OUT\n"
@@ -312,7 +350,8 @@ int runStudyCommand(const std::vector<std::string>& args) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   char took[96];
   std::snprintf(took, sizeof(took), " Measured in %.0f s.", seconds);
-  return makeReport(o.outDir, folders, (note.empty() ? "" : note + " ") + "Command: " + command + "." + took);
+  return makeReport(o.outDir, folders, (note.empty() ? "" : note + " ") + "Command: " + command + "." + took,
+                    motionFolders, motionNote);
 }
 
 }  // namespace raylab

@@ -112,7 +112,7 @@ std::vector<std::string> studyMotionPaths(const StudyOptions& o) {
 }
 
 std::vector<StudyMotion> studyMotionPlan(const StudyOptions& o, const StudyPreset& p, const std::vector<std::string>& paths) {
-  if (!o.shard.whole()) return {};
+  if (o.noMotion || !o.shard.whole()) return {};
   const std::vector<std::string>& sizes = o.sizes.empty() ? p.sizes : o.sizes;
   std::string fit, smallest;  // the largest size up to kMotionMaxPaths; where every size is larger, the smallest
   for (const std::string& s : sizes) {

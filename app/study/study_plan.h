@@ -44,6 +44,7 @@ struct StudyOptions {
   std::vector<std::string> passOn;  // --validate flags, given to every bench run
   BenchShard shard;                 // --shard i/K (0/1: the whole study)
   std::string cameraPath;           // --camera-path FILE|builtin:NAME: the one motion sweep (empty: every built-in)
+  bool noMotion = false;            // --no-motion: no motion sweeps (a study of still views only)
 };
 
 struct StudySize {
@@ -73,7 +74,7 @@ struct StudyMotion {
 std::vector<std::string> studyMotionPaths(const StudyOptions& options);
 // The motion sweeps of studyMotionPaths, at the largest of the study's sizes up to kMotionMaxPaths paths per
 // frame (the size where a path's frames stay cheap enough to replay whole), the study's first bounce count,
-// the preset's path-frame cap. None with --shard: `raylab bench --merge` does not merge path frames yet, so a
+// the preset's path-frame cap. None with --no-motion, and none with --shard: `raylab bench --merge` does not merge path frames yet, so a
 // sharded study could not rebuild motion.json (kShardedMotionNote says so in the report).
 inline constexpr uint64_t kMotionMaxPaths = 2048ull * 1024ull;
 inline constexpr const char* kShardedMotionNote =

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Where sorting pays on one scene, as one self-contained HTML report (issue 22).
 
-usage: /usr/bin/python3 app/study/study_report.py [--note TEXT] OUT.html BENCH_DIR [BENCH_DIR...]
+usage: /usr/bin/python3 app/study/study_report.py [--note TEXT] [--motion DIR]... [--motion-note TEXT]
+                                                  OUT.html BENCH_DIR [BENCH_DIR...]
 Reads the cells of one or more `raylab bench` folders (results.jsonl, sweep.json): a study over image sizes,
 samples per frame and bounce counts may be one sweep or several (one per size, or shards), and writes OUT.html
 with every chart embedded (PNG as data: URLs), so it opens from disk with no network. It opens with the verdict
@@ -13,6 +14,8 @@ in plain words, then:
   - coherence: virtual warp efficiency and traversal steps of bounces >= 1, unsorted and sorted;
   - the image check: every sorted cell's relative MSE against its unsorted baseline's (the invariant makes
     them equal), and the error against the reference;
+  - under a moving camera: one table per `raylab bench --camera-path` folder given with --motion
+    (app/study/study_motion.py), or --motion-note's reason for none;
   - the device, driver, revision and the exact commands.
 "Sorted" means a wavefront cell with a key strategy that sorted (policy always, or auto where it chose to); "unsorted" the
 wavefront without a strategy (split or fused, compacted or not: the best of those measured). Figures are
@@ -46,6 +49,7 @@ _app = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path[0:0] = [_app, os.path.join(_app, "bench")]  # app/checked_write.py, app/bench/bench_cells.py
 from checked_write import write_with  # noqa: E402  (app/checked_write.py)
 from bench_cells import NotABenchFolder, distinguishable, load_cells, rounds_of, spread  # noqa: E402
+from study_motion import motion_section  # noqa: E402  (app/study/study_motion.py)
 
 
 def fail(message):
@@ -53,16 +57,21 @@ def fail(message):
     sys.exit(2)
 
 
+def sweep_of(folder):
+    """A bench folder's args and revision, from its sweep.json."""
+    sweep_path = os.path.join(folder, "sweep.json")
+    sweep = {}
+    if os.path.isfile(sweep_path):
+        with open(sweep_path) as f:
+            sweep = json.load(f)
+    return {"folder": folder, "args": sweep.get("args", []), "revision": sweep.get("git_revision", "?")}
+
+
 def load(folders):
     """Every cell of every folder, with its sweep's args and revision."""
     cells, sweeps = [], []
     for folder in folders:
-        sweep_path = os.path.join(folder, "sweep.json")
-        sweep = {}
-        if os.path.isfile(sweep_path):
-            with open(sweep_path) as f:
-                sweep = json.load(f)
-        sweeps.append({"folder": folder, "args": sweep.get("args", []), "revision": sweep.get("git_revision", "?")})
+        sweeps.append(sweep_of(folder))
         try:
             cells.extend(load_cells(folder))  # one record per cell, its rounds made one
         except (NotABenchFolder, ValueError) as e:
@@ -371,7 +380,7 @@ def image_check(by_group):
     return checked, differ
 
 
-def report(out_path, folders, note=""):
+def report(out_path, folders, note="", motion=(), motion_note=""):
     cells, sweeps = load(folders)
     rows = [describe(c) for c in cells]
     by_group = groups(rows)
@@ -446,11 +455,18 @@ def report(out_path, folders, note=""):
                  "the same for every cell; sorting's effect on the image is the comparison above, which must find "
                  "none.</p>")
 
+    try:
+        parts.extend(motion_section(plt, list(motion), motion_note, os.path.dirname(os.path.abspath(out_path)), describe,
+                                    table))
+    except (NotABenchFolder, ValueError, KeyError) as e:
+        fail(f"a motion folder is not usable: {e}")
+
     devices = sorted({(r["device"].get("name", "?"), r["device"].get("driver", "?")) for r in rows})
     parts.append("<h2>Device, revision and commands</h2>")
     parts.append(table(["device", "driver"], devices))
     parts.append(table(["folder", "revision", "command"],
-                       [(sw["folder"], sw["revision"], "raylab bench " + " ".join(sw["args"])) for sw in sweeps]))
+                       [(sw["folder"], sw["revision"], "raylab bench " + " ".join(sw["args"]))
+                        for sw in sweeps + [sweep_of(m) for m in motion]]))
 
     page = ("<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>raylab study</title><style>"
             "body{font-family:sans-serif;max-width:60em;margin:2em auto;color:#222}"
@@ -463,12 +479,16 @@ def report(out_path, folders, note=""):
 
 def main():
     args = sys.argv[1:]
-    note = ""
-    if len(args) >= 2 and args[0] == "--note":
-        note, args = args[1], args[2:]
+    options = {"--note": "", "--motion": [], "--motion-note": ""}
+    while len(args) >= 2 and args[0] in options:
+        if isinstance(options[args[0]], list):
+            options[args[0]].append(args[1])
+        else:
+            options[args[0]] = args[1]
+        args = args[2:]
     if len(args) < 2:
-        fail("usage: study_report.py [--note TEXT] OUT.html BENCH_DIR [BENCH_DIR...]")
-    report(args[0], args[1:], note)
+        fail("usage: study_report.py [--note TEXT] [--motion DIR]... [--motion-note TEXT] OUT.html BENCH_DIR [BENCH_DIR...]")
+    report(args[0], args[1:], options["--note"], options["--motion"], options["--motion-note"])
 
 
 if __name__ == "__main__":
