@@ -8,7 +8,7 @@ set -eu
 raylab="$1"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-study=(temple@hall --sizes 32x16,64x32 --bounces 2 --strategies two-point --rounds 1)
+study=(temple@hall --sizes 32x16,64x32 --bounces 2 --strategies two-point --rounds 1 --no-motion)  # study_command.sh has the motion sweeps
 
 "$raylab" study "${study[@]}" --out-dir "$dir/whole" >"$dir/whole.log" 2>&1 || { cat "$dir/whole.log"; exit 1; }
 # Shard 1 picks its device by number, as the README's GNU parallel line does (where this machine has one
