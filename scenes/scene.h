@@ -49,6 +49,11 @@ struct Viewpoint {
   float yfovRadians = 0.8f;
 };
 
+// The same camera: everything a render sees (the name is not part of it).
+inline bool sameCamera(const Viewpoint& a, const Viewpoint& b) {
+  return a.position == b.position && a.target == b.target && a.up == b.up && a.yfovRadians == b.yfovRadians;
+}
+
 struct Triangle {
   glm::vec3 v[3];
   glm::vec2 uv[3] = {glm::vec2(0.0f), glm::vec2(0.0f), glm::vec2(0.0f)};

@@ -98,8 +98,8 @@ bool intersectLeaf(TriangleQuads entries, uint first, uint count, vec3 origin, v
 }
 
 // A leaf child travels through the traversal (the next node, the stack) as one word: RL_LEAF_TAG, its first
-// leaf entry above RL_LEAF_COUNT_BITS bits of its count - 1 (GpuScene refuses trees whose leaves do not fit).
-// Interior children are pair-node indices (below RL_TRAVERSAL_DONE, which is below RL_LEAF_TAG).
+// leaf entry above RL_LEAF_COUNT_BITS bits of its count - 1 (pairNodes refuses trees whose leaves do not fit).
+// Interior children are pair-node indices, below RL_LEAF_TAG.
 uint leafWord(uint first, uint count) { return RL_LEAF_TAG | (first << RL_LEAF_COUNT_BITS) | (count - 1u); }
 bool isLeafWord(uint word) { return word >= RL_LEAF_TAG; }
 
@@ -128,7 +128,7 @@ HitRecord traverseBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool an
   while (true) {
     hit.steps++;
     RL_TRAVERSAL_STEP();
-    if (node >= RL_LEAF_TAG) {
+    if (isLeafWord(node)) {
       if (intersectLeafWord(tris, node, origin, dir, hit, tMax, anyHit)) return hit;
       if (sp == 0u) break;
       node = stack[--sp];

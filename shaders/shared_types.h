@@ -93,11 +93,10 @@ struct BvhPairNode {
 #define RL_BVH_NO_CHILD 0xFFFFFFFFu
 // The traversal carries a leaf child as one word: RL_LEAF_TAG, then its first leaf entry, then its count - 1
 // in the low RL_LEAF_COUNT_BITS bits (shaders/bvh_traverse.glsl). So a tree's leaf entries stay below
-// RL_LEAF_ENTRY_LIMIT and its leaves at most 1 << RL_LEAF_COUNT_BITS entries (GpuScene checks both).
+// RL_LEAF_ENTRY_LIMIT and its leaves at most 1 << RL_LEAF_COUNT_BITS entries (pairNodes checks both).
 #define RL_LEAF_TAG 0x80000000u
 #define RL_LEAF_COUNT_BITS 5u
 #define RL_LEAF_ENTRY_LIMIT (1u << (31u - RL_LEAF_COUNT_BITS))
-#define RL_TRAVERSAL_DONE 0x7FFFFFFFu  // the traversal's end: neither a pair node (fewer) nor a leaf word
 
 // Compressed 8-wide BVH node (renderer/bvh/bvh_wide.h collapses the binary tree into these; traversal in
 // shaders/bvh_traverse_wide.glsl), after Ylitie, Karras and Laine (HPG 2017): up to 8 children whose boxes are

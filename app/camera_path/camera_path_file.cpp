@@ -1,11 +1,8 @@
 #include "app/camera_path/camera_path_file.h"
 
 namespace raylab {
-namespace {
 
 nlohmann::json vec3Json(const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
-
-}  // namespace
 
 nlohmann::json cameraKeyframesJson(const std::vector<CameraKeyframe>& keyframes) {
   nlohmann::json out = nlohmann::json::array();

@@ -9,6 +9,8 @@
 
 namespace raylab {
 
+// A vector as the path file writes it: [x, y, z].
+nlohmann::json vec3Json(const glm::vec3& v);
 // The keyframes as the file's "keyframes" array: frame, position, target, fov (degrees) and cut.
 nlohmann::json cameraKeyframesJson(const std::vector<CameraKeyframe>& keyframes);
 // The whole file: {"frames": N, "keyframes": [...]}; parseCameraPath(dump) gives the path back.

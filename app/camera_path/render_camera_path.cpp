@@ -11,8 +11,6 @@
 namespace raylab {
 namespace {
 
-nlohmann::json vec3Json(const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
-
 bool has(const std::vector<std::string>& args, const char* flag) { return std::find(args.begin(), args.end(), flag) != args.end(); }
 
 }  // namespace

@@ -37,10 +37,6 @@ float speedFor(const Scene& scene) {
   return diagonal > 0.0f ? 0.25f * diagonal : 1.0f;
 }
 
-bool sameCamera(const Viewpoint& a, const Viewpoint& b) {
-  return a.position == b.position && a.target == b.target && a.up == b.up && a.yfovRadians == b.yfovRadians;
-}
-
 }  // namespace
 
 LabWindow::LabWindow(const WindowOptions& options)

@@ -19,8 +19,7 @@ std::optional<Viewpoint> PathPlayer::moveIfDue(PathTracer& tracer) {
 }
 
 bool PathPlayer::holds(const Viewpoint& v) const {
-  return !moved_ || (v.position == current_.position && v.target == current_.target && v.up == current_.up &&
-         v.yfovRadians == current_.yfovRadians);
+  return !moved_ || sameCamera(v, current_);
 }
 
 bool PathPlayer::frameDone() {
