@@ -60,6 +60,10 @@ struct FrameStats {
   uint32_t keyBits = 0;
   uint64_t lengthCacheBytes = 0;
   double lengthCacheOccupancy = -1.0;  // detailed frames of strategies with a cache (-1, null in JSON: not measured)
+  // Cache entries this frame's learning reset, summed over its bounces (RL_COUNTER_CACHE_RESETS: Gaussian
+  // resets and non-finite restarts); every frame that sorts with a strategy that has a cache (-1, null in
+  // JSON: no cache).
+  int64_t lengthCacheResets = -1;
   uint64_t sortScratchBytes = 0;
   uint64_t pathStateBytes = 0;
   uint64_t sceneBytes = 0;

@@ -105,8 +105,11 @@ const FrameStats& PathTracer::completeFrame() {
 void PathTracer::gatherCounters() {
   const uint32_t rounds = countedBounces();
   const auto* history = static_cast<const uint32_t*>(buffers_->counterHistory.mapped());
+  const bool learns = settings_.sorts() && pathSorter_->keys().hasCache();
+  if (learns) stats_.lengthCacheResets = 0;
   for (uint32_t b = 0; b < rounds; ++b) {
     const uint32_t* c = history + b * RL_COUNTER_STRIDE;
+    if (learns) stats_.lengthCacheResets += c[RL_COUNTER_CACHE_RESETS];
     BounceStats bs;
     bs.rays = c[RL_COUNTER_RAYS];
     if (settings_.countSimt && !usesRt() && c[RL_COUNTER_SIMT_SLOTS] > 0)

@@ -87,6 +87,7 @@ json toJson(const FrameStats& s) {
           {"key_bits", s.keyBits},
           {"length_cache_bytes", s.lengthCacheBytes},
           {"length_cache_occupancy", s.lengthCacheOccupancy < 0.0 ? json(nullptr) : json(s.lengthCacheOccupancy)},
+          {"length_cache_resets", s.lengthCacheResets < 0 ? json(nullptr) : json(s.lengthCacheResets)},
           {"sort_scratch_bytes", s.sortScratchBytes},
           {"path_state_bytes", s.pathStateBytes},
           {"scene_bytes", s.sceneBytes},

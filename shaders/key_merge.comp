@@ -5,10 +5,15 @@
 // ema moves the mean toward the batch mean by 1 - (1 - alpha)^n, as n single updates with the batch mean
 // would. Gaussian cells whose variance exceeds gaussReset drop their past and keep only this batch (or
 // nothing, when the batch alone is above it).
+// Each bounce counts the entries it reset in GpuFrame::counters' RL_COUNTER_CACHE_RESETS slot, one atomic per
+// subgroup: Gaussian resets and non-finite restarts together (an entry is counted once even if both apply),
+// since either drops what the entry had learned; the latter only guards against NaN and infinity and should
+// never fire.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 #include "spec_ids.h"
 #include "key_types.h"
 #include "rng.glsl"
@@ -21,15 +26,15 @@ layout(push_constant, scalar) uniform Push { KeyLearnPush pc; };
 
 float varianceOf(float count, float m2) { return count >= 2.0 ? m2 / (count - 1.0) : 0.0; }
 
-void main() {
-  uint i = flatInvocationIndex();
+// Folds the batch of the i-th touched entry into it; true when the entry was reset.
+bool mergeTouched(uint i) {
   GpuKeyParams params = KeyParamsBuf(pc.params).p;
   GpuLengthCache cache = params.cache;
-  if (i >= cache.touched.v[0]) return;
+  if (i >= cache.touched.v[0]) return false;
   uint e = cache.touched.v[2u + i];
   GpuCacheBatch b = cache.batches.v[e];
   cache.batches.v[e] = GpuCacheBatch(0u, 0u, 0u, 0u, 0u);
-  if (b.count == 0u) return;
+  if (b.count == 0u) return false;
   GpuCacheEntry c = cache.entries.v[e];
 
   // Batch statistics in quantized units. With sum = m n + r (integer division), the batch's M2 is
@@ -64,7 +69,8 @@ void main() {
     m2 *= float(RL_CACHE_COUNT_CAP) / count;
     count = float(RL_CACHE_COUNT_CAP);
   }
-  if (kStrategy == RL_KEY_GAUSSIAN && varianceOf(count, m2) > cache.gaussReset) {
+  bool gaussianReset = kStrategy == RL_KEY_GAUSSIAN && varianceOf(count, m2) > cache.gaussReset;
+  if (gaussianReset) {
     bool keepBatch = varianceOf(nB, m2B) <= cache.gaussReset;
     count = keepBatch ? min(nB, float(RL_CACHE_COUNT_CAP)) : 0.0;
     mean = keepBatch ? meanB : 0.0;
@@ -78,4 +84,12 @@ void main() {
   o.m2 = sane ? m2 : 0.0;
   o.sigma = sane ? sqrt(varianceOf(count, m2)) : 0.0;
   cache.entries.v[e] = o;
+  return gaussianReset || !sane;
+}
+
+void main() {
+  // Every lane reaches the count, those past the touched entries with nothing to add.
+  uint resets = subgroupAdd(mergeTouched(flatInvocationIndex()) ? 1u : 0u);
+  if (subgroupElect() && resets > 0u)
+    atomicAdd(FrameBuf(pc.frame).f.counters.v[pc.bounce * RL_COUNTER_STRIDE + RL_COUNTER_CACHE_RESETS], resets);
 }

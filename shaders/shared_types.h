@@ -34,11 +34,13 @@ using uint = uint32_t;
 // ---- Named slots: every index into a GPU-visible array that both sides use is defined here, once.
 
 // GpuFrame::counters: RL_COUNTER_STRIDE words per bounce (the megakernel uses bounce 0's), written by the
-// trace stage (simt_counting.glsl) and copied to the host once per frame.
-#define RL_COUNTER_RAYS 0u         // rays traced
-#define RL_COUNTER_SIMT_ACTIVE 1u  // active lanes summed over the subgroups' traversal iterations (countSimt)
-#define RL_COUNTER_SIMT_SLOTS 2u   // subgroup traversal iterations (countSimt)
-#define RL_COUNTER_STRIDE 4u       // words per bounce (one unused)
+// trace stage (simt_counting.glsl) and the length cache's merge (key_merge.comp), cleared at the start of a
+// frame and copied to the host once per frame.
+#define RL_COUNTER_RAYS 0u          // rays traced
+#define RL_COUNTER_SIMT_ACTIVE 1u   // active lanes summed over the subgroups' traversal iterations (countSimt)
+#define RL_COUNTER_SIMT_SLOTS 2u    // subgroup traversal iterations (countSimt)
+#define RL_COUNTER_CACHE_RESETS 3u  // length-cache entries whose past this bounce's learning dropped
+#define RL_COUNTER_STRIDE 4u        // words per bounce
 // Bounces the counters buffer has room for (SettingLimits::kMaxBounces).
 #define RL_MAX_BOUNCES 32u
 
@@ -303,7 +305,7 @@ static_assert(offsetof(GpuPathState, throughput) == RL_STATE_THROUGHPUT * sizeof
 static_assert(RL_STATE_BYTES_PER_PATH == RL_STATE_ARRAY_COUNT * 16);
 static_assert(sizeof(PathStagePush) == 16);
 static_assert(offsetof(GpuScene, tlas) % 8 == 0 && sizeof(GpuScene) == offsetof(GpuScene, tlas) + 8);
-static_assert(RL_COUNTER_SIMT_SLOTS < RL_COUNTER_STRIDE && RL_LIVE_DISPATCH + 3 == RL_LIVE_WORDS);
+static_assert(RL_COUNTER_CACHE_RESETS < RL_COUNTER_STRIDE && RL_LIVE_DISPATCH + 3 == RL_LIVE_WORDS);
 }  // namespace raylab::gpu
 #endif
 #endif

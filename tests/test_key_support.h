@@ -1,6 +1,7 @@
 // Helpers of the key-stage tests: a small box scene, random paths that include the awkward cases (dead
 // paths, NaN/zero/infinite directions, origins outside the grid), and a fake frame block that holds just
-// what the key shaders read (one path-state set, the trace's hit distances, a one-leaf BVH for the oracle).
+// what the key shaders read (one path-state set, the trace's hit distances, a one-leaf BVH for the oracle,
+// the counters key_merge.comp adds its resets to).
 #pragma once
 
 #include <bit>
@@ -122,6 +123,14 @@ class FakeFrame {
     values = GpuBuffer(ctx, capacity * sizeof(uint32_t));
     frameBlock_ = GpuBuffer(ctx, sizeof(gpu::GpuFrame));
     live_ = GpuBuffer(ctx, RL_LIVE_WORDS * sizeof(uint32_t));
+    counters_ = GpuBuffer(ctx, RL_MAX_BOUNCES * RL_COUNTER_STRIDE * sizeof(uint32_t));
+    clearCounters();
+  }
+
+  // GpuFrame::counters (RL_COUNTER_* slots per bounce): kept across upload(), as over a frame's bounces.
+  void clearCounters() { counters_.uploadVector(std::vector<uint32_t>(RL_MAX_BOUNCES * RL_COUNTER_STRIDE, 0u)); }
+  uint32_t counter(uint32_t bounce, uint32_t slot) const {
+    return counters_.downloadVector<uint32_t>(RL_MAX_BOUNCES * RL_COUNTER_STRIDE)[bounce * RL_COUNTER_STRIDE + slot];
   }
 
   // `liveCount`: the live prefix of the last sort (GpuFrame::live); every path when not given.
@@ -153,6 +162,7 @@ class FakeFrame {
     live[RL_LIVE_COUNT] = liveCount.value_or(static_cast<uint32_t>(p.size()));
     live_.uploadVector(live);
     f.live = live_.address();
+    f.counters = counters_.address();
     f.pathCount = static_cast<uint32_t>(p.size());
     f.frameIndex = frameIndex;
     f.seed = seed;
@@ -177,7 +187,7 @@ class FakeFrame {
   const VulkanContext* ctx_;
   uint32_t capacity_;
   uint32_t frameIndex_ = 0, seed_ = 0;
-  GpuBuffer nodes_, triangles_, leafTriangles_, origin_, direction_, throughput_, hitT_, live_, frameBlock_;
+  GpuBuffer nodes_, triangles_, leafTriangles_, origin_, direction_, throughput_, hitT_, live_, counters_, frameBlock_;
 };
 
 struct KeyOutput {

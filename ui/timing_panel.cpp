@@ -160,6 +160,8 @@ void drawMemory(const FrameStats& s) {
     ImGui::Text("length cache %s (%.1f%% occupied)", formatBytes(s.lengthCacheBytes).c_str(), 100.0 * s.lengthCacheOccupancy);
   else
     ImGui::Text("length cache %s (occupancy n/a)", formatBytes(s.lengthCacheBytes).c_str());
+  if (s.lengthCacheResets >= 0)
+    ImGui::Text("length cache resets this frame: %lld", static_cast<long long>(s.lengthCacheResets));
   ImGui::Text("sort scratch %s, path state %s", formatBytes(s.sortScratchBytes).c_str(), formatBytes(s.pathStateBytes).c_str());
   ImGui::Text("scene %s, key bits %u", formatBytes(s.sceneBytes).c_str(), s.keyBits);
 }

@@ -66,6 +66,7 @@ nlohmann::json pathFrameJson(uint32_t f, const PathCamera& camera, const FrameSt
   frame["prediction_error_mean"] = optional(meanOverBounces(st.bounces, &BounceStats::predictionErrorMean, true));
   frame["cell_hit_rate_mean"] = optional(meanOverBounces(st.bounces, &BounceStats::cellHitRate, true));
   frame["length_cache_occupancy"] = optional(st.lengthCacheOccupancy);
+  frame["length_cache_resets"] = st.lengthCacheResets < 0 ? nlohmann::json(nullptr) : nlohmann::json(st.lengthCacheResets);
   frame["learning_restarted"] = learningRestarted;
   frame["sorted_after"] = sortPlanText(plan.sortAfter);
   frame["measuring"] = plan.measuring;

@@ -31,8 +31,10 @@ PathCellResult measurePathCell(PathTracer& tracer, const Settings& settings, con
 // One path frame's figures: "path_frame", "cut", "camera", "frame_ms" (GPU), "work_ms", "wall_ms",
 // "stage_ms" {stage: ms summed over bounces}, per bounce "rays", "prediction_error", "cell_hit_rate"
 // (null where not measured), their means over bounces >= 1 ("prediction_error_mean", "cell_hit_rate_mean"),
-// "length_cache_occupancy" (null unless detailed), "learning_restarted" (the length caches and the policy's
-// costs started from nothing before this frame: the replay's first frame; a cut restarts nothing),
+// "length_cache_occupancy" (null unless detailed), "length_cache_resets" (entries this frame's learning
+// reset: FrameStats::lengthCacheResets, every frame; null without a cache), "learning_restarted" (the
+// length caches and the policy's costs started from nothing before this frame: the replay's first frame; a
+// cut restarts nothing),
 // "sorted_after" ("YN-": the plan), "measuring" (auto's plan measured an arm) and "detailed".
 nlohmann::json pathFrameJson(uint32_t f, const PathCamera& camera, const FrameStats& st, const SortPlan& plan,
                              bool learningRestarted, bool detailed);

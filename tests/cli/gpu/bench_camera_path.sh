@@ -23,8 +23,9 @@ frames = [json.loads(l) for l in open(os.path.join(out, "path_frames.jsonl"))]
 rounds = int(rows[0]["rounds"])
 assert len(frames) == len(rows) * rounds * n, (len(frames), len(rows), rounds, n)
 fields = ["path_frame", "cut", "camera", "frame_ms", "work_ms", "stage_ms", "rays", "prediction_error",
-          "cell_hit_rate", "prediction_error_mean", "length_cache_occupancy", "learning_restarted", "sorted_after",
-          "measuring", "detailed", "cell", "round", "label", "strategy", "sort_policy", "camera_path"]
+          "cell_hit_rate", "prediction_error_mean", "length_cache_occupancy", "length_cache_resets",
+          "learning_restarted", "sorted_after", "measuring", "detailed", "cell", "round", "label", "strategy",
+          "sort_policy", "camera_path"]
 by = {}
 for f in frames:
     missing = [k for k in fields if k not in f]
@@ -32,6 +33,8 @@ for f in frames:
     assert f["cut"] == (f["path_frame"] in cut_frames), f
     assert f["learning_restarted"] == (f["path_frame"] == 0), f
     assert f["detailed"] == (f["round"] == 0), f
+    # Every frame of a strategy with a length cache counts its resets (average has none); the others have none.
+    assert f["length_cache_resets"] == (0 if f["strategy"] == "average" else None), f
     assert f["rays"][0] > 0 and (f["label"] == "megakernel" or len(f["rays"]) == 3), f["rays"]  # per bounce
     assert f["work_ms"] > 0 and f["frame_ms"] >= f["work_ms"] - 1e-9, f
     by.setdefault((f["cell"], f["round"]), []).append(f)

@@ -1,7 +1,9 @@
 // Rendering along a camera path (app/camera_path/render_camera_path.h): every path frame, before and after a cut, is
 // the unsorted frame bit for bit whatever the key strategy (the central invariant under a moving camera), and
 // a camera move, a cut included, restarts the accumulation and nothing else: the length cache keeps what it
-// learned and the sort policy keeps its measured costs (SettingsChange::cameraMove).
+// learned and the sort policy keeps its measured costs (SettingsChange::cameraMove); every path frame reports
+// the cache's resets.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -78,6 +80,7 @@ TEST_F(CameraPathRender, ACutRestartsTheAccumulationAndKeepsWhatWasLearned) {
     EXPECT_EQ(tracer.sortPolicy().framesSeen(), f + 1) << f;  // not reset by the move nor by the cut
     occupancy.push_back(st.lengthCacheOccupancy);
     ASSERT_GT(occupancy.back(), 0.0) << f;
+    EXPECT_EQ(st.lengthCacheResets, 0) << f;  // measured every frame; average never resets
   }
   ASSERT_TRUE(cameraAt(path, 2, kUp).cut);
   for (uint32_t f = 1; f < path.frames; ++f) EXPECT_GE(occupancy[f], occupancy[f - 1]) << "the cache lost cells at " << f;
@@ -86,6 +89,26 @@ TEST_F(CameraPathRender, ACutRestartsTheAccumulationAndKeepsWhatWasLearned) {
   fresh.setDetailedStats(true);
   const double openingsOnly = fresh.renderFrame().lengthCacheOccupancy;
   EXPECT_GT(occupancy[2], openingsOnly) << "the cut frame's cache should still hold the hall's cells";
+}
+
+// The Gaussian cache's resets are counted in every path frame, the cut's included: with a threshold below any
+// cell's variance every learned bounce resets cells; with none, no frame does.
+TEST_F(CameraPathRender, EveryPathFrameReportsItsCacheResets) {
+  const Scene scene = makeTemple();
+  const CameraPath path = cutAt2();
+  Settings s = smallFrame(48, 24, 3);
+  s.strategy = KeyStrategy::Gaussian;
+  s.sort = SortAlgorithm::Radix;
+  for (float threshold : {1e-9f, INFINITY}) {
+    s.gaussReset = threshold;
+    PathTracer tracer(ctx(), scene, s, cameraAt(path, 0, kUp).view);
+    for (uint32_t f = 0; f < path.frames; ++f) {
+      tracer.setCamera(cameraAt(path, f, kUp).view);
+      const int64_t resets = tracer.renderFrame().lengthCacheResets;
+      if (threshold < 1.0f) EXPECT_GT(resets, 0) << "path frame " << f;
+      else EXPECT_EQ(resets, 0) << "path frame " << f;
+    }
+  }
 }
 
 }  // namespace
