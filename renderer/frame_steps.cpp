@@ -89,8 +89,28 @@ void PathTracer::buildWavefrontSteps(gpu::PathStagePush push) {
   bool fusesGather = false;  // the last sort's reorder is left to this bounce's trace
   for (uint32_t b = 0; b < settings_.bounces; ++b) {
     push.bounce = b;
+    if (loopsFrom(b, fusesGather)) {
+      // The bounces left in one dispatch over the live paths (Settings::loopsBounces): nothing runs between them.
+      addStep("trace+shade", static_cast<int>(b), [this, push](VkCommandBuffer cmd) {
+        recordStage(cmd, &timer_, "trace+shade", [&] {
+          shadeLoop_.get().dispatchIndirect(cmd, push, buffers_->live.handle(), PathBuffers::kLiveDispatchOffset);
+        });
+      });
+      return;
+    }
     buildBounceSteps(b, push, fusesGather);
   }
+}
+
+// Whether bounces `bounce` to the last can run as shade.comp's bounce loop: Settings::loopsBounces, and each of
+// them would fuse its trace and shade and sorts nothing after (so no later one gathers either).
+bool PathTracer::loopsFrom(uint32_t bounce, bool fusesGather) const {
+  if (!settings_.loopsBounces()) return false;
+  for (uint32_t b = bounce; b < settings_.bounces; ++b) {
+    const BouncePlan plan = planBounce(b, b == bounce && fusesGather);
+    if (!plan.fusesTraceShade || plan.sortAfter) return false;
+  }
+  return true;
 }
 
 // shade.comp as bounce `bounce` needs it; `fusesTraceShade`: it also does the trace (Settings::traceShade).

@@ -71,6 +71,7 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared
                pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 1}, {RL_SPEC_FUSES_TRACE_SHADE, 1}}, WritesSizes::Yes)}},
       megakernel_{pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 0}}),
                   pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 1}})},
+      shadeLoop_(pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 1}, {RL_SPEC_LOOPS_BOUNCES, 1}})),
       timer_(ctx) {
   checkSupported(settings_);
   allocate();

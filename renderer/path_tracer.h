@@ -126,6 +126,7 @@ class PathTracer {
     bool fusesTraceShade = false;  // trace and shade in one dispatch
   };
   BouncePlan planBounce(uint32_t bounce, bool fusesGather) const;
+  bool loopsFrom(uint32_t bounce, bool fusesGather) const;
   void buildBounceSteps(uint32_t bounce, gpu::PathStagePush& push, bool& fusesGather);
   void buildTraceStep(uint32_t bounce, const gpu::PathStagePush& push, bool gathers);
   void buildSortSteps(uint32_t bounce, bool keysInShade, gpu::PathStagePush& push, bool& fusesGather);
@@ -153,6 +154,7 @@ class PathTracer {
   // shade.comp by [compact][fusesTraceShade] (Settings::compaction, Settings::traceShade), megakernel.comp by
   // [countSimt].
   LazyPipeline trace_[2][2], shade_[2][2], megakernel_[2];
+  LazyPipeline shadeLoop_;  // shade.comp's bounce loop (Settings::loopsBounces)
   GpuTimer timer_;
   SortPolicyModel sortPolicy_;
   SortPlan framePlan_;  // which bounces the frame being recorded sorts after

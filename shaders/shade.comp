@@ -16,6 +16,10 @@
 // With spec constant 3 (Settings::traceShade fused) shade also does the bounce's trace: it traces the ray it
 // loaded (trace.comp's traversal of the same floats, so the same hit) and counts it, and no hit record is
 // written or read. It writes no traversal steps (nothing reads them where the host fuses).
+// With spec constant 8 as well (Settings::loopsBounces) each thread goes on to the path's end: trace, shade
+// and the radiance of every bounce from this one, in registers, as the megakernel does (the same functions in
+// the same order, the radiance summed as pathAddRadiance would: the same image bit for bit). The host
+// dispatches it after the frame's last sort, where nothing reads the state, hits or keys between bounces.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
@@ -33,6 +37,7 @@
 layout(constant_id = RL_SPEC_KEY_STRATEGY) const uint kKeyStrategy = RL_KEY_NONE;
 layout(constant_id = RL_SPEC_COMPACT) const bool kCompact = false;
 layout(constant_id = RL_SPEC_FUSES_TRACE_SHADE) const bool kFusesTraceShade = false;
+layout(constant_id = RL_SPEC_LOOPS_BOUNCES) const bool kLoopsBounces = false;
 
 // keys.comp's output for slot i: the key and the slot as the sort's payload; the predicted length.
 void storeKey(GpuFrame f, uint i, PathVars p, uint id, out float len) {
@@ -70,6 +75,23 @@ void appendPath(GpuFrame f, PathVars p, uint id) {
   if (p.alive) storePath(f.state[1u - pc.stateSet], base + subgroupBallotExclusiveBitCount(survivors), p, id);
 }
 
+// The bounce loop (kLoopsBounces): path `id` from bounce pc.bounce to its end. Rays are counted per bounce as
+// trace.comp counts them, by the lanes still tracing.
+void finishPath(GpuFrame f, PathVars p, uint id) {
+  gCounters = f.counters;
+  vec3 radiance = pc.bounce == 0u ? vec3(0.0) : f.results.v[id].xyz;
+  for (uint b = pc.bounce; b < f.bounceCount && p.alive; ++b) {
+    HitRecord hit = traceClosest(f.scene, p.origin, p.direction, 1e30);
+    gCounterBase = b * RL_COUNTER_STRIDE;
+    countRays(1u);
+    uint rng = rngSeed(id, f.frameIndex, b, f.seed, RL_RNG_SHADE);
+    p.radiance = vec3(0.0);
+    shadePath(f.scene, p, hit, b, f.bounceCount, rng);
+    radiance = addBounceRadiance(radiance, b, p.radiance);
+  }
+  f.results.v[id] = vec4(radiance, 1.0);
+}
+
 void main() {
   GpuFrame f = FrameBuf(pc.frame).f;
   uint i = flatInvocationIndex();
@@ -88,6 +110,10 @@ void main() {
   }
   uint id;
   PathVars p = loadPath(s, i, id);
+  if (kLoopsBounces) {
+    finishPath(f, p, id);
+    return;
+  }
   HitRecord hit;
   if (kFusesTraceShade) {
     hit = traceClosest(f.scene, p.origin, p.direction, 1e30);

@@ -22,7 +22,7 @@ const std::pair<HeatmapScale, const char*> kScaleNames[] = {{HeatmapScale::Linea
 const std::pair<Fusion, const char*> kFusionNames[] = {
     {Fusion::None, "none"}, {Fusion::Keys, "keys"}, {Fusion::Gather, "gather"}, {Fusion::Both, "both"}};
 const std::pair<Compaction, const char*> kCompactionNames[] = {{Compaction::None, "none"}, {Compaction::Shade, "shade"}};
-const std::pair<TraceShade, const char*> kTraceShadeNames[] = {{TraceShade::Split, "split"}, {TraceShade::Fused, "fused"}};
+const std::pair<TraceShade, const char*> kTraceShadeNames[] = {{TraceShade::Split, "split"}, {TraceShade::Fused, "fused"}, {TraceShade::Loop, "loop"}};
 const std::pair<SortPolicy, const char*> kPolicyNames[] = {
     {SortPolicy::Always, "always"}, {SortPolicy::Never, "never"}, {SortPolicy::Auto, "auto"}};
 const std::pair<Kernel, const char*> kKernelNames[] = {{Kernel::Wavefront, "wavefront"},

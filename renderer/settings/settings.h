@@ -105,7 +105,12 @@ enum class Compaction { None, Shade };
 // Measured on an H200 (docs/results/archive/h200-trace-shade): unsorted frames 0.92-0.99x, sorted ones never slower;
 // with compaction the unsorted wavefront is then within 5% of the megakernel but on the hall at 4 bounces.
 // The default stays split, the per-stage view the timing panel teaches; use fused for GPU measurements.
-enum class TraceShade { Split, Fused };
+// `loop`: fused, and the bounces after the frame's last sort (every bounce when it sorts none) run as one
+// dispatch, each thread tracing and shading its path to the end (shade.comp's bounce loop, timed as one
+// "trace+shade" stage at its first bounce), as the megakernel does: no dispatch, barrier, indirect size or
+// path-state write and read between those bounces (issue 36: the wavefront's fixed cost at small sizes). Not
+// with --sort-policy auto, which times every bounce's work on its own. Same image bit for bit.
+enum class TraceShade { Split, Fused, Loop };
 
 // Which BVH the compute tracer walks (GpuScene::bvhLayout): the binary tree or the compressed 8-wide one
 // collapsed from it (renderer/bvh/bvh_wide.h). Both index the same BVH-order triangles; the wide traversal may pick
@@ -246,7 +251,9 @@ struct Settings {
   bool fusesGather() const { return sorts() && tracer == Tracer::Compute && (fusion == Fusion::Gather || fusion == Fusion::Both); }
   // Settings::traceShade as this tracer applies it: only the compute wavefront, and not while counting SIMT
   // lanes (the counting trace variant).
-  bool fusesTraceShade() const { return traceShade == TraceShade::Fused && kernel == Kernel::Wavefront && tracer == Tracer::Compute && !countSimt; }
+  bool fusesTraceShade() const { return traceShade != TraceShade::Split && kernel == Kernel::Wavefront && tracer == Tracer::Compute && !countSimt; }
+  // TraceShade::Loop as this tracer applies it (where it fuses trace and shade).
+  bool loopsBounces() const { return traceShade == TraceShade::Loop && fusesTraceShade(); }
   // Settings::compaction as this tracer applies it: only the compute wavefront compacts.
   bool compacts() const { return compaction == Compaction::Shade && kernel == Kernel::Wavefront && tracer == Tracer::Compute; }
   bool sorts() const { return kernel == Kernel::Wavefront && strategy != KeyStrategy::None && sort != SortAlgorithm::None; }

@@ -109,9 +109,10 @@ std::vector<SettingRow> sortRows() {
                  nullptr, [](const Settings& s) { return unlessDefault("compaction", &Settings::compaction, s); }, {}, false,
                  /*baselineToo=*/true}),
       RAYLAB_FIELD(traceShade, "trace-shade").jsonAbsent("trace_shade", "split").csv("trace_shade").effects(kSortCosts)
-          .help("split|fused", "compute wavefront: trace and shade of a bounce as two dispatches\n"
-                "(default) or one where nothing reads the hit between them (same image)").sample("fused")
-          .axis({"trace-shades", "split,fused  trace and shade as one dispatch or two, the baseline's too (--trace-shade)",
+          .help("split|fused|loop", "compute wavefront: trace and shade of a bounce as two dispatches\n"
+                "(default) or one where nothing reads the hit between them; loop: fused,\n"
+                "and the bounces after the last sort in one dispatch (same image)").sample("fused")
+          .axis({"trace-shades", "split,fused,loop  trace and shade as one dispatch or two, the baseline's too (--trace-shade)",
                  nullptr, [](const Settings& s) { return unlessDefault("trace-shade", &Settings::traceShade, s); }, {}, false,
                  /*baselineToo=*/true}),
   };

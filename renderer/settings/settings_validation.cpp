@@ -87,6 +87,11 @@ std::optional<std::string> settingsError(const Settings& s) {
     return "--sort tile sorts each tile of " + std::to_string(gpu::uint(SORT_BITONIC_TILE)) +
            " paths alone and needs the finished paths packed out before it: use --compaction shade with the compute "
            "tracer, and --fusion none or gather";
+  // Auto weighs each bounce's path work against its sort's cost (SortPolicyModel::record): bounces traced in
+  // one loop have no time of their own.
+  if (s.sorts() && s.loopsBounces() && s.sortPolicy == SortPolicy::Auto)
+    return "--trace-shade loop runs the bounces after the last sort in one dispatch, which leaves --sort-policy auto "
+           "no time per bounce to weigh: use --sort-policy always or never with it, or --trace-shade fused";
   // Path state is allocated per path: the product must stay within what a device can hold (and a uint32).
   uint64_t paths = uint64_t(s.width) * s.height * s.sppPerFrame;
   if (paths > SettingLimits::kMaxPathsPerFrame)

@@ -94,6 +94,8 @@ TEST_F(CommandCountsTest, EqualWhatReachedVulkan) {
   Settings s = base;
   s.traceShade = TraceShade::Fused;
   expectExact(s, "trace+shade");
+  s.traceShade = TraceShade::Loop;
+  expectExact(s, "trace+shade loop");
   s = base;
   s.kernel = Kernel::Megakernel;
   expectExact(s, "megakernel");

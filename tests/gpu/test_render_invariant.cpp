@@ -310,6 +310,15 @@ TEST_F(SortInvariantLayouts, EveryStrategySortAndPolicyRendersTheUnsortedImageOf
     fused.traceShade = TraceShade::Fused;
     fused.strategy = KeyStrategy::Average;
     cases.push_back({"average, trace+shade fused", fused});
+    // The bounce loop: after the last sort (always), and over the whole frame (never).
+    for (SortPolicy policy : {SortPolicy::Always, SortPolicy::Never}) {
+      Settings loop = base;
+      loop.traceShade = TraceShade::Loop;
+      loop.strategy = KeyStrategy::TwoPoint;
+      loop.fusion = Fusion::None;
+      loop.sortPolicy = policy;
+      cases.push_back({"two-point " + toString(policy) + ", trace+shade loop", loop});
+    }
     for (const auto& [what, s] : cases) {
       ASSERT_TRUE(s.sorts()) << what;
       expectSameImage(renderRadiance(context, scene, s, view), unsorted,

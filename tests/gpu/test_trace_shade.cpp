@@ -73,5 +73,77 @@ TEST_F(TraceShadeRender, CountsTheSameRaysAndSplitsOnlyWhereNeeded) {
   EXPECT_EQ(stageCount(mixed, "shade"), 1);
 }
 
+// Settings::traceShade loop: the bounces after the frame's last sort as one dispatch (shade.comp's bounce loop).
+// The split image bit for bit: unsorted with and without compaction, and sorted under always and never, with
+// and without a length cache, each reorder and keys in shade, over two frames.
+TEST_F(TraceShadeRender, LoopRendersTheSplitImage) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("openings");
+  Settings base = smallFrame(33, 17, 5);
+  base.frames = 2;
+  const std::vector<glm::vec3> split = renderRadiance(ctx(), scene, base, view);
+  ASSERT_GT(moments(split).mean, 0.0);
+  for (Compaction compaction : {Compaction::None, Compaction::Shade}) {
+    Settings s = base;
+    s.compaction = compaction;
+    s.traceShade = raylab::TraceShade::Loop;
+    expectSameImage(renderRadiance(ctx(), scene, s, view), split, "unsorted loop, compaction " + toString(compaction));
+  }
+  for (KeyStrategy strategy : {KeyStrategy::Fixed, KeyStrategy::Average})
+    for (Fusion fusion : {Fusion::None, Fusion::Gather, Fusion::Both})
+      for (SortPolicy policy : {SortPolicy::Always, SortPolicy::Never}) {
+        Settings s = base;
+        s.strategy = strategy;
+        s.fusion = fusion;
+        s.sortPolicy = policy;
+        s.traceShade = raylab::TraceShade::Loop;
+        expectSameImage(renderRadiance(ctx(), scene, s, view), split,
+                        toString(strategy) + " loop " + toString(fusion) + " " + toString(policy));
+      }
+}
+
+// Where the loop starts: at bounce 0 of an unsorted frame or one whose policy sorts nothing (one dispatch for all
+// bounces, the same rays counted per bounce), after a heatmap's bounce, and after the last sort.
+TEST_F(TraceShadeRender, LoopStartsAfterTheLastBounceThatNeedsItsOwnStages) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("hall");
+  Settings s = smallFrame(40, 24, 4);
+  PathTracer split(ctx(), scene, s, view);
+  const FrameStats want = split.renderFrame();
+  s.traceShade = raylab::TraceShade::Loop;
+  PathTracer loop(ctx(), scene, s, view);
+  const FrameStats got = loop.renderFrame();
+  ASSERT_EQ(got.bounces.size(), want.bounces.size());
+  for (size_t b = 0; b < want.bounces.size(); ++b) EXPECT_EQ(got.bounces[b].rays, want.bounces[b].rays) << "bounce " << b;
+  EXPECT_GT(want.bounces[3].rays, 0u);
+  EXPECT_EQ(stageCount(got, "trace+shade"), 1);
+  EXPECT_EQ(stageCount(got, "trace") + stageCount(got, "shade"), 0);
+
+  Settings heat = s;
+  heat.heatmap = HeatmapView::TraversalSteps;
+  heat.heatmapBounce = 1;
+  PathTracer withHeatmap(ctx(), scene, heat, view);
+  const FrameStats mixed = withHeatmap.renderFrame();
+  EXPECT_EQ(stageCount(mixed, "trace+shade"), 2);  // bounce 0 fused, bounce 1 split, bounces 2-3 looped
+  EXPECT_EQ(stageCount(mixed, "trace"), 1);
+
+  // A strategy under never sorts nothing: one loop. Under always (no fused gather) the last sort comes after
+  // bounce 2, so bounces 0-2 fuse on their own and the loop is bounce 3 alone.
+  Settings sorted = s;
+  sorted.strategy = KeyStrategy::Fixed;
+  sorted.fusion = Fusion::None;
+  sorted.sortPolicy = SortPolicy::Never;
+  PathTracer never(ctx(), scene, sorted, view);
+  const FrameStats none = never.renderFrame();
+  EXPECT_EQ(stageCount(none, "trace+shade"), 1);
+  EXPECT_EQ(stageCount(none, "sort"), 0);
+  sorted.sortPolicy = SortPolicy::Always;
+  PathTracer always(ctx(), scene, sorted, view);
+  const FrameStats every = always.renderFrame();
+  EXPECT_EQ(stageCount(every, "trace+shade"), 4);
+  EXPECT_EQ(stageCount(every, "sort"), 3);
+  ASSERT_FALSE(every.stages.empty());
+}
+
 }  // namespace
 }  // namespace raylab::test

@@ -71,6 +71,9 @@ TEST_F(ValidationSubset, CompactionFusionsAndTraceShade) {
   Settings fused = tiny();
   fused.traceShade = TraceShade::Fused;
   render(fused, "trace+shade fused");
+  Settings loop = tiny();
+  loop.traceShade = TraceShade::Loop;
+  render(loop, "trace+shade loop");
   Settings megakernel = tiny();
   megakernel.kernel = Kernel::Megakernel;
   render(megakernel, "megakernel");

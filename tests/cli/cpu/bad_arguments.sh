@@ -44,6 +44,9 @@ expect 2 bench --bvhs binary,bogus
 out=$(timeout 60 "$raylab" render --bvh bogus 2>&1)
 grep -qF -- "--bvh must be one of binary|sbvh|wide, got 'bogus'" <<<"$out" || { echo "FAIL: --bvh bogus: $out"; fail=1; }
 expect 2 render --strategy fixed --sort tile --compaction none
+expect 2 render --strategy two-point --sort-policy auto --trace-shade loop
+out=$(timeout 60 "$raylab" render --strategy two-point --sort-policy auto --trace-shade loop 2>&1)
+grep -qF -- "leaves --sort-policy auto no time per bounce" <<<"$out" || { echo "FAIL: loop with auto: $out"; fail=1; }
 expect 2 render --learn-every 0
 expect 2 render --learn-every 65
 expect 2 render --grid 4x4

@@ -13,15 +13,15 @@ heatmaps=$("$raylab" render --heatmap '?' 2>&1 | sed -n 's/.*must be one of \([a
 [ -n "$strategies" ] && [ -n "$heatmaps" ] || { echo "FAIL: cannot list strategies/heatmaps"; exit 1; }
 
 # The heatmap colouring options, the compaction and trace-shade join the product by rotation (line n takes
-# key colour n mod 3, scale n mod 2, range n mod 5, compaction n / 3 mod 2, trace-shade n / 6 mod 2): every
+# key colour n mod 3, scale n mod 2, range n mod 5, compaction n / 3 mod 2, trace-shade n / 6 mod 3): every
 # option meets every view, strategy and kernel without multiplying the renders.
 one() {  # n kernel sort strategy heatmap -> a line "RESULT kernel sort strategy heatmap"
   local n="$1"; shift
-  local colours=(cell rank hash) scales=(linear log) ranges=(auto 1:50 auto auto 0.5:8) compactions=(none shade) traceShades=(split fused)
+  local colours=(cell rank hash) scales=(linear log) ranges=(auto 1:50 auto auto 0.5:8) compactions=(none shade) traceShades=(split fused loop)
   local name="$1-$2-$3-$4" out rc height
   out=$(timeout 120 "$raylab" render --size 32x16 --bounces 2 --frames 1 --kernel "$1" --sort "$2" \
         --strategy "$3" --heatmap "$4" --heatmap-key-colour "${colours[n % 3]}" --heatmap-scale "${scales[n % 2]}" \
-        --heatmap-range "${ranges[n % 5]}" --compaction "${compactions[n / 3 % 2]}" --trace-shade "${traceShades[n / 6 % 2]}" --out "$dir/$name.png" 2>&1)
+        --heatmap-range "${ranges[n % 5]}" --compaction "${compactions[n / 3 % 2]}" --trace-shade "${traceShades[n / 6 % 3]}" --out "$dir/$name.png" 2>&1)
   rc=$?
   # A heatmap PNG carries its legend below the 16 rows of the image (IHDR height, bytes 20..23).
   height=$( [ -s "$dir/$name.png" ] && od -An -tu1 -j20 -N4 "$dir/$name.png" | awk '{print $1*16777216+$2*65536+$3*256+$4}')

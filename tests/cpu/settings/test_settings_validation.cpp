@@ -72,7 +72,7 @@ TEST(SettingsValidation, HostileSidecarValuesAreRefusedLikeTheCommandLine) {
   EXPECT_NE(jsonError("width", "wide").find("'width' must be a number"), std::string::npos);
   EXPECT_EQ(jsonError("fusion", "sideways"), "settings: 'fusion' must be none, keys, gather or both, got \"sideways\"");
   EXPECT_EQ(jsonError("compaction", "always"), "settings: 'compaction' must be none or shade, got \"always\"");
-  EXPECT_EQ(jsonError("trace_shade", "both"), "settings: 'trace_shade' must be split or fused, got \"both\"");
+  EXPECT_EQ(jsonError("trace_shade", "both"), "settings: 'trace_shade' must be split, fused or loop, got \"both\"");
   EXPECT_EQ(jsonError("bvh", "bogus"), "settings: 'bvh' must be binary, sbvh or wide, got \"bogus\"");
   // The tile sort needs the finished paths packed out first: refused without compaction, with keys made in
   // shade (which does not compact) and on the rt tracer; fine where nothing sorts.
@@ -125,6 +125,16 @@ TEST(SettingsValidation, PathsPerFrameAreBoundedWhicheverWayTheyArrive) {
   Settings out = overlaySettingFlags(many, {"--size", "8192x8192", "--spp", "1"});
   EXPECT_EQ(out.width, 8192u);
   EXPECT_THROW(overlaySettingFlags(many, {"--size", "8192x8192"}), UsageError);
+}
+
+// The bounce loop leaves no time per bounce, which auto weighs; without a strategy nothing sorts and it goes.
+TEST(SettingsValidation, TheBounceLoopDoesNotGoWithTheAutoPolicy) {
+  EXPECT_NE(cliError({"--trace-shade", "loop", "--strategy", "two-point", "--sort-policy", "auto"})
+                .find("--sort-policy auto"), std::string::npos);
+  EXPECT_EQ(cliError({"--trace-shade", "loop", "--strategy", "two-point", "--sort-policy", "never"}), "");
+  EXPECT_EQ(cliError({"--trace-shade", "loop", "--sort-policy", "auto"}), "");
+  EXPECT_EQ(cliError({"--trace-shade", "loop", "--strategy", "two-point", "--sort-policy", "auto", "--kernel",
+                      "megakernel"}), "");
 }
 
 }  // namespace
