@@ -76,20 +76,24 @@ void appendPath(GpuFrame f, PathVars p, uint id) {
 }
 
 // The bounce loop (kLoopsBounces): path `id` from bounce pc.bounce to its end. Rays are counted per bounce as
-// trace.comp counts them, by the lanes still tracing.
+// trace.comp counts them.
 void finishPath(GpuFrame f, PathVars p, uint id) {
-  gCounters = f.counters;
   vec3 radiance = pc.bounce == 0u ? vec3(0.0) : f.results.v[id].xyz;
-  for (uint b = pc.bounce; b < f.bounceCount && p.alive; ++b) {
+  uint b = pc.bounce;
+  for (; b < f.bounceCount && p.alive; ++b) {
     HitRecord hit = traceClosest(f.scene, p.origin, p.direction, 1e30);
-    gCounterBase = b * RL_COUNTER_STRIDE;
-    countRays(1u);
     uint rng = rngSeed(id, f.frameIndex, b, f.seed, RL_RNG_SHADE);
     p.radiance = vec3(0.0);
     shadePath(f.scene, p, hit, b, f.bounceCount, rng);
     radiance = addBounceRadiance(radiance, b, p.radiance);
   }
   f.results.v[id] = vec4(radiance, 1.0);
+  // Bounce c's rays: the lanes whose loop traced it, counted after the loop, where the subgroup has reconverged.
+  gCounters = f.counters;
+  for (uint c = pc.bounce; c < f.bounceCount; ++c) {
+    gCounterBase = c * RL_COUNTER_STRIDE;
+    countRays(c < b ? 1u : 0u);
+  }
 }
 
 void main() {
