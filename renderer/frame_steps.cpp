@@ -52,7 +52,7 @@ void PathTracer::buildSteps() {
 void PathTracer::buildMegakernelSteps(const gpu::PathStagePush& push) {
   addStep("megakernel", -1, [this, push](VkCommandBuffer cmd) {
     const uint32_t n = buffers_->pathCount;
-    const ComputePipeline& megakernel = megakernel_[settings_.countSimt].get();
+    const ComputePipeline& megakernel = megakernel_[settings_.countSimt][countsSteps(-1)].get();
     recordStage(cmd, &timer_, "megakernel", [&] {
       if (!usesRt()) {
         megakernel.dispatchThreads(cmd, push, n);
@@ -100,6 +100,11 @@ void PathTracer::buildWavefrontSteps(gpu::PathStagePush push) {
     }
     buildBounceSteps(b, push, fusesGather);
   }
+}
+
+bool PathTracer::countsSteps(int bounce) const {
+  if (detailedStats_) return true;
+  return bounce < 0 ? heatmapShown(settings_) != HeatmapView::None : heatmap_->readsAfterTrace(uint32_t(bounce));
 }
 
 // Whether bounces `bounce` to the last can run as shade.comp's bounce loop: Settings::loopsBounces, and each of
@@ -194,15 +199,15 @@ void PathTracer::buildBounceSteps(uint32_t b, gpu::PathStagePush& push, bool& fu
 // The trace of bounce b alone: the rt pipeline, the gathering trace (it does the last sort's reorder), or the
 // plain one over the live paths.
 void PathTracer::buildTraceStep(uint32_t b, const gpu::PathStagePush& push, bool gathers) {
-  addStep("trace", static_cast<int>(b), [this, push, gathers](VkCommandBuffer cmd) {
+  addStep("trace", static_cast<int>(b), [this, push, gathers, b](VkCommandBuffer cmd) {
     const uint32_t n = buffers_->pathCount;
     recordStage(cmd, &timer_, "trace", [&] {
       if (usesRt())
         rt_->traceRays(cmd, push, n);  // every path; the shader skips those past the live count
       else if (gathers)
-        trace_[settings_.countSimt][1].get().dispatchThreads(cmd, push, n);  // every slot: it finds the live count
+        trace_[settings_.countSimt][1][countsSteps(int(b))].get().dispatchThreads(cmd, push, n);  // every slot: it finds the live count
       else
-        trace_[settings_.countSimt][0].get()
+        trace_[settings_.countSimt][0][countsSteps(int(b))].get()
             .dispatchIndirect(cmd, push, buffers_->live.handle(), PathBuffers::kLiveDispatchOffset);
     });
   });

@@ -41,6 +41,12 @@ LazyPipeline pathStage(const VulkanContext& ctx, const char* shader, SpecConstan
                        WritesSizes writesSizes = WritesSizes::No) {
   return LazyPipeline(ctx, shader, sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, std::move(variant), writesSizes);
 }
+// trace.comp's variant: SIMT counting, the fused gather (which writes the next dispatch's size), step counting.
+LazyPipeline traceStage(const VulkanContext& ctx, int countSimt, int fusesGather, int countsSteps) {
+  return pathStage(ctx, "trace",
+                   {{RL_SPEC_COUNT_SIMT, countSimt}, {RL_SPEC_FUSES_GATHER, fusesGather}, {RL_SPEC_COUNTS_STEPS, countsSteps}},
+                   fusesGather ? WritesSizes::Yes : WritesSizes::No);
+}
 }  // namespace
 
 PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera)
@@ -61,16 +67,16 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared
       tonemap_(ctx, "tonemap", sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE),
       // The gathering trace finds the live count after a sort and the compacting shade appends the live
       // paths: both write the next dispatch's size.
-      trace_{{pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 0}, {RL_SPEC_FUSES_GATHER, 0}}),
-               pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 0}, {RL_SPEC_FUSES_GATHER, 1}}, WritesSizes::Yes)},
-              {pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 1}, {RL_SPEC_FUSES_GATHER, 0}}),
-               pathStage(ctx, "trace", {{RL_SPEC_COUNT_SIMT, 1}, {RL_SPEC_FUSES_GATHER, 1}}, WritesSizes::Yes)}},
+      trace_{{{traceStage(ctx, 0, 0, 0), traceStage(ctx, 0, 0, 1)}, {traceStage(ctx, 0, 1, 0), traceStage(ctx, 0, 1, 1)}},
+              {{traceStage(ctx, 1, 0, 0), traceStage(ctx, 1, 0, 1)}, {traceStage(ctx, 1, 1, 0), traceStage(ctx, 1, 1, 1)}}},
       shade_{{pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 0}}),
                pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 1}})},
               {pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 1}, {RL_SPEC_FUSES_TRACE_SHADE, 0}}, WritesSizes::Yes),
                pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 1}, {RL_SPEC_FUSES_TRACE_SHADE, 1}}, WritesSizes::Yes)}},
-      megakernel_{pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 0}}),
-                  pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 1}})},
+      megakernel_{{pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 0}, {RL_SPEC_COUNTS_STEPS, 0}}),
+                   pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 0}, {RL_SPEC_COUNTS_STEPS, 1}})},
+                  {pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 1}, {RL_SPEC_COUNTS_STEPS, 0}}),
+                   pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 1}, {RL_SPEC_COUNTS_STEPS, 1}})}},
       shadeLoop_(pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 1}, {RL_SPEC_LOOPS_BOUNCES, 1}})),
       timer_(ctx) {
   checkSupported(settings_);

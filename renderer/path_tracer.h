@@ -127,6 +127,9 @@ class PathTracer {
   };
   BouncePlan planBounce(uint32_t bounce, bool fusesGather) const;
   bool loopsFrom(uint32_t bounce, bool fusesGather) const;
+  // Whether the traversal of bounce `bounce` (-1: the megakernel's) counts its steps: the frame's warp
+  // statistics or a heatmap read them.
+  bool countsSteps(int bounce) const;
   void buildBounceSteps(uint32_t bounce, gpu::PathStagePush& push, bool& fusesGather);
   void buildTraceStep(uint32_t bounce, const gpu::PathStagePush& push, bool gathers);
   void buildSortSteps(uint32_t bounce, bool keysInShade, gpu::PathStagePush& push, bool& fusesGather);
@@ -150,10 +153,10 @@ class PathTracer {
   std::unique_ptr<RtTracer> rt_;  // acceleration structures and rt pipelines, made when the rt tracer is first used
   std::unique_ptr<DetailStats> details_;
   ComputePipeline generate_, accumulate_, tonemap_;  // every frame records them
-  // The variants the settings pick, each built on first use: trace.comp by [countSimt][fusesGather],
+  // The variants the settings pick, each built on first use: trace.comp by [countSimt][fusesGather][countsSteps],
   // shade.comp by [compact][fusesTraceShade] (Settings::compaction, Settings::traceShade), megakernel.comp by
-  // [countSimt].
-  LazyPipeline trace_[2][2], shade_[2][2], megakernel_[2];
+  // [countSimt][countsSteps]. Steps are counted on the frames that read them (countsSteps).
+  LazyPipeline trace_[2][2][2], shade_[2][2], megakernel_[2][2];
   LazyPipeline shadeLoop_;  // shade.comp's bounce loop (Settings::loopsBounces)
   GpuTimer timer_;
   SortPolicyModel sortPolicy_;

@@ -6,11 +6,18 @@
 #ifndef RAYLAB_BVH_TRAVERSE_GLSL
 #define RAYLAB_BVH_TRAVERSE_GLSL
 
+#include "spec_ids.h"
+
 // A stage may define RL_TRAVERSAL_STEP() before including this file to observe every loop iteration
 // (the trace stage's SIMT counting); by default it does nothing.
 #ifndef RL_TRAVERSAL_STEP
 #define RL_TRAVERSAL_STEP()
 #endif
+
+// Counting steps costs the trace 1-3.7% of its rays per second on the H200 (docs/results/h200-trace-tuning), so
+// the trace and the megakernel count them only on frames that read them (the warp statistics of detailed
+// frames, a heatmap): the host sets this to false elsewhere. `steps` is then 0.
+layout(constant_id = RL_SPEC_COUNTS_STEPS) const bool kCountsSteps = true;
 
 struct HitRecord {
   float t;        // negative: no hit
@@ -128,7 +135,7 @@ HitRecord traverseBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool an
   uint sp = 0u;
   uint node = 0u;
   while (true) {
-    hit.steps++;
+    if (kCountsSteps) hit.steps++;
     RL_TRAVERSAL_STEP();
     if (isLeafWord(node)) {
       if (intersectLeafWord(tris, node, origin, dir, hit, tMax, anyHit)) return hit;

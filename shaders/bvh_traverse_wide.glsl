@@ -59,7 +59,7 @@ HitRecord traverseBvhWide(GpuScene scene, vec3 origin, vec3 dir, float tMax, boo
     uint interiorBelow = (nodeGroup.y >> 8) & ((1u << slot) - 1u);
     uint nodeIndex = nodeGroup.x + bitCount(interiorBelow);
 
-    hit.steps++;
+    if (kCountsSteps) hit.steps++;
     RL_TRAVERSAL_STEP();
     // The node in five 16-byte loads: origin + exponents/interior mask, bases + meta, then the 12 words of planes.
     uint base = nodeIndex * 5u;

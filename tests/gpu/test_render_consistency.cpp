@@ -36,6 +36,29 @@ TEST_F(RenderConsistency, SameSeedGivesTheSameImageBitForBit) {
   EXPECT_NE(0, std::memcmp(a.data(), c.data(), a.size() * sizeof(glm::vec3))) << "the seed must matter";
 }
 
+// The trace and the megakernel count traversal steps only on frames that read them (detailed statistics, a
+// heatmap): counting changes no pixel, and a detailed frame still reports the steps.
+TEST_F(RenderConsistency, StepsAreCountedOnlyWhereReadAndChangeNoPixel) {
+  Scene scene = makeTemple();
+  const Viewpoint& view = *scene.findViewpoint("hall");
+  for (Kernel kernel : {Kernel::Wavefront, Kernel::Megakernel}) {
+    Settings s = small("temple");
+    s.kernel = kernel;
+    s.compaction = Compaction::None;
+    const std::string what = toString(kernel);
+    PathTracer plain(ctx(), scene, s, view), detailed(ctx(), scene, s, view);
+    detailed.setDetailedStats(true);
+    FrameStats counted;
+    for (uint32_t f = 0; f < s.frames; ++f) {
+      plain.renderFrame();
+      counted = detailed.renderFrame();
+    }
+    expectSameImage(plain.readRadiance(), detailed.readRadiance(), what + ": counting steps");
+    ASSERT_FALSE(counted.bounces.empty()) << what;
+    EXPECT_GT(counted.bounces[0].meanTraversalSteps, 1.0) << what << ": a detailed frame counts its steps";
+  }
+}
+
 // Statistical agreement: the two kernels run the same estimator with the same random streams, so their
 // images must differ by no more than two independent renders of one kernel do (relative MSE between
 // seeds), and their means must agree within four standard errors.
