@@ -20,32 +20,37 @@ int stageCount(const FrameStats& s, const std::string& stage) {
 }
 
 // Unsorted with and without compaction, and sorted: a strategy with and one without a length cache (which
-// learns from the sorted rays' hits, so those bounces stay split), each reorder and keys in shade, under the
-// always and the auto policy, over two frames.
-TEST_F(TraceShadeRender, FusedRendersTheSplitImage) {
+// learns from the sorted rays' hits, so those bounces stay split), each reorder and keys in shade, under each
+// of `policies`, over two frames: `traceShade` renders the split image bit for bit.
+void expectTheSplitImage(const VulkanContext& ctx, TraceShade traceShade, std::initializer_list<SortPolicy> policies) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("openings");
   Settings base = smallFrame(33, 17, 5);
   base.frames = 2;
-  const std::vector<glm::vec3> split = renderRadiance(ctx(), scene, base, view);
+  const std::vector<glm::vec3> split = renderRadiance(ctx, scene, base, view);
   ASSERT_GT(moments(split).mean, 0.0);
+  const std::string how = toString(traceShade);
   for (Compaction compaction : {Compaction::None, Compaction::Shade}) {
     Settings s = base;
     s.compaction = compaction;
-    s.traceShade = raylab::TraceShade::Fused;
-    expectSameImage(renderRadiance(ctx(), scene, s, view), split, "unsorted, compaction " + toString(compaction));
+    s.traceShade = traceShade;
+    expectSameImage(renderRadiance(ctx, scene, s, view), split, "unsorted " + how + ", compaction " + toString(compaction));
   }
   for (KeyStrategy strategy : {KeyStrategy::Fixed, KeyStrategy::Average})
     for (Fusion fusion : {Fusion::None, Fusion::Gather, Fusion::Both})
-      for (SortPolicy policy : {SortPolicy::Always, SortPolicy::Auto}) {
+      for (SortPolicy policy : policies) {
         Settings s = base;
         s.strategy = strategy;
         s.fusion = fusion;
         s.sortPolicy = policy;
-        s.traceShade = raylab::TraceShade::Fused;
-        expectSameImage(renderRadiance(ctx(), scene, s, view), split,
-                        toString(strategy) + " fused " + toString(fusion) + " " + toString(policy));
+        s.traceShade = traceShade;
+        expectSameImage(renderRadiance(ctx, scene, s, view), split,
+                        toString(strategy) + " " + how + " " + toString(fusion) + " " + toString(policy));
       }
+}
+
+TEST_F(TraceShadeRender, FusedRendersTheSplitImage) {
+  expectTheSplitImage(ctx(), raylab::TraceShade::Fused, {SortPolicy::Always, SortPolicy::Auto});
 }
 
 // The same rays per bounce (the fused kernel counts what the trace counted); every bounce of an unsorted frame
@@ -73,33 +78,10 @@ TEST_F(TraceShadeRender, CountsTheSameRaysAndSplitsOnlyWhereNeeded) {
   EXPECT_EQ(stageCount(mixed, "shade"), 1);
 }
 
-// Settings::traceShade loop: the bounces after the frame's last sort as one dispatch (shade.comp's bounce loop).
-// The split image bit for bit: unsorted with and without compaction, and sorted under always and never, with
-// and without a length cache, each reorder and keys in shade, over two frames.
+// Settings::traceShade loop: the bounces after the frame's last sort as one dispatch (shade.comp's bounce loop),
+// under always and never (auto refuses it).
 TEST_F(TraceShadeRender, LoopRendersTheSplitImage) {
-  Scene scene = makeTemple();
-  const Viewpoint& view = *scene.findViewpoint("openings");
-  Settings base = smallFrame(33, 17, 5);
-  base.frames = 2;
-  const std::vector<glm::vec3> split = renderRadiance(ctx(), scene, base, view);
-  ASSERT_GT(moments(split).mean, 0.0);
-  for (Compaction compaction : {Compaction::None, Compaction::Shade}) {
-    Settings s = base;
-    s.compaction = compaction;
-    s.traceShade = raylab::TraceShade::Loop;
-    expectSameImage(renderRadiance(ctx(), scene, s, view), split, "unsorted loop, compaction " + toString(compaction));
-  }
-  for (KeyStrategy strategy : {KeyStrategy::Fixed, KeyStrategy::Average})
-    for (Fusion fusion : {Fusion::None, Fusion::Gather, Fusion::Both})
-      for (SortPolicy policy : {SortPolicy::Always, SortPolicy::Never}) {
-        Settings s = base;
-        s.strategy = strategy;
-        s.fusion = fusion;
-        s.sortPolicy = policy;
-        s.traceShade = raylab::TraceShade::Loop;
-        expectSameImage(renderRadiance(ctx(), scene, s, view), split,
-                        toString(strategy) + " loop " + toString(fusion) + " " + toString(policy));
-      }
+  expectTheSplitImage(ctx(), raylab::TraceShade::Loop, {SortPolicy::Always, SortPolicy::Never});
 }
 
 // Where the loop starts: at bounce 0 of an unsorted frame or one whose policy sorts nothing (one dispatch for all
