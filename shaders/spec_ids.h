@@ -13,7 +13,7 @@
 #define RL_SPEC_FUSES_GATHER 5        // bool: trace reads its path through the sort's order (Settings::fusesGather)
 #define RL_SPEC_SUBGROUP_SIZE 6       // the sorts' subgroup width
 #define RL_SPEC_KEYS_PER_THREAD 7     // the radix sorts' keys per invocation
-#define RL_SPEC_COUNTS_STEPS 9        // bool: the traversal counts its loop iterations (HitRecord::steps)
 #define RL_SPEC_LOOPS_BOUNCES 8       // bool: shade traces and shades every bounce left (Settings::loopsBounces)
+#define RL_SPEC_COUNTS_STEPS 9        // bool: the traversal counts its loop iterations (HitRecord::steps)
 
 #endif
