@@ -4,6 +4,7 @@
 // and for the unsorted wavefront and the megakernel they follow from the bounces and stages alone.
 #include <dlfcn.h>
 
+#include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -188,14 +189,17 @@ namespace {
 
 class EmptyDispatchTest : public GpuTest {};
 
-// The empty dispatch's cost is a time a device takes (positive, and far below a millisecond on any device we
-// run), measured from dispatches the counting wrapper sees as ordinary ones.
-TEST_F(EmptyDispatchTest, CostsATimeOfItsOwn) {
+// The empty dispatch's cost is a time the device reports: a finite, non-negative number of microseconds, and
+// none for no dispatches. No bound on its size: how long a dispatch takes is the machine's speed, and on a
+// shared CPU device a descheduled thread makes the longer run no longer than the shorter one (the cost then
+// reads 0) or makes it many milliseconds long (CI failed once on an upper bound of 1 ms).
+TEST_F(EmptyDispatchTest, IsAFiniteTimeOrNone) {
   if (!ctx().info().timestamps) GTEST_SKIP() << "the device has no timestamps";
   const std::optional<double> us = measureEmptyDispatchUs(ctx(), 32, 3);
   ASSERT_TRUE(us.has_value());
-  EXPECT_GT(*us, 0.0);
-  EXPECT_LT(*us, 1000.0);
+  EXPECT_TRUE(std::isfinite(*us));
+  EXPECT_GE(*us, 0.0);
+  EXPECT_FALSE(measureEmptyDispatchUs(ctx(), 0, 3).has_value());
 }
 
 }  // namespace
