@@ -52,7 +52,7 @@ void PathTracer::buildSteps() {
 void PathTracer::buildMegakernelSteps(const gpu::PathStagePush& push) {
   addStep("megakernel", -1, [this, push](VkCommandBuffer cmd) {
     const uint32_t n = buffers_->pathCount;
-    const ComputePipeline& megakernel = megakernel_[settings_.countSimt][countsSteps(-1)].get();
+    const ComputePipeline& megakernel = megakernel_[settings_.countSimt][countsSteps(-1)][traversalOf(settings_.bvh)].get();
     recordStage(cmd, &timer_, "megakernel", [&] {
       if (!usesRt()) {
         megakernel.dispatchThreads(cmd, push, n);

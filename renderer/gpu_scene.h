@@ -14,6 +14,9 @@ namespace raylab {
 
 class VulkanContext;
 
+// The traversal a layout takes (GpuScene::bvhLayout, RL_SPEC_BVH_LAYOUT): both binary trees take the binary one.
+inline uint32_t traversalOf(BvhLayout layout) { return layout == BvhLayout::Wide ? RL_BVH_WIDE : RL_BVH_BINARY; }
+
 class GpuSceneData {
  public:
   // `collapse`: how the wide BVH is made (Settings::wideCollapse), which also decides the BVH order of the
@@ -23,7 +26,7 @@ class GpuSceneData {
   // The block the shaders read, walking the tree `layout` (Settings::bvh: a frame's choice, not the scene's).
   gpu::GpuScene block(BvhLayout layout) const {
     gpu::GpuScene b = block_;
-    b.bvhLayout = layout == BvhLayout::Wide ? RL_BVH_WIDE : RL_BVH_BINARY;
+    b.bvhLayout = traversalOf(layout);
     const BinaryTree& tree = layout == BvhLayout::Sbvh ? split_ : binary_;
     b.nodes = tree.nodes;
     b.leafTriangles = tree.leafTriangles;

@@ -47,6 +47,12 @@ LazyPipeline traceStage(const VulkanContext& ctx, int countSimt, int fusesGather
                    {{RL_SPEC_COUNT_SIMT, countSimt}, {RL_SPEC_FUSES_GATHER, fusesGather}, {RL_SPEC_COUNTS_STEPS, countsSteps}},
                    fusesGather ? WritesSizes::Yes : WritesSizes::No);
 }
+// megakernel.comp's variant: SIMT counting, step counting, and the traversal it holds (RL_BVH_BINARY or
+// RL_BVH_WIDE: traversalOf(Settings::bvh), fixed so that its code holds one traversal; bvh_traverse.glsl says why).
+LazyPipeline megakernelStage(const VulkanContext& ctx, uint32_t countSimt, uint32_t countsSteps, uint32_t traversal) {
+  return pathStage(ctx, "megakernel",
+                   {{RL_SPEC_COUNT_SIMT, countSimt}, {RL_SPEC_COUNTS_STEPS, countsSteps}, {RL_SPEC_BVH_LAYOUT, traversal}});
+}
 }  // namespace
 
 PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera)
@@ -73,10 +79,10 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared
                pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 1}})},
               {pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 1}, {RL_SPEC_FUSES_TRACE_SHADE, 0}}, WritesSizes::Yes),
                pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 1}, {RL_SPEC_FUSES_TRACE_SHADE, 1}}, WritesSizes::Yes)}},
-      megakernel_{{pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 0}, {RL_SPEC_COUNTS_STEPS, 0}}),
-                   pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 0}, {RL_SPEC_COUNTS_STEPS, 1}})},
-                  {pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 1}, {RL_SPEC_COUNTS_STEPS, 0}}),
-                   pathStage(ctx, "megakernel", {{RL_SPEC_COUNT_SIMT, 1}, {RL_SPEC_COUNTS_STEPS, 1}})}},
+      megakernel_{{{megakernelStage(ctx, 0, 0, 0), megakernelStage(ctx, 0, 0, 1)},
+                   {megakernelStage(ctx, 0, 1, 0), megakernelStage(ctx, 0, 1, 1)}},
+                  {{megakernelStage(ctx, 1, 0, 0), megakernelStage(ctx, 1, 0, 1)},
+                   {megakernelStage(ctx, 1, 1, 0), megakernelStage(ctx, 1, 1, 1)}}},
       shadeLoop_(pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 1}, {RL_SPEC_LOOPS_BOUNCES, 1}})),
       timer_(ctx) {
   checkSupported(settings_);

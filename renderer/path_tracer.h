@@ -155,8 +155,8 @@ class PathTracer {
   ComputePipeline generate_, accumulate_, tonemap_;  // every frame records them
   // The variants the settings pick, each built on first use: trace.comp by [countSimt][fusesGather][countsSteps],
   // shade.comp by [compact][fusesTraceShade] (Settings::compaction, Settings::traceShade), megakernel.comp by
-  // [countSimt][countsSteps]. Steps are counted on the frames that read them (countsSteps).
-  LazyPipeline trace_[2][2][2], shade_[2][2], megakernel_[2][2];
+  // [countSimt][countsSteps][traversalOf(Settings::bvh)]. Steps are counted on the frames that read them (countsSteps).
+  LazyPipeline trace_[2][2][2], shade_[2][2], megakernel_[2][2][2];
   LazyPipeline shadeLoop_;  // shade.comp's bounce loop (Settings::loopsBounces)
   GpuTimer timer_;
   SortPolicyModel sortPolicy_;

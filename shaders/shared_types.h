@@ -129,6 +129,8 @@ struct BvhWideNode {
 // at the chosen one's.
 #define RL_BVH_BINARY 0u
 #define RL_BVH_WIDE 1u
+// RL_SPEC_BVH_LAYOUT's default: the shader reads GpuScene::bvhLayout at run time and holds both traversals.
+#define RL_BVH_FROM_SCENE 0xFFFFFFFFu
 
 // A leaf entry of a binary tree: its triangle as the traversal tests it (v0 and two edges, GpuTriangle's floats)
 // and the triangle's BVH-order index, which is what a hit reports. With spatial splits a triangle has an entry

@@ -15,5 +15,6 @@
 #define RL_SPEC_KEYS_PER_THREAD 7     // the radix sorts' keys per invocation
 #define RL_SPEC_LOOPS_BOUNCES 8       // bool: shade traces and shades every bounce left (Settings::loopsBounces)
 #define RL_SPEC_COUNTS_STEPS 9        // bool: the traversal counts its loop iterations (HitRecord::steps)
+#define RL_SPEC_BVH_LAYOUT 10         // RL_BVH_*, or RL_BVH_FROM_SCENE: the tree traceSceneBvh walks
 
 #endif
