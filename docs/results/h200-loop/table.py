@@ -11,8 +11,8 @@ for x in rows:
     case = (x['scene'].split('/')[-1], x['view'], f"{x['width']}x{x['height']}")
     cells[case + (x['kernel'], x['strategy'], x['trace_shade'])].append(float(x['frame_ms_median']))
 cases = sorted({k[:3] for k in cells}, key=lambda k: (k[0], k[1], int(k[2].split('x')[0])))
-shades = ('split', 'fused', 'loop')
-print('| scene | view | size | megakernel | unsorted split / fused / loop | two-point split / fused / loop '
+shades = tuple(t for t in ('split', 'fused', 'loop') if any(k[5] == t for k in cells))  # those the bench ran
+print(f"| scene | view | size | megakernel | unsorted {' / '.join(shades)} | two-point {' / '.join(shades)} "
       '| best unsorted / megakernel | best wavefront vs megakernel | best sorted vs best unsorted |')
 print('|---|---|---|---|---|---|---|---|---|')
 for c in cases:
