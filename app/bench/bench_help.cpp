@@ -64,7 +64,7 @@ std::string benchHelp() {
          "  --shard i/K               run only the cells n (0-based, in plan order) with n mod K = i, 0 <= i < K:\n"
          "                            one of K disjoint parts of the sweep, for K GPUs or hosts\n"
          "  --merge DIR... [--out-dir OUT]  put the K shard folders of one sweep back together (CSV, JSONL,\n"
-         "                            charts); refuses folders of other sweeps or revisions, or a shard missing\n"
+         "                            charts; a camera path's frames and motion summaries); refuses folders of other sweeps or revisions, or a shard missing\n"
          "The megakernel and the unsorted wavefront are always measured, per tracer. The charts (needs\n"
          "matplotlib; without python3 or matplotlib the sweep says so and keeps its CSV) can be drawn again with\n"
          "  python3 app/bench/bench_charts.py DIR\n"

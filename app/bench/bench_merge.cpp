@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "app/bench/bench_charts_run.h"
+#include "app/bench/bench_path_summary.h"
 #include "app/bench/bench_results.h"
 #include "app/bench/bench_resume.h"
 #include "app/bench/bench_rounds.h"
@@ -50,6 +51,7 @@ struct Shard {
   std::string dir;
   SweepRecord record;
   std::vector<nlohmann::json> records;
+  std::vector<nlohmann::json> pathFrames;  // a --camera-path sweep's path_frames.jsonl
 };
 
 // The shards' records in plan order, or UsageError saying why these folders are not one whole sweep.
@@ -126,6 +128,7 @@ int runBenchMerge(const std::vector<std::string>& args) {
       Shard s{dir, readSweepRecord(dir), {}};
       try {
         s.records = readBenchRecords(dir + "/results.jsonl").records;
+        s.pathFrames = readPathFrames(dir);
       } catch (const std::runtime_error& e) {
         throw UsageError(e.what());
       }
@@ -147,6 +150,18 @@ int runBenchMerge(const std::vector<std::string>& args) {
     for (const nlohmann::json& r : records) jsonl += r.dump() + "\n";
     writeFileChecked(out + "/results.jsonl", jsonl);
     resolution = writeSweepSummaries(out, records);
+    // A camera-path sweep's frames, of the cell rounds kept, and its motion summaries from them.
+    std::set<std::pair<size_t, uint32_t>> kept;
+    for (const nlohmann::json& r : records) kept.insert({r.at("cell").get<size_t>(), roundOf(r)});
+    std::vector<std::vector<nlohmann::json>> shardFrames;
+    for (Shard& s : shards) shardFrames.push_back(std::move(s.pathFrames));
+    const std::vector<nlohmann::json> frames = mergedPathFrames(shardFrames, kept);
+    if (!frames.empty()) {
+      std::string lines;
+      for (const nlohmann::json& f : frames) lines += f.dump() + "\n";
+      writeFileChecked(out + "/" + kPathFramesFile, lines);
+      writePathSummaries(out);
+    }
   } catch (const WriteError& e) {
     std::fprintf(stderr, "raylab bench: --merge: %s\n", e.what());
     return kExitFailure;

@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 
 #include "app/bench/bench_spread.h"
 #include "app/camera_path/path_recovery.h"
@@ -68,6 +69,21 @@ void keepFinishedPathFrames(const std::string& dir, const std::set<std::pair<siz
   for (const nlohmann::json& f : readPathFrames(dir))
     if (finished.count({f.at("cell").get<size_t>(), f.value("round", 0u)})) kept += f.dump() + "\n";
   writeFileChecked(fileOf(dir), kept);
+}
+
+std::vector<nlohmann::json> mergedPathFrames(const std::vector<std::vector<nlohmann::json>>& shards,
+                                             const std::set<std::pair<size_t, uint32_t>>& kept) {
+  std::map<std::tuple<size_t, uint32_t, uint32_t>, const nlohmann::json*> byFrame;  // (cell, round, path frame)
+  for (const std::vector<nlohmann::json>& frames : shards)
+    for (const nlohmann::json& f : frames) {
+      const size_t cell = f.at("cell").get<size_t>();
+      const uint32_t round = f.value("round", 0u);
+      if (kept.count({cell, round})) byFrame[{cell, round, f.at("path_frame").get<uint32_t>()}] = &f;
+    }
+  std::vector<nlohmann::json> out;
+  out.reserve(byFrame.size());
+  for (const auto& [where, f] : byFrame) out.push_back(*f);
+  return out;
 }
 
 nlohmann::json pathSummary(const std::vector<nlohmann::json>& frames) {

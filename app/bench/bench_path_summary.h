@@ -26,6 +26,12 @@ std::vector<nlohmann::json> readPathFrames(const std::string& dir);
 // those of a round a kill cut short, which runs again (writeFileChecked; throws WriteError).
 void keepFinishedPathFrames(const std::string& dir, const std::set<std::pair<size_t, uint32_t>>& finished);
 
+// The path frames of a sweep merged from its shards (`bench --merge`): of every shard's frames (`shards`, each
+// as readPathFrames gives them), those of the cell rounds the merge keeps (`kept`: (cell, round)), ordered by
+// cell, round and path frame; a frame recorded twice (a round resumed within its shard) keeps its last line.
+std::vector<nlohmann::json> mergedPathFrames(const std::vector<std::vector<nlohmann::json>>& shards,
+                                             const std::set<std::pair<size_t, uint32_t>>& kept);
+
 // Per cell, in cell order: "cell", "label", "scene", "strategy", "sort_policy", "camera_path", "frames",
 // "rounds", "frame_ms" (per path frame: the median over the rounds of its work time), "mean_frame_ms",
 // "total_ms" (the median over the rounds of the path's total), "prediction_error" (per path frame, from the

@@ -74,11 +74,12 @@ struct StudyMotion {
 std::vector<std::string> studyMotionPaths(const StudyOptions& options);
 // The motion sweeps of studyMotionPaths, at the largest of the study's sizes up to kMotionMaxPaths paths per
 // frame (the size where a path's frames stay cheap enough to replay whole), the study's first bounce count,
-// the preset's path-frame cap. None with --no-motion, and none with --shard: `raylab bench --merge` does not merge path frames yet, so a
-// sharded study could not rebuild motion.json (kShardedMotionNote says so in the report).
+// the preset's path-frame cap. None with --no-motion, and none with --shard: `raylab bench --merge` merges a
+// path's frames, but `raylab study --merge` does not merge the motion sweeps' folders yet (kShardedMotionNote
+// says so in the report).
 inline constexpr uint64_t kMotionMaxPaths = 2048ull * 1024ull;
 inline constexpr const char* kShardedMotionNote =
-    "a sharded study measures no camera path: `raylab bench --merge` does not merge path frames yet";
+    "a sharded study measures no camera path: `raylab study --merge` does not merge the motion sweeps yet";
 std::vector<StudyMotion> studyMotionPlan(const StudyOptions& options, const StudyPreset& preset,
                                          const std::vector<std::string>& paths);
 

@@ -2,7 +2,8 @@
 # `raylab bench --camera-path` (issue 37): a short path with a cut, replayed by every cell; one
 # path_frames.jsonl line per path frame of every cell and round with its figures, the cut where the path
 # file has it, the cells' times over the path, motion.json's recovery recomputed here from the frames, the
-# motion charts; flags that make no sense with a path exit 2 with a one-line message.
+# motion charts; the shards of such a sweep merged with their path frames; flags that make no sense with a
+# path exit 2 with a one-line message.
 set -eu
 raylab="$1"
 src="$2"
@@ -78,6 +79,31 @@ if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
   done
   echo "ok: motion charts"
 fi
+
+# Shards of a camera-path sweep merge into its path frames and motion summaries: every cell round's frames
+# once, in cell, round and frame order, each line as its shard wrote it, and a motion.json row per cell.
+shard_sweep=(--camera-path "$path" --size 16x8 --bounces 2 --strategies two-point --sort-policies always --rounds 1
+             --warmup 0 --no-charts)
+for i in 0 1; do
+  "$raylab" bench "${shard_sweep[@]}" --shard $i/2 --out-dir "$dir/s$i" >"$dir/s$i.txt" 2>&1 || { cat "$dir/s$i.txt"; exit 1; }
+done
+"$raylab" bench --merge "$dir/s1" "$dir/s0" --out-dir "$dir/m" --no-charts >"$dir/m.txt" 2>&1 || { cat "$dir/m.txt"; exit 1; }
+python3 - "$dir" "$path" <<'PY'
+import json, os, sys
+d, path_file = sys.argv[1:3]
+n = json.load(open(path_file))["keyframes"][-1]["frame"] + 1
+lines = lambda f: [json.loads(l) for l in open(os.path.join(d, f, "path_frames.jsonl"))]
+shards = lines("s0") + lines("s1")
+merged = lines("m")
+key = lambda f: (f["cell"], f["round"], f["path_frame"])
+assert [key(f) for f in merged] == sorted(key(f) for f in shards), [key(f) for f in merged]
+cells = sorted({f["cell"] for f in merged})
+assert cells == [0, 1, 2] and len(merged) == 3 * n, (cells, len(merged))  # megakernel, none, two-point
+assert all(f == next(s for s in shards if key(s) == key(f)) for f in merged)
+motion = json.load(open(os.path.join(d, "m", "motion.json")))
+assert [c["cell"] for c in motion["cells"]] == cells, motion
+print("ok: merged shards of a camera-path sweep,", len(merged), "path frames")
+PY
 
 # Refusals: exit 2, one line, naming the problem; no folder made.
 refuse() {

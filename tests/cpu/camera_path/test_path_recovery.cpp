@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "app/bench/bench_path_summary.h"
@@ -171,6 +172,41 @@ TEST(PathSummary, MediansOverRoundsAndRecoveryFromTheDetailedReplay) {
   EXPECT_NE(md.find("| cell1 |"), std::string::npos) << md;
   EXPECT_NE(md.find("no prediction"), std::string::npos) << md;
   EXPECT_NE(md.find("cut@6: " + std::to_string(*want)), std::string::npos) << md;
+}
+
+// bench --merge's path frames: two shards (cells 0 and 2, cell 1), given in any order and each written
+// cell-major as a shard writes them; only the kept cell rounds stay (a shard's round the merge did not keep, as a
+// cut-short one, goes), a frame written twice keeps its last line, and the result is ordered by cell, round and
+// path frame, so that its summary equals the one of the same frames written by an unsharded run.
+TEST(PathSummary, MergedShardsKeepTheKeptRoundsInOrder) {
+  std::vector<nlohmann::json> whole, shardA, shardB;
+  for (size_t cell : {0u, 1u, 2u})
+    for (uint32_t round = 0; round < 2; ++round)
+      for (uint32_t f = 0; f < 4; ++f) {
+        const nlohmann::json x = frame(cell, round, f, 1.0 + cell + 0.1 * f + round, std::nullopt, f == 2, round == 0);
+        whole.push_back(x);
+        (cell == 1 ? shardB : shardA).push_back(x);
+      }
+  // Shard B also holds a third round of cell 1 the merge does not keep, and writes its frame 3 again.
+  shardB.push_back(frame(1, 2, 0, 99.0, std::nullopt, false, false));
+  nlohmann::json again = shardB[7];
+  again["work_ms"] = 7.5;
+  shardB.push_back(again);
+  std::set<std::pair<size_t, uint32_t>> kept;
+  for (size_t cell : {0u, 1u, 2u})
+    for (uint32_t round = 0; round < 2; ++round) kept.insert({cell, round});
+
+  const std::vector<nlohmann::json> merged = mergedPathFrames({shardB, shardA}, kept);
+  ASSERT_EQ(merged.size(), whole.size());
+  for (size_t i = 0; i < merged.size(); ++i) {
+    EXPECT_EQ(merged[i]["cell"], whole[i]["cell"]) << i;
+    EXPECT_EQ(merged[i]["round"], whole[i]["round"]) << i;
+    EXPECT_EQ(merged[i]["path_frame"], whole[i]["path_frame"]) << i;
+  }
+  EXPECT_EQ(merged[15]["work_ms"], 7.5);  // cell 1, round 1, frame 3: its last line
+  EXPECT_EQ(pathSummary(merged)["cells"][0], pathSummary(whole)["cells"][0]);
+  EXPECT_EQ(pathSummary(merged)["cells"][2], pathSummary(whole)["cells"][2]);
+  EXPECT_TRUE(mergedPathFrames({shardA, shardB}, {}).empty());  // nothing kept, nothing merged
 }
 
 }  // namespace
