@@ -140,6 +140,8 @@ nlohmann::json pathSummary(const std::vector<nlohmann::json>& frames) {
                      {"frame_ms", frameMs},
                      {"mean_frame_ms", msCount ? nlohmann::json(msSum / msCount) : nlohmann::json(nullptr)},
                      {"total_ms", spreadOf(totals).median},
+                     // The rounds' path totals: how far apart two cells' totals must be to tell them apart.
+                     {"total_ms_spread", toJson(spreadOf(totals), totals.size() > 1)},
                      {"prediction_error", errors},
                      {"mean_prediction_error", errorCount ? nlohmann::json(errorSum / errorCount) : nlohmann::json(nullptr)},
                      {"detailed_replay", detailedReplay},
@@ -157,7 +159,7 @@ std::string pathSummaryMarkdown(const nlohmann::json& summary) {
   for (const auto& [key, cells] : tables) {
     md += "## " + key.second + " along " + key.first + " (" + std::to_string(cells.front()->at("frames").get<uint32_t>()) +
           " frames)\n\n";
-    md += "| cell | mean frame ms | path total ms | mean prediction error | frames to recover after a cut (within " +
+    md += "| cell | mean frame ms | path total ms (rounds' min-max) | mean prediction error | frames to recover after a cut (within " +
           std::to_string(tolerance) + "% of before; in brackets, of the level it settles at) |\n|---|---:|---:|---:|---|\n";
     for (const nlohmann::json* c : cells) {
       std::string recovery;
@@ -167,9 +169,14 @@ std::string pathSummaryMarkdown(const nlohmann::json& summary) {
                    : !c->at("detailed_replay") ? "not measured (--no-detail)"
                                                : "no prediction";
       const nlohmann::json& mean = c->at("mean_frame_ms");
+      const nlohmann::json spread = c->value("total_ms_spread", nlohmann::json());
+      const std::string range = spread.is_object() && spread.at("min").is_number()
+                                    ? " (" + fixed(spread.at("min").get<double>(), 1) + "-" +
+                                          fixed(spread.at("max").get<double>(), 1) + ")"
+                                    : "";
       const nlohmann::json& error = c->at("mean_prediction_error");
       md += "| " + c->at("label").get<std::string>() + " | " + (mean.is_null() ? "n/a" : fixed(mean.get<double>(), 3)) +
-            " | " + fixed(c->at("total_ms").get<double>(), 1) + " | " +
+            " | " + fixed(c->at("total_ms").get<double>(), 1) + range + " | " +
             (error.is_null() ? "no prediction" : fixed(error.get<double>(), 4)) + " | " +
             recovery + " |\n";
     }

@@ -162,6 +162,11 @@ TEST(PathSummary, MediansOverRoundsAndRecoveryFromTheDetailedReplay) {
   EXPECT_EQ(learned["rounds"], 3);
   EXPECT_DOUBLE_EQ(learned["frame_ms"][0].get<double>(), 2.0);  // the median of 1, 2, 3
   EXPECT_DOUBLE_EQ(learned["total_ms"].get<double>(), 24.0);
+  // The rounds' totals are 12, 24 and 36 ms: their spread, and the markdown's range.
+  EXPECT_DOUBLE_EQ(learned["total_ms_spread"]["min"].get<double>(), 12.0);
+  EXPECT_DOUBLE_EQ(learned["total_ms_spread"]["max"].get<double>(), 36.0);
+  EXPECT_DOUBLE_EQ(learned["total_ms_spread"]["median"].get<double>(), 24.0);
+  EXPECT_TRUE(pathSummary({frames.front()})["cells"][0]["total_ms_spread"]["min"].is_null());  // one round
   EXPECT_EQ(learned["cuts"], nlohmann::json::array({6}));
   ASSERT_EQ(learned["recovery"].size(), 1u);
   const std::optional<uint32_t> want = expectedFrames(d, 6, 0.1, kRecoveryTolerance);
@@ -170,6 +175,7 @@ TEST(PathSummary, MediansOverRoundsAndRecoveryFromTheDetailedReplay) {
   EXPECT_TRUE(s["cells"][1]["mean_prediction_error"].is_null());
   const std::string md = pathSummaryMarkdown(s);
   EXPECT_NE(md.find("| cell1 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 24.0 (12.0-36.0) |"), std::string::npos) << md;
   EXPECT_NE(md.find("no prediction"), std::string::npos) << md;
   EXPECT_NE(md.find("cut@6: " + std::to_string(*want)), std::string::npos) << md;
 }
