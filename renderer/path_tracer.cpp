@@ -42,7 +42,7 @@ LazyPipeline pathStage(const VulkanContext& ctx, const char* shader, SpecConstan
   return LazyPipeline(ctx, shader, sizeof(gpu::PathStagePush), RL_PATH_GROUP_SIZE, std::move(variant), writesSizes);
 }
 // trace.comp's variant: SIMT counting, the fused gather (which writes the next dispatch's size), step counting.
-LazyPipeline traceStage(const VulkanContext& ctx, int countSimt, int fusesGather, int countsSteps) {
+LazyPipeline traceStage(const VulkanContext& ctx, uint32_t countSimt, uint32_t fusesGather, uint32_t countsSteps) {
   return pathStage(ctx, "trace",
                    {{RL_SPEC_COUNT_SIMT, countSimt}, {RL_SPEC_FUSES_GATHER, fusesGather}, {RL_SPEC_COUNTS_STEPS, countsSteps}},
                    fusesGather ? WritesSizes::Yes : WritesSizes::No);
