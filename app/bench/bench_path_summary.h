@@ -35,8 +35,8 @@ std::vector<nlohmann::json> mergedPathFrames(const std::vector<std::vector<nlohm
 // Per cell, in cell order: "cell", "label", "scene", "strategy", "sort_policy", "camera_path", "frames",
 // "rounds", "frame_ms" (per path frame: the median over the rounds of its work time), "mean_frame_ms",
 // "total_ms" (the median over the rounds of the path's total), "total_ms_spread" (those totals' spread,
-// app/bench/bench_spread.h's JSON: min, max and quartiles null for one round), "prediction_error" (per path frame, from the
-// detailed replay; null where not measured), "mean_prediction_error" (null: none measured), "cuts" (the
+// app/bench/bench_spread.h's JSON: min, max and quartiles null for one round), "prediction_error" (per path
+// frame, from the detailed replay; null where not measured), "mean_prediction_error" (null: none measured), "cuts" (the
 // cut frames) and "recovery" (one per cut, app/camera_path/path_recovery.h; empty without a detailed replay).
 nlohmann::json pathSummary(const std::vector<nlohmann::json>& frames);
 // The summary as markdown: one table per camera path and scene, a row per cell.

@@ -53,8 +53,6 @@ TEST_F(TraceShadeRender, FusedRendersTheSplitImage) {
   expectTheSplitImage(ctx(), raylab::TraceShade::Fused, {SortPolicy::Always, SortPolicy::Auto});
 }
 
-// The same rays per bounce (the fused kernel counts what the trace counted); every bounce of an unsorted frame
-// is one dispatch, and a heatmap of bounce 1 keeps that bounce split.
 // One frame of `s` (split) and of `s` with `traceShade`: the same rays per bounce, every bounce some. Returns the
 // second frame's statistics.
 FrameStats sameRaysAsSplit(const VulkanContext& ctx, const Scene& scene, const Viewpoint& view, Settings s,
@@ -72,6 +70,8 @@ FrameStats sameRaysAsSplit(const VulkanContext& ctx, const Scene& scene, const V
   return got;
 }
 
+// The same rays per bounce (the fused kernel counts what the trace counted); every bounce of an unsorted frame
+// is one dispatch, and a heatmap of bounce 1 keeps that bounce split.
 TEST_F(TraceShadeRender, CountsTheSameRaysAndSplitsOnlyWhereNeeded) {
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");

@@ -43,7 +43,7 @@ n=0 i=0
 for st in $strategies; do
   j=0
   for h in $heatmaps; do
-    ks=${kernel_sorts[(i + j) % 4]}
+    ks=${kernel_sorts[(i + j) % ${#kernel_sorts[@]}]}
     echo "$n ${ks%%:*} ${ks##*:} $st $h"; n=$((n + 1)) j=$((j + 1))
   done
   i=$((i + 1))
