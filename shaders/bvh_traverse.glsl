@@ -37,23 +37,22 @@ float intersectBox(vec3 bmin, vec3 bmax, vec3 origin, vec3 invDir, float tMax) {
   return enter <= leave ? enter : 1e30;
 }
 
-// Moeller-Trumbore on a triangle's first vertex and two edges; updates hit when nearer.
-// Testing u, v and t against |det| before dividing (only a hit divides) did not pay on the H200: 0.5-2% slower
-// rays, 1.0-1.3% longer frames (docs/results/h200-trace-tuning).
+// Moeller-Trumbore on a triangle's first vertex and two edges; updates hit when nearer. Without early exits:
+// u, v and t are all computed, then one test, which a lane of a diverged warp passes through once. A ray
+// parallel to the plane (det 0) divides by zero; the NaNs or infinities that follow fail the test. Against
+// exits after det, u and v, the Sponza trace on the H200 gained 2% on camera and bounce rays with the megakernel
+// 2.3% shorter (docs/results/h200-lean-steps). Testing u, v and t against |det| before dividing (only a hit
+// divides) did not pay: 0.5-2% slower rays, 1.0-1.3% longer frames (docs/results/h200-trace-tuning).
 void intersectTriangleEdges(vec3 v0, vec3 e1, vec3 e2, uint index, vec3 origin, vec3 dir, inout HitRecord hit,
                             inout float tMax) {
-  vec3 p = cross(dir, e2);
-  float det = dot(e1, p);
-  if (abs(det) < 1e-12) return;
-  float inv = 1.0 / det;
-  vec3 s = origin - v0;
-  float u = dot(s, p) * inv;
-  if (u < 0.0 || u > 1.0) return;
-  vec3 q = cross(s, e1);
-  float v = dot(dir, q) * inv;
-  if (v < 0.0 || u + v > 1.0) return;
-  float t = dot(e2, q) * inv;
-  if (t > 0.0 && t < tMax) {
+  const vec3 p = cross(dir, e2);
+  const float inv = 1.0 / dot(e1, p);
+  const vec3 s = origin - v0;
+  const float u = dot(s, p) * inv;
+  const vec3 q = cross(s, e1);
+  const float v = dot(dir, q) * inv;
+  const float t = dot(e2, q) * inv;
+  if (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > 0.0 && t < tMax) {
     tMax = t;
     hit.t = t;
     hit.triangle = index;
@@ -106,10 +105,8 @@ bool intersectLeaf(TriangleQuads entries, uint first, uint count, vec3 origin, v
   return anyHit && hit.t > 0.0;
 }
 
-// A leaf child travels through the traversal (the next node, the stack) as one word: RL_LEAF_TAG, its first
-// leaf entry above RL_LEAF_COUNT_BITS bits of its count - 1 (pairNodes refuses trees whose leaves do not fit).
-// Interior children are pair-node indices, below RL_LEAF_TAG.
-uint leafWord(uint first, uint count) { return RL_LEAF_TAG | (first << RL_LEAF_COUNT_BITS) | (count - 1u); }
+// A child travels through the traversal (the next node, the stack) as the word its parent stores: a leaf's
+// RL_LEAF_WORD, an interior child's pair-node index below RL_LEAF_TAG.
 bool isLeafWord(uint word) { return word >= RL_LEAF_TAG; }
 
 // One leaf (its word) against the ray; true when anyHit may stop.
@@ -146,10 +143,11 @@ HitRecord traverseBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool an
     const uvec4 children = floatBitsToUint(nodes.v[4u * node + 3u]);
     const vec2 d = intersectPair(nodes.v[4u * node], nodes.v[4u * node + 1u], nodes.v[4u * node + 2u], invDir,
                                  originInv, tMax);
-    const bool hit0 = d.x < 1e30 && children.x != RL_BVH_NO_CHILD;
-    const bool hit1 = d.y < 1e30 && children.y != RL_BVH_NO_CHILD;
-    const uint child0 = children.z > 0u ? leafWord(children.x, children.z) : children.x;
-    const uint child1 = children.w > 0u ? leafWord(children.y, children.w) : children.y;
+    // The children's words as stored (BvhPairNode::child): a missing child's box is never entered.
+    const bool hit0 = d.x < 1e30;
+    const bool hit1 = d.y < 1e30;
+    const uint child0 = children.x;
+    const uint child1 = children.y;
     if (hit0 && hit1) {
       const bool firstNearer = d.x <= d.y;
       // The bound check stays although the host keeps every tree within RL_BVH_STACK. Without it camera rays

@@ -1,5 +1,7 @@
 #include "renderer/bvh/bvh_pairs.h"
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -19,9 +21,16 @@ void setChild(gpu::BvhPairNode& pair, int slot, const gpu::BvhNode& child, uint3
   x[2 * slot] = child.boundsMin.x, x[2 * slot + 1] = child.boundsMax.x;
   y[2 * slot] = child.boundsMin.y, y[2 * slot + 1] = child.boundsMax.y;
   z[2 * slot] = child.boundsMin.z, z[2 * slot + 1] = child.boundsMax.z;
-  const bool leaf = child.triCount > 0;
-  pair.child[slot] = leaf ? child.leftOrFirst : pairIndex;
-  pair.count[slot] = leaf ? child.triCount : 0u;
+  pair.child[slot] = child.triCount > 0 ? RL_LEAF_WORD(child.leftOrFirst, child.triCount) : pairIndex;
+}
+
+// A slot without a child: RL_BVH_NO_CHILD behind a box at +infinity on every axis, which no ray enters. Each
+// slab's two distances are then the same infinity (the traversal's inverse direction is never 0), so the entry is
+// +inf or the exit -inf: the traversal need not check the word.
+void setNoChild(gpu::BvhPairNode& pair, int slot) {
+  const float inf = std::numeric_limits<float>::infinity();
+  for (float* axis : {&pair.xBounds.x, &pair.yBounds.x, &pair.zBounds.x}) axis[2 * slot] = axis[2 * slot + 1] = inf;
+  pair.child[slot] = RL_BVH_NO_CHILD;
 }
 
 }  // namespace
@@ -29,10 +38,13 @@ void setChild(gpu::BvhPairNode& pair, int slot, const gpu::BvhNode& child, uint3
 std::vector<gpu::BvhPairNode> pairNodes(const Bvh& bvh) {
   if (bvh.nodes.empty()) throw std::invalid_argument("pairNodes: a BVH without a root");
   const gpu::BvhNode& root = bvh.nodes[0];
-  if (bvh.nodes.size() == 1 || root.triCount > 0) {
+  const bool noLeaf = std::none_of(bvh.nodes.begin(), bvh.nodes.end(), [](const gpu::BvhNode& n) { return n.triCount > 0; });
+  if (bvh.nodes.size() == 1 || root.triCount > 0 || noLeaf) {
     gpu::BvhPairNode only{};
-    for (int slot = 0; slot < 2; ++slot) setChild(only, slot, root, 0);
-    if (root.triCount == 0) only.child[0] = only.child[1] = RL_BVH_NO_CHILD;
+    for (int slot = 0; slot < 2; ++slot) {
+      if (root.triCount > 0) setChild(only, slot, root, 0);
+      else setNoChild(only, slot);
+    }
     return {only};
   }
   // Interior binary nodes in array order get consecutive pair indices (the root's is 0).

@@ -10,7 +10,8 @@
 namespace raylab {
 
 // A root that is a leaf becomes one pair node with that leaf in both slots (its triangles are then tested
-// twice, which finds the same hit); a tree without triangles, one whose slots hold RL_BVH_NO_CHILD.
+// twice, which finds the same hit); a tree without triangles (buildBvh's empty tree among them), one whose slots
+// hold RL_BVH_NO_CHILD behind boxes no ray enters.
 std::vector<gpu::BvhPairNode> pairNodes(const Bvh& bvh);
 
 }  // namespace raylab

@@ -17,20 +17,18 @@ float cpuIntersectBox(glm::vec3 bmin, glm::vec3 bmax, glm::vec3 origin, glm::vec
   return enter <= leave ? enter : 1e30f;
 }
 
+// shaders/bvh_traverse.glsl's intersectTriangleEdges: no early exit, one test after u, v and t (a ray parallel
+// to the plane divides by zero, and the infinities or NaNs fail the test).
 void cpuIntersectTriangle(const gpu::GpuTriangle& tri, uint32_t index, glm::vec3 origin, glm::vec3 dir, CpuHit& hit,
                           float& tMax) {
   const glm::vec3 p = glm::cross(dir, tri.e2);
-  const float det = glm::dot(tri.e1, p);
-  if (std::abs(det) < 1e-12f) return;
-  const float inv = 1.0f / det;
+  const float inv = 1.0f / glm::dot(tri.e1, p);
   const glm::vec3 s = origin - tri.v0;
   const float u = glm::dot(s, p) * inv;
-  if (u < 0.0f || u > 1.0f) return;
   const glm::vec3 q = glm::cross(s, tri.e1);
   const float v = glm::dot(dir, q) * inv;
-  if (v < 0.0f || u + v > 1.0f) return;
   const float t = glm::dot(tri.e2, q) * inv;
-  if (t > 0.0f && t < tMax) {
+  if (u >= 0.0f && v >= 0.0f && u + v <= 1.0f && t > 0.0f && t < tMax) {
     tMax = t;
     hit.t = t;
     hit.triangle = index;

@@ -20,7 +20,7 @@ static_assert(sizeof(BvhNode) == 32);
 static_assert(sizeof(BvhPairNode) == 64);  // four 16-byte words: the traversal's vector loads
 static_assert(offsetof(BvhPairNode, yBounds) == 16);
 static_assert(offsetof(BvhPairNode, child) == 48);
-static_assert(offsetof(BvhPairNode, count) == 56);
+static_assert(offsetof(BvhPairNode, unused) == 56);
 static_assert(offsetof(BvhNode, leftOrFirst) == 12);
 static_assert(offsetof(BvhNode, triCount) == 28);
 static_assert(sizeof(GpuTriangle) == 48);

@@ -321,15 +321,43 @@ TEST(BvhPairs, LeavesMustFitTheTraversalsLeafWord) {
                {glm::vec3(1, 0, 0), most, glm::vec3(2, 1, 0), 1u}};
   const std::vector<gpu::BvhPairNode> pairs = pairNodes(bvh);
   ASSERT_EQ(pairs.size(), 1u);
-  EXPECT_EQ(pairs[0].child[0], 0u);
-  EXPECT_EQ(pairs[0].count[0], most);
-  EXPECT_EQ(pairs[0].child[1], most);
-  EXPECT_EQ(pairs[0].count[1], 1u);
+  EXPECT_EQ(pairs[0].child[0], RL_LEAF_TAG | (most - 1u));
+  EXPECT_EQ(pairs[0].child[1], RL_LEAF_TAG | (most << RL_LEAF_COUNT_BITS));
   bvh.nodes[1].triCount = most + 1;
   EXPECT_THROW(pairNodes(bvh), std::invalid_argument);
   bvh.nodes[1].triCount = most;
   bvh.nodes[2].leftOrFirst = RL_LEAF_ENTRY_LIMIT;
   EXPECT_THROW(pairNodes(bvh), std::invalid_argument);
+}
+
+// A tree without triangles (buildBvh's empty tree) becomes one pair node whose two slots hold RL_BVH_NO_CHILD
+// behind boxes at +infinity, which the traversal's slab test (shaders/bvh_traverse.glsl, intersectPair, written
+// out here) never enters, whatever the ray: the traversal does not check the word.
+TEST(BvhPairs, AnEmptyTreeHasBoxesNoRayEnters) {
+  const std::vector<gpu::BvhPairNode> pairs = pairNodes(buildBvh({}));
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_EQ(pairs[0].child[0], RL_BVH_NO_CHILD);
+  EXPECT_EQ(pairs[0].child[1], RL_BVH_NO_CHILD);
+  const glm::vec4 bounds[3] = {pairs[0].xBounds, pairs[0].yBounds, pairs[0].zBounds};
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  const glm::vec3 directions[] = {{1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {-1, -1, -1}, {0, 0, 0}};
+  for (int r = 0; r < 200; ++r) {
+    const glm::vec3 origin = glm::vec3(u(rng), u(rng), u(rng)) * 1e6f;
+    const glm::vec3 dir = r < 5 ? directions[r] : glm::vec3(u(rng), u(rng), u(rng));
+    for (int slot = 0; slot < 2; ++slot) {
+      float enter = 0.0f, leave = 1e30f;
+      for (int k = 0; k < 3; ++k) {
+        const float eps = 1e-20f;  // safeInverse's
+        const float inv = 1.0f / (std::abs(dir[k]) > eps ? dir[k] : (dir[k] >= 0.0f ? eps : -eps));
+        const float t0 = bounds[k][2 * slot] * inv - origin[k] * inv;
+        const float t1 = bounds[k][2 * slot + 1] * inv - origin[k] * inv;
+        enter = std::max(enter, std::min(t0, t1));
+        leave = std::min(leave, std::max(t0, t1));
+      }
+      EXPECT_GT(enter, leave) << "ray " << r << ", slot " << slot;
+    }
+  }
 }
 
 }  // namespace
