@@ -331,7 +331,7 @@ TEST(BvhPairs, LeavesMustFitTheTraversalsLeafWord) {
 }
 
 // A tree without triangles (buildBvh's empty tree) becomes one pair node whose two slots hold RL_BVH_NO_CHILD
-// behind boxes at +infinity, which the traversal's slab test (shaders/bvh_traverse.glsl, intersectPair, written
+// behind boxes at +infinity, which the traversal's slab test (shaders/bvh_traverse.glsl, enterPair, written
 // out here) never enters, whatever the ray: the traversal does not check the word.
 TEST(BvhPairs, AnEmptyTreeHasBoxesNoRayEnters) {
   const std::vector<gpu::BvhPairNode> pairs = pairNodes(buildBvh({}));
