@@ -99,7 +99,7 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCol
   // Both binary trees read leaf records: the plain tree's are its own order (entry i, triangle i).
   binary_ = {add(pairNodes(bvh)), add(leafRecords(scene.triangles, bvh.triangleOrder, bvh.triangleOrder))};
   {
-    const Bvh split = buildBvh(scene.triangles, kDefaultMaxLeafSize, 0, BvhSplits::Spatial);
+    const Bvh split = buildBvh(scene.triangles, kSpatialSplitMaxLeafSize, 0, BvhSplits::Spatial);
     splitStats_ = split.stats;
     split_ = {add(pairNodes(split)), add(leafRecords(scene.triangles, split.triangleOrder, bvh.triangleOrder))};
   }

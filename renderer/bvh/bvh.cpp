@@ -291,9 +291,9 @@ const EmbreeBuildNode* runEmbreeBuild(RTCBVH handle, RTCBuildPrimitive* prims, s
   args.minLeafSize = 1;
   args.maxLeafSize = leafLimit;
   // One interior-node visit (two child boxes) costs about one triangle test in our shaders' loop: the
-  // weights the hand-written builder used.
+  // weights the hand-written builder used; the spatial-split tree's in bvh.h.
   args.traversalCost = 1.0f;
-  args.intersectionCost = 1.0f;
+  args.intersectionCost = spatial ? kSpatialSplitIntersectionCost : 1.0f;
   args.bvh = handle;
   args.primitives = prims;
   args.primitiveCount = count;

@@ -45,6 +45,14 @@ struct Bvh {
 // References grow by at most kSpatialSplitBudget of the triangle count.
 enum class BvhSplits { None, Spatial };
 constexpr double kSpatialSplitBudget = 0.5;
+// The spatial-split tree is the default layout's, so its SAH weighs a triangle test 1.5 interior-node visits
+// and its leaves hold at most 4 triangles: over the lean pair-node loop (4ad3790) a node visit costs less than
+// a triangle test. On the H200 against 1.0 and 8: Sponza's bounce rays 1.86 -> 1.92 G rays/s (1.0 and 4: 1.89),
+// the megakernel 2.7% shorter; weights 0.5 lost 9-16% of bounce rays, 2.0 was level with 1.5; leaves of 4 made
+// the clutter room's frames 3-5% shorter (docs/results/h200-lean-steps, run3.sh). The plain tree (the binary
+// layout's, and the wide collapse's source) keeps 1.0 and kDefaultMaxLeafSize.
+constexpr float kSpatialSplitIntersectionCost = 1.5f;
+constexpr uint32_t kSpatialSplitMaxLeafSize = 4;
 
 // Depth stays below the shaders' traversal stack (RL_BVH_STACK); the SAH chooses each leaf's size up to
 // `maxLeafSize` triangles (at most 32, Embree's limit), unless the depth limit forces bigger leaves. No
