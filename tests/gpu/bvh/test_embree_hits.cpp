@@ -236,5 +236,32 @@ TEST_F(EmbreeHits, SponzaRaysAgreeWithEmbree) {
   checkScene(ctx(), loadSceneByName(path), 8192);
 }
 
+// A scene without triangles (the app refuses one, a library caller may not): every layout's traversal ends
+// at once with a miss and nothing occluded. The pair traversal checks no child word, so this rests on the boxes
+// pairNodes gives an empty tree, which no ray enters (BvhPairs.AnEmptyTreeHasBoxesNoRayEnters); had they been
+// entered, the traversal would read leaf records that do not exist, or loop.
+TEST_F(EmbreeHits, AnEmptySceneMissesEveryRay) {
+  Scene empty;
+  empty.materials.push_back(Material{});
+  GpuSceneData data(ctx(), empty, Settings{}.wideCollapse);
+  RayBatch rays;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  for (int i = 0; i < 256; ++i) {
+    const glm::vec3 o = glm::vec3(u(rng), u(rng), u(rng)) * 10.0f;
+    const glm::vec3 d = i < 3 ? glm::vec3(i == 0, i == 1, i == 2) : glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
+    rays.add(i % 4 == 0 ? glm::vec3(0.0f) : o, i % 4 == 1 ? glm::normalize(-o) : d, i % 2 ? 1e30f : 5.0f);
+  }
+  for (BvhLayout layout : allValues<BvhLayout>()) {
+    SCOPED_TRACE(toString(layout));
+    const std::vector<GpuHit> hits = traceOnGpu(ctx(), data, layout, rays);
+    ASSERT_EQ(hits.size(), rays.size());
+    for (size_t i = 0; i < hits.size(); ++i) {
+      EXPECT_LT(hits[i].t, 0.0f) << "ray " << i;
+      EXPECT_FALSE(hits[i].occluded) << "ray " << i;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace raylab::test
