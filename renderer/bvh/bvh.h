@@ -40,6 +40,12 @@ struct Bvh {
   BvhBuildStats stats;
 };
 
+// buildBvh's tree for a scene without triangles: a root with inverted bounds (min above max) over two children
+// alike. A min/max slab test still enters an inverted box, so every reader asks this first.
+inline bool isEmptyTree(const std::vector<gpu::BvhNode>& nodes) {
+  return nodes.empty() || nodes[0].boundsMin.x > nodes[0].boundsMax.x;
+}
+
 // Spatial splits (Stich, Friedrich and Dietrich, HPG 2009: the SBVH): Embree's high-quality build, which may
 // also split a triangle's box at a plane when that lowers the SAH cost more than splitting the list does.
 // References grow by at most kSpatialSplitBudget of the triangle count.

@@ -1,6 +1,5 @@
 #include "renderer/bvh/bvh_pairs.h"
 
-#include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -38,8 +37,7 @@ void setNoChild(gpu::BvhPairNode& pair, int slot) {
 std::vector<gpu::BvhPairNode> pairNodes(const Bvh& bvh) {
   if (bvh.nodes.empty()) throw std::invalid_argument("pairNodes: a BVH without a root");
   const gpu::BvhNode& root = bvh.nodes[0];
-  const bool noLeaf = std::none_of(bvh.nodes.begin(), bvh.nodes.end(), [](const gpu::BvhNode& n) { return n.triCount > 0; });
-  if (bvh.nodes.size() == 1 || root.triCount > 0 || noLeaf) {
+  if (bvh.nodes.size() == 1 || root.triCount > 0 || isEmptyTree(bvh.nodes)) {
     gpu::BvhPairNode only{};
     for (int slot = 0; slot < 2; ++slot) {
       if (root.triCount > 0) setChild(only, slot, root, 0);

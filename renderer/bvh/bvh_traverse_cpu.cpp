@@ -51,6 +51,7 @@ CpuHit traverseBinaryCpu(const std::vector<gpu::BvhNode>& nodes, const std::vect
   const glm::vec3 invDir = cpuSafeInverse(dir);
   uint32_t stack[RL_BVH_STACK];
   uint32_t sp = 0, node = 0;
+  if (isEmptyTree(nodes)) return hit;  // its inverted boxes would be entered, and its nodes point at each other
   if (cpuIntersectBox(nodes[0].boundsMin, nodes[0].boundsMax, origin, invDir, tMax) >= 1e30f) return hit;
   while (true) {
     hit.steps++;

@@ -16,12 +16,10 @@ constexpr float kNever = std::numeric_limits<float>::infinity();
 // Subtrees rooted this deep are solved on the threads, the nodes above them after, on one.
 constexpr uint32_t kParallelDepth = 8;
 
-bool emptyTree(const Bvh& b) { return b.nodes.empty() || b.nodes[0].boundsMin.x > b.nodes[0].boundsMax.x; }
-
 }  // namespace
 
 WideSlotChooser::WideSlotChooser(const Bvh& binary, WideCollapse how, uint32_t threads) : binary_(binary), how_(how) {
-  if (emptyTree(binary)) return;
+  if (isEmptyTree(binary.nodes)) return;
   const size_t n = binary.nodes.size();
   threads = workerThreads(threads, n, 65536);
   // Zeros: triangles_ 0 is "not solved yet"; a node's costs and choices are written before anything reads them.
@@ -145,7 +143,7 @@ std::vector<WideSlotChoice> WideSlotChooser::sahSlotsOf(uint32_t index) const {
 }
 
 double wideSahCost(const BvhWide& wide, const Bvh& binary) {
-  if (wide.nodes.empty() || emptyTree(binary)) return 0.0;
+  if (wide.nodes.empty() || isEmptyTree(binary.nodes)) return 0.0;
   const gpu::BvhNode& rootBox = binary.nodes[0];
   const double rootArea = boxHalfArea(rootBox);
   double sum = 0.0;

@@ -14,6 +14,7 @@
 #include "renderer/bvh/bvh.h"
 #include "renderer/bvh/bvh_pairs.h"
 #include "renderer/bvh/bvh_sah.h"
+#include "renderer/bvh/bvh_traverse_cpu.h"
 #include "tests/scene_checks.h"
 #include "scenes/procedural.h"
 
@@ -165,8 +166,16 @@ TEST(Bvh, ZeroTrianglesGiveATreeNoRayEnters) {
   EXPECT_EQ(bvh.nodes[0].triCount, 0u);
   EXPECT_EQ(bvh.nodes[0].leftOrFirst, 1u);
   EXPECT_GT(bvh.nodes[0].boundsMin.x, bvh.nodes[0].boundsMax.x);
+  EXPECT_TRUE(isEmptyTree(bvh.nodes));
   EXPECT_EQ(bvh.stats.leafCount, 0u);
   EXPECT_EQ(bvhSahCost(bvh), 0.0);
+  // The CPU twin misses at once (its slab test alone would enter the inverted boxes and loop over nodes that
+  // point at each other).
+  for (glm::vec3 dir : {glm::vec3(0, 0, 1), glm::vec3(1, -1, 0.5f)}) {
+    const CpuHit hit = traverseBinaryCpu(bvh.nodes, {}, glm::vec3(0.5f), dir, 1e30f, false);
+    EXPECT_LT(hit.t, 0.0f);
+    EXPECT_EQ(hit.steps, 0u);
+  }
 }
 
 // Zero-area triangles (points, segments, flat slivers) and triangles lying in an axis plane (a flat box)
