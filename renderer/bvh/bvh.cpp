@@ -310,8 +310,8 @@ const EmbreeBuildNode* runEmbreeBuild(RTCBVH handle, RTCBuildPrimitive* prims, s
 
 void emptyTree(Bvh& bvh) {
   // An empty scene still gets a root with inverted bounds (isEmptyTree), with two children so that the root is
-  // an ordinary interior node. A min/max slab test enters an inverted box, so the traversals check isEmptyTree
-  // (the CPU twins) or get boxes no ray enters (pairNodes, the wide collapse's empty root).
+  // an ordinary interior node. A min/max slab test enters an inverted box, so the CPU binary twin checks
+  // isEmptyTree first, and the GPU's trees get boxes no ray enters (pairNodes; the wide collapse's empty root).
   gpu::BvhNode none{glm::vec3(1e30f), 0u, glm::vec3(-1e30f), 0u};
   bvh.nodes.assign(3, none);
   bvh.nodes[0].leftOrFirst = 1;
