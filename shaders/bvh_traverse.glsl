@@ -26,17 +26,6 @@ struct HitRecord {
   uint steps;
 };
 
-// Slab test; returns the entry distance or a huge value when the box is missed or beyond tMax.
-float intersectBox(vec3 bmin, vec3 bmax, vec3 origin, vec3 invDir, float tMax) {
-  vec3 t0 = (bmin - origin) * invDir;
-  vec3 t1 = (bmax - origin) * invDir;
-  vec3 tn = min(t0, t1);
-  vec3 tf = max(t0, t1);
-  float enter = max(max(tn.x, tn.y), max(tn.z, 0.0));
-  float leave = min(min(tf.x, tf.y), min(tf.z, tMax));
-  return enter <= leave ? enter : 1e30;
-}
-
 // Moeller-Trumbore on a triangle's first vertex and two edges; updates hit when nearer. Without early exits:
 // u, v and t are all computed, then one test, which a lane of a diverged warp passes through once. A ray
 // parallel to the plane (det 0) divides by zero; the NaNs or infinities that follow fail the test. Against
@@ -58,10 +47,6 @@ void intersectTriangleEdges(vec3 v0, vec3 e1, vec3 e2, uint index, vec3 origin, 
     hit.triangle = index;
     hit.bary = vec2(u, v);
   }
-}
-
-void intersectTriangle(GpuTriangle tri, uint index, vec3 origin, vec3 dir, inout HitRecord hit, inout float tMax) {
-  intersectTriangleEdges(tri.v0, tri.e1, tri.e2, index, origin, dir, hit, tMax);
 }
 
 // What a traversal starts from (both layouts): no hit yet, no step taken.

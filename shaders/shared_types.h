@@ -95,8 +95,8 @@ struct BvhPairNode {
 #define RL_BVH_NO_CHILD 0xFFFFFFFFu
 // A leaf child's word: RL_LEAF_TAG, then its first leaf entry, then its count - 1 in the low RL_LEAF_COUNT_BITS
 // bits. Stored ready in the node: against building it in the traversal's loop, the H200 traced 9-13% more
-// camera rays and 3-6% more bounce rays a second (docs/results/h200-lean-steps). So a tree's leaf entries stay below RL_LEAF_ENTRY_LIMIT and its
-// leaves at most 1 << RL_LEAF_COUNT_BITS entries (pairNodes checks both).
+// camera rays and 3-6% more bounce rays a second (docs/results/h200-lean-steps). So a tree's leaf entries stay
+// below RL_LEAF_ENTRY_LIMIT and its leaves at most 1 << RL_LEAF_COUNT_BITS entries (pairNodes checks both).
 #define RL_LEAF_TAG 0x80000000u
 #define RL_LEAF_COUNT_BITS 5u
 #define RL_LEAF_ENTRY_LIMIT (1u << (31u - RL_LEAF_COUNT_BITS))
