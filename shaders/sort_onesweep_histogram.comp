@@ -32,15 +32,17 @@ void main() {
   for (uint i = t; i < bins; i += gl_WorkGroupSize.x) sHist[i] = 0;
   barrier();
   uint chunk = gl_WorkGroupSize.x * KPT;
+  // Only the pairs the passes sort (pc.count, or the device-side bound below it).
+  uint n = sortLimitedCount(pc.count, pc.hasCountLimit, pc.countLimit);
   // Grid-stride over chunks, so any count fits the device's group-count limit.
-  for (uint begin = gl_WorkGroupID.x * chunk; begin < pc.count; begin += gl_NumWorkGroups.x * chunk) {
+  for (uint begin = gl_WorkGroupID.x * chunk; begin < n; begin += gl_NumWorkGroups.x * chunk) {
     uint keys[KPT];
     for (uint k = 0; k < KPT; ++k) {
       uint i = begin + k * gl_WorkGroupSize.x + t;
-      keys[k] = i < pc.count ? sortEffectiveKey(pc.keysIn.v[i], pc.keyBits) : 0u;
+      keys[k] = i < n ? sortEffectiveKey(pc.keysIn.v[i], pc.keyBits) >> pc.shift : 0u;
     }
     for (uint k = 0; k < KPT; ++k) {
-      if (begin + k * gl_WorkGroupSize.x + t >= pc.count) continue;
+      if (begin + k * gl_WorkGroupSize.x + t >= n) continue;
       for (uint p = 0; p < pc.passes; ++p) count(p * SORT_RADIX + ((keys[k] >> (p * SORT_RADIX_BITS)) & SORT_RADIX_MASK));
     }
   }

@@ -30,7 +30,9 @@ void main() {
   if (gl_LocalInvocationID.x == 0) sTile = atomicAdd(pc.state.v[SORT_ONESWEEP_COUNTERS + pc.pass], 1u);
   barrier();
   uint tile = sTile;
-  tileRank(tile, pc.count);  // every tile of a OneSweep pass holds pairs: numTiles covers count exactly
+  // Tiles cover pc.count. Past a device-side bound a tile has nothing to place, and only later tiles (past
+  // it too) would read its counts, so it returns without publishing any.
+  if (!tileRank(tile, sortLimitedCount(pc.count, pc.hasCountLimit, pc.countLimit))) return;
 
   uint statusRow = SORT_ONESWEEP_STATUS + pc.pass * pc.numTiles * SORT_RADIX;
   uint totals[DIGITS_PER_THREAD];

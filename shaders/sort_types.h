@@ -114,7 +114,8 @@ struct SortSmallPush {
 #define SORT_STATUS_VALUE 0x3FFFFFFFu
 #define SORT_ONESWEEP_HIST_KPT 16  // keys per invocation of sort_onesweep_histogram
 
-// sort_onesweep_histogram (keysIn, state, count, keyBits, passes) and sort_onesweep_pass (all but passes).
+// sort_onesweep_histogram (keysIn, state, count, shift, keyBits, passes, the count limit) and
+// sort_onesweep_pass (all but passes).
 struct SortOneSweepPush {
   SORT_REF(SortUintBuf) keysIn;
   SORT_REF(SortUintBuf) valuesIn;
@@ -122,11 +123,14 @@ struct SortOneSweepPush {
   SORT_REF(SortUintBuf) valuesOut;
   SORT_REF(SortStateBuf) state;
   uint count;
-  uint shift;
+  uint shift;     // lowest key bit of this pass's digit (the histogram: of pass 0's; pass p's is shift + 8p)
   uint keyBits;
-  uint numTiles;
+  uint numTiles;  // tiles covering `count` (the width of a pass's status rows)
   uint pass;
   uint passes;
+  uint hasCountLimit;  // as SortRadixPush: sort only min(count, countLimit.v[0]) pairs
+  uint unused;
+  SORT_REF(SortUintBuf) countLimit;
 };
 
 // The key the sort compares: the caller guarantees key < 2^keyBits or key == 0xFFFFFFFF (a dead path);

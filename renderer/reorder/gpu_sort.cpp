@@ -52,7 +52,7 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
 
 GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t maxCount, const Tuning& tuning)
     : ctx_(&ctx), algorithm_(algorithm), maxCount_(maxCount) {
-  if (algorithm == SortAlgorithm::Radix) {
+  if (algorithm == SortAlgorithm::Radix || algorithm == SortAlgorithm::OneSweep) {
     const uint32_t subgroup = std::max(1u, ctx.info().subgroupSize);
     const uint32_t kpt = tuning.radixKeysPerThread ? tuning.radixKeysPerThread : kDefaultKeysPerThread;
     if (kpt < 1 || kpt > 32) throw VulkanError("radix sort: keys per thread must be 1..32");
@@ -71,8 +71,8 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
     }
     radixTile_ = group * kpt;
     const uint32_t maxGroups = std::max(1u, ceilDiv(maxCount, radixTile_));
-    oneSweepSerial_ = tuning.oneSweep && tuning.oneSweepSerialTest;
-    oneSweep_ = tuning.oneSweep && (oneSweepSerial_ || oneSweepSupported(ctx));
+    oneSweep_ = algorithm == SortAlgorithm::OneSweep;
+    oneSweepSerial_ = oneSweep_ && !oneSweepSupported(ctx);
     if (oneSweep_) {
       oneSweepHistogram_ =
           ComputePipeline(ctx, "sort_onesweep_histogram", sizeof(gpu::SortOneSweepPush), kOneSweepHistogramGroup);
@@ -116,10 +116,7 @@ bool GpuSorter::oneSweepSupported(const VulkanContext& ctx) {
   return !info.isCpu && (info.vendorId == kVendorNvidia || info.vendorId == kVendorAmd);
 }
 
-uint32_t GpuSorter::radixPasses(uint32_t keyBits) {
-  uint32_t bits = keyBits >= 32 ? 32 : keyBits + 1;
-  return ceilDiv(bits, SORT_RADIX_BITS);
-}
+uint32_t GpuSorter::radixPasses(uint32_t keyBits) { return radixPasses(keyBits, 0).passes; }
 
 void GpuSorter::record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                        uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) {
@@ -128,12 +125,13 @@ void GpuSorter::record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddres
     throw VulkanError("sort of " + std::to_string(count) + " pairs exceeds the sorter's capacity of " +
                       std::to_string(maxCount_));
   if (keyBits < 1 || keyBits > 32) throw VulkanError("sort: keyBits must be 1..32, got " + std::to_string(keyBits));
+  const bool radix = algorithm_ == SortAlgorithm::Radix || algorithm_ == SortAlgorithm::OneSweep;
   if (count > 1) {
-    if (algorithm_ == SortAlgorithm::Radix && count <= smallSortMax_)
+    if (radix && count <= smallSortMax_)
       recordSmall(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits);
-    else if (algorithm_ == SortAlgorithm::Radix && oneSweep_)
-      recordOneSweep(cmd, keys, values, count, keyBits);
-    else if (algorithm_ == SortAlgorithm::Radix)
+    else if (oneSweep_)
+      recordOneSweep(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits);
+    else if (radix)
       recordRadix(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits);
     else if (algorithm_ == SortAlgorithm::Tile)
       recordTiles(cmd, keys, values, count, keyBits, countLimit);
@@ -143,11 +141,15 @@ void GpuSorter::record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddres
   computeBarrier(cmd);
 }
 
+GpuSorter::RadixPasses GpuSorter::radixPasses(uint32_t keyBits, uint32_t ignoredLowBits) {
+  const uint32_t sortedBits = keyBits >= 32 ? 32 : keyBits + 1;
+  const uint32_t lowBit = std::min(ignoredLowBits, sortedBits - 1);
+  return {lowBit, ceilDiv(sortedBits - lowBit, SORT_RADIX_BITS)};
+}
+
 void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                             uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) {
-  const uint32_t sortedBits = keyBits >= 32 ? 32 : keyBits + 1;
-  ignoredLowBits = std::min(ignoredLowBits, sortedBits - 1);
-  const uint32_t passes = ceilDiv(sortedBits - ignoredLowBits, SORT_RADIX_BITS);
+  const auto [lowBit, passes] = radixPasses(keyBits, ignoredLowBits);
   const uint32_t numGroups = ceilDiv(count, radixTile_);
   const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
   // Ping-pong caller -> scratch -> caller ...: an even pass count ends in the caller's buffers, an odd one
@@ -162,7 +164,7 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
     push.valuesOut = toScratch ? scratchValues_.address() : values;
     push.hist = hist_.address();
     push.count = count;
-    push.shift = ignoredLowBits + pass * SORT_RADIX_BITS;
+    push.shift = lowBit + pass * SORT_RADIX_BITS;
     push.keyBits = keyBits;
     push.numGroups = numGroups;
     push.hasCountLimit = countLimit != 0 ? 1 : 0;
@@ -186,8 +188,7 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
 void GpuSorter::recordSmall(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                             uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) const {
   // The bits the radix passes would order: the same clamp as recordRadix's.
-  const uint32_t sortedBits = keyBits >= 32 ? 32 : keyBits + 1;
-  gpu::SortSmallPush push{keys, values, countLimit, count, keyBits, std::min(ignoredLowBits, sortedBits - 1),
+  gpu::SortSmallPush push{keys, values, countLimit, count, keyBits, radixPasses(keyBits, ignoredLowBits).lowBit,
                           countLimit != 0 ? 1u : 0u};
   smallSort_.dispatchGroups(cmd, push, 1);
 }
@@ -202,8 +203,10 @@ void GpuSorter::recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
 }
 
 void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                               uint32_t keyBits) {
-  const uint32_t passes = radixPasses(keyBits);
+                               uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) {
+  const auto [lowBit, passes] = radixPasses(keyBits, ignoredLowBits);
+  // Tiles cover `count`; with a device-side bound, the tiles past it return at once (after taking their
+  // number, so every tile inside the bound still finds its predecessors' counts).
   const uint32_t numTiles = ceilDiv(count, radixTile_);
   const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
   // Zero only what this count uses: histograms, counters and the status words of its tiles.
@@ -217,6 +220,9 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
   push.keyBits = keyBits;
   push.numTiles = numTiles;
   push.passes = passes;
+  push.shift = lowBit;  // the histogram's digits of pass p start at shift + 8p
+  push.hasCountLimit = countLimit != 0 ? 1 : 0;
+  push.countLimit = countLimit;
   const uint32_t histChunk = kOneSweepHistogramGroup * SORT_ONESWEEP_HIST_KPT;
   oneSweepHistogram_.dispatchGroups(cmd, push, std::min(maxGroups, ceilDiv(count, histChunk)));
   VkDeviceAddress srcKeys = keys, srcValues = values;
@@ -227,7 +233,7 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
     push.valuesIn = srcValues;
     push.keysOut = toScratch ? scratchKeys_.address() : keys;
     push.valuesOut = toScratch ? scratchValues_.address() : values;
-    push.shift = pass * SORT_RADIX_BITS;
+    push.shift = lowBit + pass * SORT_RADIX_BITS;
     push.pass = pass;
     // Tiles come from the pass's counter, not the group id, so a split dispatch needs no offset.
     if (oneSweepSerial_) {
@@ -242,7 +248,7 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
     srcKeys = push.keysOut;
     srcValues = push.valuesOut;
   }
-  if (passes % 2 == 1) recordCopyBack(cmd, keys, values, count, 0);
+  if (passes % 2 == 1) recordCopyBack(cmd, keys, values, count, countLimit);
 }
 
 // Each tile of SORT_BITONIC_TILE pairs sorted alone in shared memory: bitonic's first dispatch, no merges.

@@ -9,9 +9,11 @@
 // another (so it runs on CPU devices like lavapipe that give no forward progress between groups). Each pass
 // is three dispatches: per-tile digit histograms, a scan of those per digit, and a stable scatter ranked by
 // subgroup ballots. Only ceil((keyBits + 1) / 8) passes run (4 for the lab's 30-bit Morton keys).
-// OneSweep (optional, Tuning::oneSweep): the same tile ranking, but one dispatch per pass using decoupled
-// look-back (plus one histogram dispatch for all passes). Work groups wait on earlier ones, so it is used
-// only on devices known to give forward progress (NVIDIA and AMD GPUs); elsewhere the portable path runs.
+// OneSweep (SortAlgorithm::OneSweep): the radix sort's order and tile ranking, but one dispatch per pass using
+// decoupled look-back (plus one histogram dispatch for all passes, after a fill of its state). Work groups
+// wait on earlier ones, which only devices known to give forward progress promise (NVIDIA and AMD GPUs);
+// elsewhere (CPU devices) each pass runs one work group per dispatch, a barrier between: the same order
+// from the same shaders, so the invariant tests check them on lavapipe, but slow (oneSweepSerial()).
 // Small counts (radix and OneSweep, at most Tuning::smallSortMax pairs, SORT_SMALL_MAX by default): one
 // dispatch, one work group sorting them all in shared memory (sort_small.comp), stable like the radix passes
 // it replaces, which at such counts cost their launches and barriers, not their bytes (issue 36).
@@ -42,15 +44,11 @@ class GpuSorter {
   struct Tuning {
     uint32_t radixGroupSize = 0;      // power of two, 16..256, a multiple of the subgroup size
     uint32_t radixKeysPerThread = 0;  // 1..32
-    bool oneSweep = false;            // use the OneSweep variant where the device supports it
-    // Tests only: run OneSweep on any device with one work group per dispatch, so no look-back ever waits;
-    // checks its arithmetic where work groups have no forward progress (lavapipe). Slow.
-    bool oneSweepSerialTest = false;
     // Radix counts up to this many pairs take the single-dispatch small sort; 0: never (the passes always run).
     uint32_t smallSortMax = SORT_SMALL_MAX;
   };
 
-  // Whether the OneSweep variant may run on this device (a GPU known to give forward progress).
+  // Whether OneSweep's work groups may run together on this device (a GPU known to give forward progress).
   static bool oneSweepSupported(const VulkanContext& ctx);
 
   GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t maxCount);
@@ -61,12 +59,11 @@ class GpuSorter {
   // barrier at the end so later stages may read the result. Radix: stable. Bitonic: keys sorted, values
   // carried with their keys. count <= maxCount. SortAlgorithm::None records nothing.
   // `countLimit` (optional): the device address of a uint32 bound the device knows and the host does not
-  // (the live-path count after the last sort): the portable radix sort then sorts only the first
-  // min(count, *countLimit) pairs and leaves the rest where they are; its dispatches keep their sizes, and
-  // work groups past the bound return at once. OneSweep and bitonic ignore it and sort all `count` pairs,
-  // which gives the same order for a stable sort when the pairs past the bound are dead keys in index order;
-  // Tile honours it too (whole tiles past it).
-  // `ignoredLowBits` (portable radix only): the lowest bits of the compared key are not ordered (pairs that
+  // (the live-path count after the last sort): the radix sorts (portable, OneSweep, small) then sort only the
+  // first min(count, *countLimit) pairs and leave the rest where they are; their dispatches keep their sizes,
+  // and work groups past the bound return at once. Bitonic ignores it and sorts all `count` pairs, which gives
+  // the same keys when the pairs past the bound are dead; Tile honours it too (whole tiles past it).
+  // `ignoredLowBits` (the radix sorts): the lowest bits of the compared key are not ordered (pairs that
   // differ only there keep their input order), one pass less for each 8 bits: a coarser, cheaper order.
   void record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count, uint32_t keyBits,
               VkDeviceAddress countLimit = 0, uint32_t ignoredLowBits = 0);
@@ -77,10 +74,19 @@ class GpuSorter {
 
   // Radix passes run for `keyBits` (one extra bit for dead keys below 32 bits).
   static uint32_t radixPasses(uint32_t keyBits);
+  // The radix sorts' passes for `keyBits` with `ignoredLowBits` not ordered: the lowest ordered bit (the
+  // ignored bits, clamped below the sorted ones) and the 8-bit passes from it to the top.
+  struct RadixPasses {
+    uint32_t lowBit;
+    uint32_t passes;
+  };
+  static RadixPasses radixPasses(uint32_t keyBits, uint32_t ignoredLowBits);
   // Elements per radix tile (scatter group size times keys per invocation) on this device.
   uint32_t radixTile() const { return radixTile_; }
-  // True when record() runs the OneSweep variant (requested and supported).
+  // True when record() runs OneSweep passes (SortAlgorithm::OneSweep), and when it runs them one work group
+  // per dispatch because the device may not run work groups together (see oneSweepSupported).
   bool usesOneSweep() const { return oneSweep_; }
+  bool oneSweepSerial() const { return oneSweepSerial_; }
   // The most pairs record() sorts with the single-dispatch small sort (0: none; radix only, and where the
   // device's shared memory holds its arrays).
   uint32_t smallSortMax() const { return smallSortMax_; }
@@ -92,7 +98,7 @@ class GpuSorter {
   void recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                       VkDeviceAddress countLimit);
   void recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                      uint32_t keyBits);
+                      uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits);
   void recordBitonic(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                      uint32_t keyBits);
   void recordTiles(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,

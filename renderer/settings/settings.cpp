@@ -10,7 +10,7 @@ namespace {
 
 const std::pair<SortAlgorithm, const char*> kSortNames[] = {
     {SortAlgorithm::None, "none"}, {SortAlgorithm::Bitonic, "bitonic"}, {SortAlgorithm::Radix, "radix"},
-    {SortAlgorithm::Tile, "tile"}};
+    {SortAlgorithm::Tile, "tile"}, {SortAlgorithm::OneSweep, "onesweep"}};
 const std::pair<HeatmapView, const char*> kHeatmapNames[] = {
     {HeatmapView::None, "none"},          {HeatmapView::SortKey, "sort-key"},
     {HeatmapView::CellHit, "cell-hit"},   {HeatmapView::TraversalSteps, "traversal-steps"},

@@ -38,7 +38,11 @@ enum class KeyStrategy {
 // radix sort of two-point keys, but it keeps almost none of the trace gain (hall, 4 bounces, trace of bounces
 // >= 1: 2.12 ms unsorted, 1.49 radix, 1.96 tile), so every frame is slower than unsorted. Kept as a setting
 // for the record; the auto policy declines it.
-enum class SortAlgorithm { None, Bitonic, Radix, Tile };
+// `onesweep` is the radix sort with each pass in one dispatch (decoupled look-back, renderer/reorder/gpu_sort.h):
+// 2 dispatches and 1 barrier a pass fewer. Its work groups wait on earlier ones, so on devices that promise no
+// forward progress between work groups (CPU devices such as lavapipe) it runs one work group per dispatch:
+// the same order, slowly. Issue 36 measures it against `radix`.
+enum class SortAlgorithm { None, Bitonic, Radix, Tile, OneSweep };
 
 // What the display shows instead of the render (per pixel, for one bounce).
 enum class HeatmapView {

@@ -81,8 +81,9 @@ std::vector<SettingRow> sortRows() {
       RAYLAB_FIELD(strategy, "strategy").json("strategy").jsonError("unknown kernel, strategy or sort").csv("strategy")
           .effects(kCache).help(keyStrategyNames().c_str(), "").sample("ema"),
       RAYLAB_FIELD(sort, "sort").json("sort").jsonError("unknown kernel, strategy or sort").csv("sort").effects(kSortCosts)
-          .help("none|bitonic|radix|tile", "sort used when a strategy is set (default {default}); tile sorts\n"
-                "each 2048 paths alone (needs --compaction shade)").sample("bitonic"),
+          .help("none|bitonic|radix|tile|onesweep", "sort used when a strategy is set (default {default});\n"
+                "tile sorts each 2048 paths alone (needs --compaction shade); onesweep:\n"
+                "radix with a dispatch a pass (on CPU devices one work group at a time)").sample("bitonic"),
       RAYLAB_FIELD(sortPolicy, "sort-policy").jsonAbsent("sort_policy", "always").jsonError("unknown sort policy")
           .csv("sort_policy").effects(kSortCosts)
           .help("always|never|auto", "which bounces sort: all, none, or where earlier frames measured\n"

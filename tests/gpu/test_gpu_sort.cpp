@@ -22,7 +22,7 @@ static_assert(sizeof(gpu::SortRadixPush) == 72);
 static_assert(sizeof(gpu::SortScanPush) == 16);
 static_assert(sizeof(gpu::SortBitonicPush) == 56);
 static_assert(sizeof(gpu::SortCopyPush) == 48);
-static_assert(sizeof(gpu::SortOneSweepPush) == 64);
+static_assert(sizeof(gpu::SortOneSweepPush) == 80);
 static_assert(sizeof(gpu::SortSmallPush) == 40);
 
 constexpr uint32_t kDead = 0xFFFFFFFFu;
@@ -87,6 +87,10 @@ std::vector<uint32_t> stableOrder(const std::vector<uint32_t>& keys, uint32_t ke
 // radix sorter as the lab makes it (the small sort up to SORT_SMALL_MAX pairs, its passes above).
 enum class Variant { Radix, OneSweep, Bitonic, Small };
 
+SortAlgorithm algorithmOf(Variant v) {
+  return v == Variant::Bitonic ? SortAlgorithm::Bitonic : v == Variant::OneSweep ? SortAlgorithm::OneSweep : SortAlgorithm::Radix;
+}
+
 std::string variantName(Variant v) {
   return v == Variant::Radix ? "radix" : v == Variant::OneSweep ? "onesweep" : v == Variant::Bitonic ? "bitonic" : "small";
 }
@@ -98,14 +102,11 @@ class GpuSortTest : public test::GpuTest {
     auto& slot = sorters[static_cast<int>(variant)];
     if (!slot) {
       GpuSorter::Tuning tuning;
-      // OneSweep's look-back needs forward progress between work groups; where the device does not promise
-      // it (lavapipe), the serial test mode runs one work group per dispatch so the arithmetic is still checked.
-      tuning.oneSweep = variant == Variant::OneSweep;
-      tuning.oneSweepSerialTest = tuning.oneSweep && !GpuSorter::oneSweepSupported(ctx());
       // The passes are tested at every count, small ones too; Variant::Small keeps the lab's default.
+      // (OneSweep's look-back needs forward progress between work groups; where the device does not promise
+      // it, lavapipe, the sorter runs one work group per dispatch, so the same shaders are checked.)
       if (variant != Variant::Small) tuning.smallSortMax = 0;
-      slot = std::make_unique<GpuSorter>(
-          ctx(), variant == Variant::Bitonic ? SortAlgorithm::Bitonic : SortAlgorithm::Radix, kMaxCount, tuning);
+      slot = std::make_unique<GpuSorter>(ctx(), algorithmOf(variant), kMaxCount, tuning);
       EXPECT_EQ(slot->usesOneSweep(), variant == Variant::OneSweep);
     }
     return *slot;
@@ -119,7 +120,6 @@ class GpuSortTest : public test::GpuTest {
     sortAndCheck(algorithm == SortAlgorithm::Bitonic ? Variant::Bitonic : Variant::Radix, keys, keyBits);
   }
   void sortAndCheck(Variant variant, const std::vector<uint32_t>& keys, uint32_t keyBits) {
-    const SortAlgorithm algorithm = variant == Variant::Bitonic ? SortAlgorithm::Bitonic : SortAlgorithm::Radix;
     const uint32_t n = static_cast<uint32_t>(keys.size());
     std::vector<uint32_t> values(n);
     std::iota(values.begin(), values.end(), 0u);
@@ -136,7 +136,7 @@ class GpuSortTest : public test::GpuTest {
     for (uint32_t i = 0; i < n; ++i) {
       const bool keyOk = gotKeys[i] == keys[order[i]];
       bool valueOk;
-      if (algorithm == SortAlgorithm::Radix) {
+      if (variant != Variant::Bitonic) {  // the radix sorts are stable
         valueOk = gotValues[i] == order[i];
       } else {  // a permutation whose every (key, value) pair was in the input
         valueOk = gotValues[i] < n && !seen[gotValues[i]] && keys[gotValues[i]] == gotKeys[i];
@@ -278,19 +278,21 @@ struct LimitedSort {
   GpuBuffer keyBuf, valueBuf, limitBuf;
 };
 
-// A device-side count limit (the live prefix): the portable radix sort orders only the first
-// min(count, limit) pairs, stably, and leaves every pair past it untouched; odd and even pass counts
+// A device-side count limit (the live prefix): the radix sorts' passes (portable and OneSweep) order only
+// the first min(count, limit) pairs, stably, and leave every pair past it untouched; odd and even pass counts
 // (16 and 12 bits: 3 passes copied back, 2 passes), limits inside a tile, on a tile edge, 0, 1 and past count.
-TEST_F(GpuSortTest, RadixSortsOnlyUpToDeviceCountLimit) {
+class GpuSortPasses : public GpuSortTest, public ::testing::WithParamInterface<Variant> {};
+
+TEST_P(GpuSortPasses, SortOnlyUpToDeviceCountLimit) {
   const uint32_t n = 70001;
-  const uint32_t tile = sorter(Variant::Radix).radixTile();
+  const uint32_t tile = sorter(GetParam()).radixTile();
   for (uint32_t bits : {12u, 16u}) {
     for (uint32_t limit : {0u, 1u, 777u, 2 * tile, 2 * tile + 1, 50000u, n, n + 5}) {
       const std::vector<uint32_t> keys = makeKeys(Dist::Dead12, n, limit + bits);
       LimitedSort in(ctx(), keys, limit);
       std::vector<uint32_t>& values = in.values;
       GpuBuffer &keyBuf = in.keyBuf, &valueBuf = in.valueBuf;
-      in.sortWith(sorter(Variant::Radix), bits);
+      in.sortWith(sorter(GetParam()), bits);
       const uint32_t sorted = std::min(n, limit);
       std::vector<uint32_t> wantKeys = keys, wantValues = values;
       const std::vector<uint32_t> order =
@@ -345,9 +347,10 @@ TEST_F(GpuSortTest, TileSortSortsEachTileAlone) {
   }
 }
 
-// Ignoring the low bits: the radix sort orders pairs by the compared key's bits above `ignored` only
-// (stable: pairs equal there keep their input order), with dead keys still last, in 1 to 3 passes.
-TEST_F(GpuSortTest, RadixIgnoresTheLowBitsItIsTold) {
+// Ignoring the low bits: the radix sorts order pairs by the compared key's bits above `ignored` only
+// (stable: pairs equal there keep their input order), with dead keys still last, in 1 to 3 passes; with a
+// device-side count limit as well (the path sorter passes both).
+TEST_P(GpuSortPasses, IgnoreTheLowBitsTheyAreTold) {
   const uint32_t n = 20011, bits = 23;  // the two-point strategy's width: 24 compared bits
   for (uint32_t ignored : {1u, 8u, 9u, 16u, 23u}) {
     const std::vector<uint32_t> keys = makeKeys(Dist::Dead12, n, ignored);
@@ -356,27 +359,33 @@ TEST_F(GpuSortTest, RadixIgnoresTheLowBitsItIsTold) {
     std::iota(values.begin(), values.end(), 0u);
     GpuBuffer keyBuf = makeBufferFrom(ctx(), masked);
     GpuBuffer valueBuf = makeBufferFrom(ctx(), values);
+    const uint32_t limit = ignored == 9 ? 12345 : n;  // one case with a live prefix shorter than the pairs
+    GpuBuffer limitBuf = makeBufferFrom(ctx(), std::vector<uint32_t>{limit});
     ctx().submitAndWait([&](VkCommandBuffer cmd) {
-      sorter(Variant::Radix).record(cmd, keyBuf.address(), valueBuf.address(), n, bits, 0, ignored);
+      sorter(GetParam()).record(cmd, keyBuf.address(), valueBuf.address(), n, bits, limitBuf.address(), ignored);
     });
     std::vector<uint32_t> order(n);
     std::iota(order.begin(), order.end(), 0u);
-    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    std::stable_sort(order.begin(), order.begin() + limit, [&](uint32_t a, uint32_t b) {
       return (gpu::sortEffectiveKey(masked[a], bits) >> ignored) < (gpu::sortEffectiveKey(masked[b], bits) >> ignored);
     });
     EXPECT_EQ(valueBuf.downloadVector<uint32_t>(n), order) << "ignored " << ignored;
   }
 }
 
-// The lab never runs OneSweep on a CPU device unless forced.
-TEST_F(GpuSortTest, OneSweepOnlyWhereSupported) {
-  GpuSorter::Tuning tuning;
-  tuning.oneSweep = true;
-  GpuSorter s(ctx(), SortAlgorithm::Radix, 1000, tuning);
-  EXPECT_EQ(s.usesOneSweep(), GpuSorter::oneSweepSupported(ctx()));
+INSTANTIATE_TEST_SUITE_P(Sort, GpuSortPasses, ::testing::Values(Variant::Radix, Variant::OneSweep),
+                         [](const auto& info) { return variantName(info.param); });
+
+// OneSweep runs its work groups together only where the device promises forward progress between them; on
+// a CPU device it runs them one a dispatch.
+TEST_F(GpuSortTest, OneSweepRunsSeriallyWhereWorkGroupsMayNotProgress) {
+  GpuSorter s(ctx(), SortAlgorithm::OneSweep, 1000);
+  EXPECT_TRUE(s.usesOneSweep());
+  EXPECT_EQ(s.oneSweepSerial(), !GpuSorter::oneSweepSupported(ctx()));
   if (ctx().info().isCpu) {
-    EXPECT_FALSE(s.usesOneSweep());
+    EXPECT_TRUE(s.oneSweepSerial());
   }
+  EXPECT_FALSE(GpuSorter(ctx(), SortAlgorithm::Radix, 1000).usesOneSweep());
 }
 
 // A sorter is reused frame after frame with varying counts; small sorts after a large one must not see its
@@ -387,9 +396,7 @@ TEST_F(GpuSortTest, ReuseAndTunedShapes) {
   const uint32_t sub = ctx().info().subgroupSize;
   for (uint32_t kpt : {1u, 4u, 16u}) {
     GpuSorter::Tuning tuning{std::max(64u, sub), kpt};
-    tuning.oneSweep = kpt == 4;
-    tuning.oneSweepSerialTest = tuning.oneSweep && !GpuSorter::oneSweepSupported(ctx());
-    GpuSorter tuned(ctx(), SortAlgorithm::Radix, 50000, tuning);
+    GpuSorter tuned(ctx(), kpt == 4 ? SortAlgorithm::OneSweep : SortAlgorithm::Radix, 50000, tuning);
     const std::vector<uint32_t> keys = makeKeys(Dist::Uniform, 50000, kpt);
     std::vector<uint32_t> values(keys.size());
     std::iota(values.begin(), values.end(), 0u);
@@ -463,6 +470,11 @@ TEST_F(GpuSortTest, SmallSortIsOneDispatchUpToItsThreshold) {
   EXPECT_EQ(dispatches(sorter(Variant::Small), SORT_SMALL_MAX), 1u);
   EXPECT_EQ(dispatches(sorter(Variant::Small), SORT_SMALL_MAX + 1), 3 * GpuSorter::radixPasses(30));
   EXPECT_EQ(dispatches(sorter(Variant::Radix), SORT_SMALL_MAX), 3 * GpuSorter::radixPasses(30));
+  // OneSweep: one histogram for all passes, then a dispatch a pass (a dispatch a tile where it runs serially).
+  GpuSorter& oneSweep = sorter(Variant::OneSweep);
+  const uint32_t n = 5 * oneSweep.radixTile() + 1;
+  const uint32_t perPass = oneSweep.oneSweepSerial() ? 6 : 1;
+  EXPECT_EQ(dispatches(oneSweep, n), 1 + perPass * GpuSorter::radixPasses(30));
 }
 
 }  // namespace

@@ -327,9 +327,10 @@ TEST_F(SortInvariantLayouts, EveryStrategySortAndPolicyRendersTheUnsortedImageOf
   }
 }
 
-// The radix sort has two forms: the single-dispatch small sort up to SORT_SMALL_MAX pairs (every frame above is
-// that small) and its passes past it. Both render the unsorted image; each frame's sort stage says which ran
-// (one dispatch per sorted bounce, or the passes' several).
+// The radix sorts have two forms: the single-dispatch small sort up to SORT_SMALL_MAX pairs (every frame above
+// is that small) and their passes past it, three dispatches a pass (radix) or one (OneSweep, after one
+// histogram; a dispatch a tile on lavapipe). All render the unsorted image, with the key's top bits only
+// (Settings::sortBits) too; each frame's sort stage says which ran (one dispatch per sorted bounce, or more).
 class SortInvariantSizes : public GpuTest {};
 
 TEST_F(SortInvariantSizes, SmallSortAndRadixPassesRenderTheUnsortedImage) {
@@ -340,23 +341,29 @@ TEST_F(SortInvariantSizes, SmallSortAndRadixPassesRenderTheUnsortedImage) {
     const bool small = base.width * base.height <= SORT_SMALL_MAX;
     ASSERT_EQ(small, width == 37u) << "the sizes no longer straddle the small sort's threshold";
     const std::vector<glm::vec3> unsorted = renderRadiance(ctx(), scene, base, view);
+    for (SortAlgorithm sort : {SortAlgorithm::Radix, SortAlgorithm::OneSweep})
     for (KeyStrategy strategy : {KeyStrategy::Fixed, KeyStrategy::TwoPoint, KeyStrategy::Average})
+      for (uint32_t sortBits : {0u, 8u})
       for (Fusion fusion : {Fusion::None, Fusion::Gather}) {
+        if (sortBits != 0 && (strategy != KeyStrategy::TwoPoint || fusion != Fusion::None)) continue;
         Settings s = base;
         s.strategy = strategy;
-        s.sort = SortAlgorithm::Radix;
+        s.sort = sort;
+        s.sortBits = sortBits;
         s.sortPolicy = SortPolicy::Always;
         s.fusion = fusion;
-        const std::string what = toString(strategy) + " " + toString(fusion) + " at " + std::to_string(width) + "x" +
-                                 std::to_string(height);
+        const std::string what = toString(sort) + " " + toString(strategy) + " " + toString(fusion) + " sort bits " +
+                                 std::to_string(sortBits) + " at " + std::to_string(width) + "x" + std::to_string(height);
         PathTracer tracer(ctx(), scene, s, view);
         uint32_t sortDispatches = 0;
         for (const StageCommands& c : tracer.renderFrame().stageCommands)
           if (c.stage == "sort") sortDispatches += c.counts.dispatches();
         if (small)
           EXPECT_EQ(sortDispatches, s.bounces - 1) << what << ": not the small sort";
-        else
+        else if (sort == SortAlgorithm::Radix)
           EXPECT_GT(sortDispatches, 3 * (s.bounces - 1)) << what << ": not the radix passes";
+        else
+          EXPECT_GT(sortDispatches, s.bounces - 1) << what << ": not the OneSweep passes";
         expectSameImage(tracer.readRadiance(), unsorted, what);
       }
   }
