@@ -8,6 +8,7 @@
 #include "app/render_command.h"
 #include "app/scene_setup.h"
 #include "app/sortbench_command.h"
+#include "app/tracebench/tracebench_command.h"
 #include "app/study/study_command.h"
 #include "app/window_command.h"
 #include "renderer/vk/vk_check.h"
@@ -23,6 +24,8 @@ void printHelp() {
       "  raylab [options]            open the interactive lab (without a display: render headless instead)\n"
       "  raylab render [options]     render headless to a PNG (raylab render --help)\n"
       "  raylab sortbench [options]  time the GPU sorts alone (raylab sortbench --help)\n"
+      "  raylab tracebench [options] time the BVH traversal alone on camera, bounce and shadow rays\n"
+      "                              (raylab tracebench --help)\n"
       "  raylab bench [options]      sweep strategies and sorts, write CSV/JSON (raylab bench --help;\n"
       "                              charts: app/bench/bench_charts.py)\n"
       "  raylab study SCENE[@VIEW]   where sorting pays on a scene: a standard sweep and an HTML report\n"
@@ -45,6 +48,7 @@ int main(int argc, char** argv) {
     if (mode == "bench") return raylab::runBenchCommand(rest);
     if (mode == "study") return raylab::runStudyCommand(rest);
     if (mode == "sortbench") return raylab::runSortBenchCommand(rest);
+    if (mode == "tracebench") return raylab::runTraceBenchCommand(rest);
     if (mode == "devices") {
       for (const std::string& line : raylab::VulkanContext::describeDevices()) std::puts(line.c_str());
       return raylab::kExitOk;
@@ -55,7 +59,7 @@ int main(int argc, char** argv) {
     }
     if (mode.empty()) return raylab::runWindowCommand(rest);
     // The error and where the help is: the whole help after it scrolled the error away.
-    const std::string near = raylab::nearestName(mode, {"render", "sortbench", "bench", "study", "devices", "help"});
+    const std::string near = raylab::nearestName(mode, {"render", "sortbench", "tracebench", "bench", "study", "devices", "help"});
     raylab::printUsageError("raylab", "unknown mode '" + mode + "'" + (near.empty() ? "" : " (did you mean " + near + "?)"));
     return raylab::kExitUsage;
   } catch (const raylab::UnknownDeviceError& e) {  // any mode's --device

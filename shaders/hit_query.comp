@@ -1,7 +1,8 @@
 #version 460
-// The BVH traversal on its own, for tests: for each given ray the closest hit (traceClosest) and the
-// shadow-ray answer (occluded) of the same functions the trace stage, the megakernel and next-event
-// estimation call, so the test checks exactly what renders use (tests/gpu/bvh/test_embree_hits.cpp).
+// The BVH traversal on its own: for each given ray the closest hit (traceClosest) and/or the shadow-ray
+// answer (occluded) of the same functions the trace stage, the megakernel and next-event estimation call,
+// so the tests check exactly what renders use (tests/gpu/bvh/test_embree_hits.cpp) and `raylab tracebench`
+// times each kind of ray alone (app/tracebench).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
@@ -19,8 +20,12 @@ void main() {
   GpuScene scene = GpuSceneBuf(pc.scene).s;
   vec3 origin = Vec4Buf(pc.origins).v[i].xyz;
   vec4 dir = Vec4Buf(pc.directions).v[i];
-  HitRecord hit = traceClosest(scene, origin, dir.xyz, dir.w);
-  uint triangle = hit.t > 0.0 ? scene.triangles.v[hit.triangle].sourceIndex : 0xFFFFFFFFu;
-  uint blocked = occluded(scene, origin, dir.xyz, dir.w) ? 1u : 0u;
-  UVec4Buf(pc.results).v[i] = uvec4(floatBitsToUint(hit.t), triangle, blocked, hit.steps);
+  uvec4 result = uvec4(floatBitsToUint(-1.0), 0xFFFFFFFFu, 0u, 0u);
+  if ((pc.queries & RL_HIT_QUERY_CLOSEST) != 0u) {
+    HitRecord hit = traceClosest(scene, origin, dir.xyz, dir.w);
+    uint triangle = hit.t > 0.0 ? scene.triangles.v[hit.triangle].sourceIndex : 0xFFFFFFFFu;
+    result.xyw = uvec3(floatBitsToUint(hit.t), triangle, hit.steps);
+  }
+  if ((pc.queries & RL_HIT_QUERY_OCCLUDED) != 0u) result.z = occluded(scene, origin, dir.xyz, dir.w) ? 1u : 0u;
+  UVec4Buf(pc.results).v[i] = result;
 }

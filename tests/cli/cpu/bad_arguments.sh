@@ -95,7 +95,7 @@ expect 2 --window-size 1280x100000
 for h in --help -h help; do
   out=$(timeout 60 "$raylab" $h 2>&1); got=$?
   [ $got -eq 0 ] || { echo "FAIL: raylab $h exited $got"; fail=1; }
-  for word in "raylab render" "raylab sortbench" "raylab bench" "raylab devices" --window-size --scale --script \
+  for word in "raylab render" "raylab sortbench" "raylab tracebench" "raylab bench" "raylab devices" --window-size --scale --script \
       --screenshot-dir --ini --reset --frame-log --render-budget-ms --strategy --sort-policy; do
     grep -qF -- "$word" <<<"$out" || { echo "FAIL: raylab $h does not list $word"; fail=1; }
   done

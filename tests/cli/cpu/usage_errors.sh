@@ -27,6 +27,10 @@ check "must be one of" render --strategy fastest
 check "needs a value" render --frames
 check "unknown option" bench --frobnicate 1
 check "unknown flag" sortbench --frobnicate 1
+check "did you mean --kinds?" tracebench --kind camera
+check "unknown kind 'camra'" tracebench --kinds camra
+check "unknown option '--bounces'" tracebench --bounces 3
+check "--repeat" tracebench --repeat 0
 check "did you mean hall?" bench --cases temple@hal --out-dir bench-out
 [ -e bench-out ] && { echo "FAIL: a refused bench sweep left bench-out behind"; fail=1; }
 check "did you mean hall?" study temple@hal --out-dir study-out

@@ -1,0 +1,126 @@
+#include "app/tracebench/trace_rays.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "shaders/camera_order.h"
+
+namespace raylab {
+namespace {
+
+constexpr float kUnbounded = 1e30f;  // the trace stage's tMax (trace.comp)
+constexpr float kTwoPi = 6.28318530717959f;
+
+// Any unit vector perpendicular to n, and n x it: a frame for directions about n.
+void basisAround(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
+  t = glm::normalize(std::abs(n.x) > 0.9f ? glm::cross(n, glm::vec3(0, 1, 0)) : glm::cross(n, glm::vec3(1, 0, 0)));
+  b = glm::cross(n, t);
+}
+
+glm::vec3 aboutNormal(const glm::vec3& n, float x, float y, float z) {
+  glm::vec3 t, b;
+  basisAround(n, t, b);
+  return glm::normalize(x * t + y * b + z * n);
+}
+
+}  // namespace
+
+void RaySet::add(const glm::vec3& origin, const glm::vec3& direction, float tMax) {
+  origins.emplace_back(origin, 0.0f);
+  directions.emplace_back(direction, tMax);
+}
+
+RaySet cameraRays(const gpu::GpuCamera& cam, uint32_t width, uint32_t height) {
+  RaySet rays;
+  const uint32_t n = width * height;
+  rays.origins.reserve(n);
+  rays.directions.reserve(n);
+  for (uint32_t slot = 0; slot < n; ++slot) {
+    const uint32_t pixel = gpu::cameraPixelOfSlot(slot, width, height);
+    const float x = (float(pixel % width) + 0.5f) / float(width);
+    const float y = (float(pixel / width) + 0.5f) / float(height);
+    const glm::vec2 ndc(2.0f * x - 1.0f, 1.0f - 2.0f * y);  // as path_shading.glsl's cameraPath
+    rays.add(cam.position,
+             glm::normalize(cam.forward + ndc.x * cam.tanHalfFovY * cam.aspect * cam.right +
+                            ndc.y * cam.tanHalfFovY * cam.up),
+             kUnbounded);
+  }
+  return rays;
+}
+
+std::vector<SurfacePoint> surfacePoints(const RaySet& rays, const std::vector<float>& t,
+                                        const std::vector<uint32_t>& triangle, const std::vector<Triangle>& triangles) {
+  std::vector<SurfacePoint> points;
+  for (uint32_t i = 0; i < rays.size(); ++i) {
+    if (!(t[i] > 0.0f) || triangle[i] >= triangles.size()) continue;
+    const Triangle& tri = triangles[triangle[i]];
+    const glm::vec3 dir(rays.directions[i]);
+    glm::vec3 n = glm::cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]);
+    if (!(glm::dot(n, n) > 0.0f)) continue;  // a degenerate triangle has no side to leave from
+    n = glm::normalize(n);
+    if (glm::dot(n, dir) > 0.0f) n = -n;
+    points.push_back({glm::vec3(rays.origins[i]) + t[i] * dir, n});
+  }
+  return points;
+}
+
+glm::vec3 offsetOrigin(const glm::vec3& p, const glm::vec3& n, const glm::vec3& dir) {
+  const float eps = 1e-4f * (1.0f + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
+  return p + (glm::dot(dir, n) >= 0.0f ? n : -n) * eps;
+}
+
+RaySet bounceRays(const std::vector<SurfacePoint>& points, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+  RaySet rays;
+  for (const SurfacePoint& p : points) {
+    const float r = std::sqrt(u01(rng)), phi = kTwoPi * u01(rng);
+    const glm::vec3 d = aboutNormal(p.normal, r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - r * r)));
+    rays.add(offsetOrigin(p.position, p.normal, d), d, kUnbounded);
+  }
+  return rays;
+}
+
+RaySet shadowRays(const std::vector<SurfacePoint>& points, const Scene& scene, float skyProbability, uint32_t seed) {
+  std::vector<uint32_t> emitters;
+  std::vector<double> areaSums;
+  double area = 0.0;
+  for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
+    const Triangle& t = scene.triangles[i];
+    if (t.material >= scene.materials.size() || !scene.materials[t.material].isEmissive()) continue;
+    area += 0.5 * glm::length(glm::cross(t.v[1] - t.v[0], t.v[2] - t.v[0]));
+    emitters.push_back(i);
+    areaSums.push_back(area);
+  }
+  if (emitters.empty() || !(area > 0.0)) skyProbability = 1.0f;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+  RaySet rays;
+  for (const SurfacePoint& p : points) {
+    if (u01(rng) < skyProbability) {
+      const float z = u01(rng), phi = kTwoPi * u01(rng), r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+      const glm::vec3 d = aboutNormal(p.normal, r * std::cos(phi), r * std::sin(phi), z);
+      if (z > 0.0f) rays.add(offsetOrigin(p.position, p.normal, d), d, kUnbounded);
+      continue;
+    }
+    const double pick = u01(rng) * area;
+    const size_t e = std::min<size_t>(std::lower_bound(areaSums.begin(), areaSums.end(), pick) - areaSums.begin(),
+                                      emitters.size() - 1);
+    const Triangle& light = scene.triangles[emitters[e]];
+    float a = u01(rng), b = u01(rng);
+    if (a + b > 1.0f) a = 1.0f - a, b = 1.0f - b;
+    const glm::vec3 q = light.v[0] + a * (light.v[1] - light.v[0]) + b * (light.v[2] - light.v[0]);
+    const glm::vec3 toLight = q - p.position;
+    const float dist = glm::length(toLight);
+    if (!(dist > 0.0f)) continue;
+    const glm::vec3 d = toLight / dist;
+    const glm::vec3 lightNormal = glm::cross(light.v[1] - light.v[0], light.v[2] - light.v[0]);
+    const float cosLight = std::abs(glm::dot(glm::normalize(lightNormal), d));
+    if (glm::dot(d, p.normal) <= 0.0f || !(cosLight > 1e-6f)) continue;  // no BSDF value or no light: no ray
+    rays.add(offsetOrigin(p.position, p.normal, d), d, 0.999f * dist);
+  }
+  return rays;
+}
+
+}  // namespace raylab

@@ -1,0 +1,49 @@
+// The ray sets `raylab tracebench` traces, made on the CPU so that every kind of ray is traced alone by the
+// same traversal the renderer calls (hit_query.comp): camera rays, one diffuse bounce from their hits, and
+// next-event estimation's shadow rays from the same hits. Deterministic for a seed, so runs compare.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scenes/scene.h"
+#include "shaders/shared_types.h"
+
+namespace raylab {
+
+// Rays as hit_query.comp reads them: origin xyz (w unused), direction xyz (unit) with tMax in w.
+struct RaySet {
+  std::vector<glm::vec4> origins;
+  std::vector<glm::vec4> directions;
+  void add(const glm::vec3& origin, const glm::vec3& direction, float tMax);
+  uint32_t size() const { return static_cast<uint32_t>(origins.size()); }
+};
+
+// One ray through each pixel's centre, in the slots the generate stage gives camera paths (camera_order.h:
+// 8x4-pixel tiles), so the trace meets the order the wavefront's first trace meets.
+RaySet cameraRays(const gpu::GpuCamera& camera, uint32_t width, uint32_t height);
+
+// Where a ray of `rays` hit: the point and the geometric normal turned toward the ray (surfaces are
+// two-sided, as in path_shading.glsl). `t` < 0 is a miss; `triangle` is the scene's triangle index.
+struct SurfacePoint {
+  glm::vec3 position;
+  glm::vec3 normal;
+};
+std::vector<SurfacePoint> surfacePoints(const RaySet& rays, const std::vector<float>& t,
+                                        const std::vector<uint32_t>& triangle, const std::vector<Triangle>& triangles);
+
+// path_shading.glsl's offsetOrigin: a new ray's origin lifted off the surface, to the side it leaves toward.
+glm::vec3 offsetOrigin(const glm::vec3& p, const glm::vec3& n, const glm::vec3& dir);
+
+// One cosine-weighted direction about each point's normal (a diffuse bounce), unbounded.
+RaySet bounceRays(const std::vector<SurfacePoint>& points, uint32_t seed);
+
+// One shadow ray a point, as next-event estimation traces it: with `skyProbability` toward the sky (a
+// uniform direction above the surface, unbounded; below it the shader never traces), otherwise toward a
+// uniform point of an emissive triangle picked by area, stopping at 0.999 of the distance. Points whose
+// light lies behind their surface or in their plane get no ray, as in the shader.
+RaySet shadowRays(const std::vector<SurfacePoint>& points, const Scene& scene, float skyProbability, uint32_t seed);
+
+}  // namespace raylab
