@@ -13,6 +13,7 @@
 
 layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 layout(push_constant, scalar) uniform Push { HitQueryPush pc; };
+layout(constant_id = RL_SPEC_HIT_QUERIES) const uint kQueries = RL_HIT_QUERY_CLOSEST | RL_HIT_QUERY_OCCLUDED;
 
 void main() {
   uint i = flatInvocationIndex();
@@ -21,11 +22,11 @@ void main() {
   vec3 origin = Vec4Buf(pc.origins).v[i].xyz;
   vec4 dir = Vec4Buf(pc.directions).v[i];
   uvec4 result = uvec4(floatBitsToUint(-1.0), 0xFFFFFFFFu, 0u, 0u);
-  if ((pc.queries & RL_HIT_QUERY_CLOSEST) != 0u) {
+  if ((kQueries & RL_HIT_QUERY_CLOSEST) != 0u) {
     HitRecord hit = traceClosest(scene, origin, dir.xyz, dir.w);
     uint triangle = hit.t > 0.0 ? scene.triangles.v[hit.triangle].sourceIndex : 0xFFFFFFFFu;
     result.xyw = uvec3(floatBitsToUint(hit.t), triangle, hit.steps);
   }
-  if ((pc.queries & RL_HIT_QUERY_OCCLUDED) != 0u) result.z = occluded(scene, origin, dir.xyz, dir.w) ? 1u : 0u;
+  if ((kQueries & RL_HIT_QUERY_OCCLUDED) != 0u) result.z = occluded(scene, origin, dir.xyz, dir.w) ? 1u : 0u;
   UVec4Buf(pc.results).v[i] = result;
 }

@@ -15,9 +15,11 @@ namespace raylab::gpu {
 
 // One thread per ray: origins (xyz; w unused) and directions (xyz; w: tMax) in, one uvec4 per ray out:
 // closest hit t (float bits, negative on a miss), its triangle's scene index (GpuTriangle::sourceIndex),
-// whether anything lies before tMax (the shadow-ray query), the closest-hit traversal's steps. `queries`
-// says which of the two traversals run (the tests ask both; `raylab tracebench` times each kind alone); a
-// query not asked reads as a miss (t -1, triangle ~0, 0 steps) or as not blocked.
+// whether anything lies before tMax (the shadow-ray query), the closest-hit traversal's steps. The
+// pipeline's RL_SPEC_HIT_QUERIES says which of the two traversals run (the tests ask both; `raylab
+// tracebench` times each kind of ray alone, with only its traversal's code in the pipeline, as the trace
+// stage and the public kernels have); a query not asked reads as a miss (t -1, triangle ~0, 0 steps) or as
+// not blocked.
 #define RL_HIT_QUERY_CLOSEST 1u
 #define RL_HIT_QUERY_OCCLUDED 2u
 struct HitQueryPush {
@@ -26,7 +28,7 @@ struct HitQueryPush {
   RL_REF(Vec4Buf) directions;
   RL_REF(UVec4Buf) results;
   uint count;
-  uint queries;  // RL_HIT_QUERY_* bits
+  uint pad0;
 };
 
 #ifdef __cplusplus

@@ -165,25 +165,33 @@ int runTraceBench(const TraceBenchOptions& o) {
   const GpuSceneData scene(ctx, loaded.scene, s.wideCollapse);
   const gpu::GpuScene block = scene.block(s.bvh);
   GpuBuffer blockBuffer = makeBufferFrom(ctx, std::vector<gpu::GpuScene>{block});
-  // The trace stage's shape: its group size, no step counting (hit_query's default counts them for tests).
-  ComputePipeline query(ctx, "hit_query", sizeof(gpu::HitQueryPush), RL_PATH_GROUP_SIZE, {{RL_SPEC_COUNTS_STEPS, 0}});
+  // The trace stage's shape: its group size, no step counting (hit_query's default counts them for tests),
+  // and one traversal a pipeline.
+  auto pipelineFor = [&](uint32_t queries) {
+    return ComputePipeline(ctx, "hit_query", sizeof(gpu::HitQueryPush), RL_PATH_GROUP_SIZE,
+                           {{RL_SPEC_COUNTS_STEPS, 0}, {RL_SPEC_HIT_QUERIES, queries}});
+  };
+  const ComputePipeline closest = pipelineFor(RL_HIT_QUERY_CLOSEST), occluded = pipelineFor(RL_HIT_QUERY_OCCLUDED);
+  auto pipelineOf = [&](uint32_t queries) -> const ComputePipeline& {
+    return queries == RL_HIT_QUERY_OCCLUDED ? occluded : closest;
+  };
 
   // The rays: camera rays, traced once to find the surface points the other kinds start from.
   std::vector<RaySet> sets(std::size(kRayKinds));
   sets[0] = cameraRays(makeGpuCamera(loaded.view, s.width, s.height), s.width, s.height);
-  auto trace = [&](const RaySet& rays, uint32_t queries) {
+  auto trace = [&](const RaySet& rays) {
     GpuBuffer origins = makeBufferFrom(ctx, rays.origins), directions = makeBufferFrom(ctx, rays.directions);
     GpuBuffer results(ctx, std::max<VkDeviceSize>(16, VkDeviceSize(rays.size()) * 16));
     const gpu::HitQueryPush push{blockBuffer.address(), origins.address(), directions.address(), results.address(),
-                                 rays.size(), queries};
+                                 rays.size(), 0};
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
-      query.dispatchThreads(cmd, push, rays.size());
+      closest.dispatchThreads(cmd, push, rays.size());
       computeBarrier(cmd);
     });
     return results.downloadVector<glm::uvec4>(rays.size());
   };
   {
-    const std::vector<glm::uvec4> hits = trace(sets[0], RL_HIT_QUERY_CLOSEST);
+    const std::vector<glm::uvec4> hits = trace(sets[0]);
     std::vector<float> t(hits.size());
     std::vector<uint32_t> triangle(hits.size());
     for (size_t i = 0; i < hits.size(); ++i) {
@@ -209,8 +217,7 @@ int runTraceBench(const TraceBenchOptions& o) {
     Device d{makeBufferFrom(ctx, rays.origins.empty() ? std::vector<glm::vec4>(1) : rays.origins),
              makeBufferFrom(ctx, rays.directions.empty() ? std::vector<glm::vec4>(1) : rays.directions),
              GpuBuffer(ctx, std::max<VkDeviceSize>(16, VkDeviceSize(rays.size()) * 16))};
-    d.push = {blockBuffer.address(), d.origins.address(), d.directions.address(), d.results.address(), rays.size(),
-              info.query};
+    d.push = {blockBuffer.address(), d.origins.address(), d.directions.address(), d.results.address(), rays.size(), 0};
     onDevice.push_back(std::move(d));
     results.push_back({&info, rays.size()});
   }
@@ -223,7 +230,7 @@ int runTraceBench(const TraceBenchOptions& o) {
         {
           timer.setBounce(static_cast<int>(k));  // the scopes are all the trace stage; collect() keeps them in order
           ScopedStage scope(&timer, cmd, "trace");
-          query.dispatchThreads(cmd, onDevice[k].push, onDevice[k].push.count);
+          pipelineOf(results[k].info->query).dispatchThreads(cmd, onDevice[k].push, onDevice[k].push.count);
         }
         computeBarrier(cmd);
       }

@@ -55,8 +55,7 @@ std::vector<GpuHit> traceOnGpu(const VulkanContext& ctx, const GpuSceneData& sce
   GpuBuffer directions = makeBufferFrom(ctx, rays.directions);
   GpuBuffer results = makeBufferFrom(ctx, std::vector<glm::uvec4>(n, glm::uvec4(0xDEADu)));
   ComputePipeline pipeline(ctx, "hit_query", sizeof(gpu::HitQueryPush));
-  gpu::HitQueryPush push{block.address(), origins.address(), directions.address(), results.address(), n,
-                          RL_HIT_QUERY_CLOSEST | RL_HIT_QUERY_OCCLUDED};
+  gpu::HitQueryPush push{block.address(), origins.address(), directions.address(), results.address(), n, 0};
   ctx.submitAndWait([&](VkCommandBuffer cmd) {
     pipeline.dispatchThreads(cmd, push, n);
     computeBarrier(cmd);
