@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 
+#include "renderer/gpu_scene.h"
 #include "shaders/camera_order.h"
 
 namespace raylab {
@@ -83,17 +85,11 @@ RaySet bounceRays(const std::vector<SurfacePoint>& points, uint32_t seed) {
 }
 
 RaySet shadowRays(const std::vector<SurfacePoint>& points, const Scene& scene, float skyProbability, uint32_t seed) {
-  std::vector<uint32_t> emitters;
-  std::vector<double> areaSums;
-  double area = 0.0;
-  for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
-    const Triangle& t = scene.triangles[i];
-    if (t.material >= scene.materials.size() || !scene.materials[t.material].isEmissive()) continue;
-    area += 0.5 * glm::length(glm::cross(t.v[1] - t.v[0], t.v[2] - t.v[0]));
-    emitters.push_back(i);
-    areaSums.push_back(area);
-  }
-  if (emitters.empty() || !(area > 0.0)) skyProbability = 1.0f;
+  // The renderer's emitter table over the scene's own order: each emitter with its power's cumulative share.
+  std::vector<uint32_t> sceneOrder(scene.triangles.size());
+  std::iota(sceneOrder.begin(), sceneOrder.end(), 0u);
+  const std::vector<gpu::GpuEmitter> emitters = buildEmitterTable(scene, sceneOrder).emitters;
+  if (emitters.empty()) skyProbability = 1.0f;
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u01(0.0f, 1.0f);
   RaySet rays;
@@ -104,10 +100,10 @@ RaySet shadowRays(const std::vector<SurfacePoint>& points, const Scene& scene, f
       if (z > 0.0f) rays.add(offsetOrigin(p.position, p.normal, d), d, kUnbounded);
       continue;
     }
-    const double pick = u01(rng) * area;
-    const size_t e = std::min<size_t>(std::lower_bound(areaSums.begin(), areaSums.end(), pick) - areaSums.begin(),
-                                      emitters.size() - 1);
-    const Triangle& light = scene.triangles[emitters[e]];
+    const float pick = u01(rng);
+    const auto e = std::lower_bound(emitters.begin(), emitters.end(), pick,  // as pickEmitter: cdf >= pick
+                                    [](const gpu::GpuEmitter& x, float u) { return x.cdf < u; });
+    const Triangle& light = scene.triangles[(e == emitters.end() ? emitters.back() : *e).triangle];
     float a = u01(rng), b = u01(rng);
     if (a + b > 1.0f) a = 1.0f - a, b = 1.0f - b;
     const glm::vec3 q = light.v[0] + a * (light.v[1] - light.v[0]) + b * (light.v[2] - light.v[0]);

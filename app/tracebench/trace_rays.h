@@ -42,8 +42,9 @@ RaySet bounceRays(const std::vector<SurfacePoint>& points, uint32_t seed);
 
 // One shadow ray a point, as next-event estimation traces it: with `skyProbability` toward the sky (a
 // uniform direction above the surface, unbounded; below it the shader never traces), otherwise toward a
-// uniform point of an emissive triangle picked by area, stopping at 0.999 of the distance. Points whose
-// light lies behind their surface or in their plane get no ray, as in the shader.
+// uniform point of an emissive triangle picked by its power (the renderer's emitter table), stopping at
+// 0.999 of the distance. Points whose light lies behind their surface or in their plane get no ray, as in
+// the shader.
 RaySet shadowRays(const std::vector<SurfacePoint>& points, const Scene& scene, float skyProbability, uint32_t seed);
 
 }  // namespace raylab
