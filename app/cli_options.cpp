@@ -8,6 +8,18 @@
 namespace raylab {
 
 // Range checks and their wording are settings_validation's, shared with sidecars, scripts and imgui.ini.
+std::optional<std::string> takeFlag(std::vector<std::string>& args, const std::string& flag) {
+  std::optional<std::string> value;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] != flag) continue;
+    if (i + 1 >= args.size()) throw UsageError(flag + " needs a value");
+    value = args[i + 1];
+    args.erase(args.begin() + static_cast<std::ptrdiff_t>(i), args.begin() + static_cast<std::ptrdiff_t>(i) + 2);
+    --i;
+  }
+  return value;
+}
+
 uint32_t parseUint(const std::string& flag, const std::string& text, uint32_t lo, uint32_t hi) {
   try {
     return uintFromText({flag.c_str(), double(lo), double(hi)}, text);

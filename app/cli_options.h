@@ -2,6 +2,7 @@
 // modes turn into a usage message and exit code 2.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,6 +33,10 @@ std::vector<std::string> commonOptionNames();
 
 // Text of the flags parseCommonOptions accepts, for usage messages.
 std::string commonOptionsHelp();
+
+// Takes `flag VALUE` out of `args` (a mode's own flags, before the common ones are parsed): the last value
+// given, or nullopt. Throws UsageError when the flag ends the list.
+std::optional<std::string> takeFlag(std::vector<std::string>& args, const std::string& flag);
 
 // Strict number parsing for flags: the whole string must be a number within [lo, hi].
 uint32_t parseUint(const std::string& flag, const std::string& text, uint32_t lo, uint32_t hi);

@@ -47,19 +47,6 @@ void printRenderUsage(const std::string& error) {
   printUsageError("raylab render", error);
 }
 
-// Takes `flag VALUE` out of `args` (render's own flags; the others are common ones): the last value given.
-std::optional<std::string> takeFlag(std::vector<std::string>& args, const std::string& flag) {
-  std::optional<std::string> value;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] != flag) continue;
-    if (i + 1 >= args.size()) throw UsageError(flag + " needs a value");
-    value = args[i + 1];
-    args.erase(args.begin() + static_cast<std::ptrdiff_t>(i), args.begin() + static_cast<std::ptrdiff_t>(i) + 2);
-    --i;
-  }
-  return value;
-}
-
 // What a render was asked for, parsed and loaded.
 struct RenderRequest {
   CommonOptions options;

@@ -1,5 +1,6 @@
 #include "app/scene_setup.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -38,6 +39,13 @@ ContextOptions contextOptionsFor(const CommonOptions& options) {
   }
   c.validation = options.validation != ValidationMode::Off ? options.validation : env;
   return c;
+}
+
+bool deviceTimesCompute(const VulkanContext& ctx, const std::string& command) {
+  const DeviceInfo& dev = ctx.info();
+  if (dev.timestamps && dev.timestampPeriodNs > 0) return true;
+  std::fprintf(stderr, "%s: %s has no timestamp queries on its compute queue\n", command.c_str(), dev.name.c_str());
+  return false;
 }
 
 }  // namespace raylab

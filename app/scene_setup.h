@@ -18,5 +18,8 @@ struct LoadedScene {
 LoadedScene loadSceneForSettings(const Settings& settings);
 const Viewpoint& resolveViewpoint(const Scene& scene, const std::string& name);
 ContextOptions contextOptionsFor(const CommonOptions& options);
+// Whether the device's compute queue has timestamp queries, which the timing commands need; says so on
+// stderr as "COMMAND: DEVICE has no timestamp queries ..." when it has not.
+bool deviceTimesCompute(const VulkanContext& ctx, const std::string& command);
 
 }  // namespace raylab

@@ -207,10 +207,7 @@ int runBench(const BenchOptions& o) {
   co.quiet = true;
   VulkanContext ctx(co);
   const DeviceInfo& dev = ctx.info();
-  if (!dev.timestamps || dev.timestampPeriodNs <= 0) {
-    std::fprintf(stderr, "raylab sortbench: %s has no timestamp queries on its compute queue\n", dev.name.c_str());
-    return kExitFailure;
-  }
+  if (!deviceTimesCompute(ctx, "raylab sortbench")) return kExitFailure;
   const uint32_t maxN = *std::max_element(o.counts.begin(), o.counts.end());
   std::printf("sortbench: device %s (driver %s), subgroup %u, %u-bit keys, %s, %u runs (+%d warm-up)\n",
               dev.name.c_str(), dev.driver.c_str(), dev.subgroupSize, o.bits, o.dist.c_str(), o.repeat, kWarmups);

@@ -56,22 +56,9 @@ struct TraceBenchOptions {
   std::string csv;
 };
 
-// Removes `flag VALUE` from args, returning the value (the last one given).
-std::optional<std::string> takeTraceBenchValue(std::vector<std::string>& args, const std::string& flag) {
-  std::optional<std::string> value;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] != flag) continue;
-    if (i + 1 >= args.size()) throw UsageError(flag + " needs a value");
-    value = args[i + 1];
-    args.erase(args.begin() + static_cast<std::ptrdiff_t>(i), args.begin() + static_cast<std::ptrdiff_t>(i) + 2);
-    --i;
-  }
-  return value;
-}
-
 TraceBenchOptions parseTraceBenchOptions(std::vector<std::string> args) {
   TraceBenchOptions o;
-  if (auto v = takeTraceBenchValue(args, "--kinds")) {
+  if (auto v = takeFlag(args, "--kinds")) {
     o.kinds.clear();
     size_t start = 0;
     while (start <= v->size()) {
@@ -84,11 +71,11 @@ TraceBenchOptions parseTraceBenchOptions(std::vector<std::string> args) {
       start = comma + 1;
     }
   }
-  if (auto v = takeTraceBenchValue(args, "--repeat")) o.repeat = parseUint("--repeat", *v, 1, 1000);
-  if (auto v = takeTraceBenchValue(args, "--warmup")) o.warmup = parseUint("--warmup", *v, 0, 1000);
-  if (auto v = takeTraceBenchValue(args, "--seed")) o.seed = parseUint("--seed", *v, 0, 0xFFFFFFFFu);
-  if (auto v = takeTraceBenchValue(args, "--check")) o.check = parseUint("--check", *v, 0, 1000000);
-  if (auto v = takeTraceBenchValue(args, "--csv")) o.csv = *v;
+  if (auto v = takeFlag(args, "--repeat")) o.repeat = parseUint("--repeat", *v, 1, 1000);
+  if (auto v = takeFlag(args, "--warmup")) o.warmup = parseUint("--warmup", *v, 0, 1000);
+  if (auto v = takeFlag(args, "--seed")) o.seed = parseUint("--seed", *v, 0, 0xFFFFFFFFu);
+  if (auto v = takeFlag(args, "--check")) o.check = parseUint("--check", *v, 0, 1000000);
+  if (auto v = takeFlag(args, "--csv")) o.csv = *v;
   // Of the flags every mode shares, the ones that say what is traced; the others (bounces, strategies, ...)
   // describe a render and would be silently ignored here.
   const std::vector<std::string> shared = {"--scene", "--view", "--size", "--bvh", "--wide-collapse", "--device"};
@@ -158,10 +145,7 @@ int runTraceBench(const TraceBenchOptions& o) {
   co.quiet = true;
   VulkanContext ctx(co);
   const DeviceInfo& dev = ctx.info();
-  if (!dev.timestamps || dev.timestampPeriodNs <= 0) {
-    std::fprintf(stderr, "raylab tracebench: %s has no timestamp queries on its compute queue\n", dev.name.c_str());
-    return kExitFailure;
-  }
+  if (!deviceTimesCompute(ctx, "raylab tracebench")) return kExitFailure;
   const GpuSceneData scene(ctx, loaded.scene, s.wideCollapse);
   const gpu::GpuScene block = scene.block(s.bvh);
   GpuBuffer blockBuffer = makeBufferFrom(ctx, std::vector<gpu::GpuScene>{block});
