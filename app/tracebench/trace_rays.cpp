@@ -33,13 +33,13 @@ void RaySet::add(const glm::vec3& origin, const glm::vec3& direction, float tMax
   directions.emplace_back(direction, tMax);
 }
 
-RaySet cameraRays(const gpu::GpuCamera& cam, uint32_t width, uint32_t height) {
+RaySet cameraRays(const gpu::GpuCamera& cam, uint32_t width, uint32_t height, CameraRayOrder order) {
   RaySet rays;
   const uint32_t n = width * height;
   rays.origins.reserve(n);
   rays.directions.reserve(n);
   for (uint32_t slot = 0; slot < n; ++slot) {
-    const uint32_t pixel = gpu::cameraPixelOfSlot(slot, width, height);
+    const uint32_t pixel = order == CameraRayOrder::Tiles ? gpu::cameraPixelOfSlot(slot, width, height) : slot;
     const float x = (float(pixel % width) + 0.5f) / float(width);
     const float y = (float(pixel / width) + 0.5f) / float(height);
     const glm::vec2 ndc(2.0f * x - 1.0f, 1.0f - 2.0f * y);  // as path_shading.glsl's cameraPath

@@ -21,9 +21,11 @@ struct RaySet {
   uint32_t size() const { return static_cast<uint32_t>(origins.size()); }
 };
 
-// One ray through each pixel's centre, in the slots the generate stage gives camera paths (camera_order.h:
-// 8x4-pixel tiles), so the trace meets the order the wavefront's first trace meets.
-RaySet cameraRays(const gpu::GpuCamera& camera, uint32_t width, uint32_t height);
+// One ray through each pixel's centre, in the slots the generate stage gives camera paths (Tiles:
+// camera_order.h's 8x4-pixel tiles, the order the wavefront's first trace meets) or row by row (Scanline).
+enum class CameraRayOrder { Tiles, Scanline };
+RaySet cameraRays(const gpu::GpuCamera& camera, uint32_t width, uint32_t height,
+                  CameraRayOrder order = CameraRayOrder::Tiles);
 
 // Where a ray of `rays` hit: the point and the geometric normal turned toward the ray (surfaces are
 // two-sided, as in path_shading.glsl). `t` < 0 is a miss; `triangle` is the scene's triangle index.

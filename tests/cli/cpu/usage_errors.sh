@@ -31,6 +31,8 @@ check "did you mean --kinds?" tracebench --kind camera
 check "unknown kind 'camra'" tracebench --kinds camra
 check "unknown option '--bounces'" tracebench --bounces 3
 check "--repeat" tracebench --repeat 0
+check "give one of them" tracebench --bvh wide --bvhs sbvh
+check "unknown BVH 'quad'" tracebench --bvhs sbvh,quad
 check "did you mean hall?" bench --cases temple@hal --out-dir bench-out
 [ -e bench-out ] && { echo "FAIL: a refused bench sweep left bench-out behind"; fail=1; }
 check "did you mean hall?" study temple@hal --out-dir study-out

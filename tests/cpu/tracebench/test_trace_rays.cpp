@@ -46,6 +46,10 @@ TEST(TraceRays, CameraRaysAreOneAPixelInTheGenerateStagesOrder) {
     pixels.insert({int(std::lround(px)), int(std::lround(py))});
   }
   EXPECT_EQ(pixels.size(), size_t(w) * h) << "a pixel was traced twice";
+  // Scanline order: slot i is pixel i, the same rays.
+  const RaySet rows = cameraRays(cam, w, h, CameraRayOrder::Scanline);
+  for (uint32_t slot = 0; slot < rays.size(); ++slot)
+    EXPECT_EQ(rows.directions[gpu::cameraPixelOfSlot(slot, w, h)], rays.directions[slot]) << "slot " << slot;
 }
 
 // A floor (z = 0, two triangles) under a camera looking straight down: every camera ray hits it.

@@ -1,0 +1,94 @@
+#include "app/tracebench/tracebench_options.h"
+
+#include <algorithm>
+
+#include "app/bench/bench_sweep.h"
+
+namespace raylab {
+
+const char* traceBenchUsage() {
+  return "usage: raylab tracebench [options]\n"
+         "  --scene NAME|FILE    scene (as render; default the built-in temple)\n"
+         "  --view NAME          viewpoint (default the scene's first)\n"
+         "  --size WxH|NAME      camera rays, one a pixel (default 2048x1024)\n"
+         "  --bvhs L[,L...]      trees traversed, each in the same rounds: binary|sbvh|wide (default: --bvh's,\n"
+         "                       as render)\n"
+         "  --wide-collapse greedy|sah  the wide tree's collapse (as render)\n"
+         "  --kinds K[,K...]     camera|bounce|shadow (default all three; bounce and shadow rays start at the\n"
+         "                       camera rays' hits)\n"
+         "  --order tiles|scanline  the camera rays' order: the generate stage's 8x4-pixel tiles (default) or rows\n"
+         "  --repeat R           timed rounds, 1..1000 (default 10), after --warmup rounds, 0..1000 (default 3)\n"
+         "  --seed S             seed of the bounce and shadow directions (default 1)\n"
+         "  --check N            rays of each kind compared with Embree, 0..1000000 (default 4096)\n"
+         "  --csv FILE           also write the table as CSV\n"
+         "  --device NAME|N      Vulkan device (as render)\n"
+         "  --validate[=sync|gpu-av]  the Khronos validation layer (exit 1 on any error)\n";
+}
+
+namespace {
+
+// The flags of every mode that say what is traced; the others (bounces, strategies, ...) describe a render
+// and would be ignored here without a word, so they are refused.
+const std::vector<std::string> kSharedFlags = {"--scene", "--view", "--size", "--bvh", "--wide-collapse", "--device"};
+const std::vector<std::string> kOwnFlags = {"--bvhs", "--kinds", "--order", "--repeat", "--warmup",
+                                            "--seed", "--check",  "--csv",   "--validate"};
+
+std::vector<RayKind> parseKinds(const std::string& text) {
+  std::vector<RayKind> kinds;
+  for (const std::string& name : splitList(text)) {
+    const auto* info = std::find_if(std::begin(kRayKinds), std::end(kRayKinds),
+                                    [&](const RayKindInfo& k) { return name == k.name; });
+    if (info == std::end(kRayKinds)) throw UsageError("--kinds: unknown kind '" + name + "' (camera, bounce, shadow)");
+    if (std::find(kinds.begin(), kinds.end(), info->kind) == kinds.end()) kinds.push_back(info->kind);
+  }
+  if (kinds.empty()) throw UsageError("--kinds needs at least one of camera, bounce, shadow");
+  return kinds;
+}
+
+std::vector<BvhLayout> parseBvhs(const std::string& text) {
+  std::vector<BvhLayout> bvhs;
+  for (const std::string& name : splitList(text)) {
+    const std::optional<BvhLayout> b = parseBvhLayout(name);
+    if (!b) throw UsageError("--bvhs: unknown BVH '" + name + "' (binary, sbvh, wide)");
+    if (std::find(bvhs.begin(), bvhs.end(), *b) == bvhs.end()) bvhs.push_back(*b);
+  }
+  if (bvhs.empty()) throw UsageError("--bvhs needs at least one of binary, sbvh, wide");
+  return bvhs;
+}
+
+}  // namespace
+
+TraceBenchOptions parseTraceBenchOptions(std::vector<std::string> args) {
+  TraceBenchOptions o;
+  if (auto v = takeFlag(args, "--kinds")) o.kinds = parseKinds(*v);
+  if (auto v = takeFlag(args, "--bvhs")) o.bvhs = parseBvhs(*v);
+  if (auto v = takeFlag(args, "--order")) {
+    if (*v != "tiles" && *v != "scanline") throw UsageError("--order: '" + *v + "' is neither tiles nor scanline");
+    o.order = *v == "tiles" ? CameraRayOrder::Tiles : CameraRayOrder::Scanline;
+  }
+  if (auto v = takeFlag(args, "--repeat")) o.repeat = parseUint("--repeat", *v, 1, 1000);
+  if (auto v = takeFlag(args, "--warmup")) o.warmup = parseUint("--warmup", *v, 0, 1000);
+  if (auto v = takeFlag(args, "--seed")) o.seed = parseUint("--seed", *v, 0, 0xFFFFFFFFu);
+  if (auto v = takeFlag(args, "--check")) o.check = parseUint("--check", *v, 0, 1000000);
+  if (auto v = takeFlag(args, "--csv")) o.csv = *v;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--validate" || a.rfind("--validate=", 0) == 0) continue;
+    if (std::find(kSharedFlags.begin(), kSharedFlags.end(), a) != kSharedFlags.end()) {
+      ++i;  // its value (parseCommonOptions checks it)
+      continue;
+    }
+    std::vector<std::string> known = kSharedFlags;
+    known.insert(known.end(), kOwnFlags.begin(), kOwnFlags.end());
+    throw UsageError(unknownOptionMessage(a, known));
+  }
+  const bool sizeGiven = std::find(args.begin(), args.end(), "--size") != args.end();
+  const bool bvhGiven = std::find(args.begin(), args.end(), "--bvh") != args.end();
+  o.common = parseCommonOptions(args);
+  if (!sizeGiven) o.common.settings.width = 2048, o.common.settings.height = 1024;
+  if (bvhGiven && !o.bvhs.empty()) throw UsageError("--bvh and --bvhs: give one of them");
+  if (o.bvhs.empty()) o.bvhs = {o.common.settings.bvh};
+  return o;
+}
+
+}  // namespace raylab

@@ -1,0 +1,39 @@
+// What `raylab tracebench` is asked to trace and time: its flags, parsed. The ray kinds are declared here once
+// (name and the traversal each takes); the table, the CSV and --kinds read them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "app/cli_options.h"
+#include "app/tracebench/trace_rays.h"
+#include "shaders/hit_query_types.h"
+
+namespace raylab {
+
+enum class RayKind { Camera, Bounce, Shadow };
+struct RayKindInfo {
+  RayKind kind;
+  const char* name;
+  uint32_t query;  // RL_HIT_QUERY_*: the traversal its rays take
+};
+inline constexpr RayKindInfo kRayKinds[] = {{RayKind::Camera, "camera", RL_HIT_QUERY_CLOSEST},
+                                            {RayKind::Bounce, "bounce", RL_HIT_QUERY_CLOSEST},
+                                            {RayKind::Shadow, "shadow", RL_HIT_QUERY_OCCLUDED}};
+inline const RayKindInfo& rayKindInfo(RayKind k) { return kRayKinds[static_cast<size_t>(k)]; }
+
+struct TraceBenchOptions {
+  CommonOptions common;  // scene, view, size, wide collapse, device, validation
+  std::vector<BvhLayout> bvhs;  // --bvhs (or --bvh): every tree is timed in the same rounds
+  std::vector<RayKind> kinds{RayKind::Camera, RayKind::Bounce, RayKind::Shadow};
+  CameraRayOrder order = CameraRayOrder::Tiles;
+  uint32_t repeat = 10, warmup = 3, seed = 1, check = 4096;
+  std::string csv;
+};
+
+// Throws UsageError for unknown flags and values, and for the render flags that mean nothing here.
+TraceBenchOptions parseTraceBenchOptions(std::vector<std::string> args);
+const char* traceBenchUsage();
+
+}  // namespace raylab
