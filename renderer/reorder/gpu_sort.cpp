@@ -95,6 +95,10 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
     const VkDeviceSize elementBytes = std::max<VkDeviceSize>(16, VkDeviceSize(maxCount) * 4);
     scratchKeys_ = GpuBuffer(ctx, elementBytes);
     scratchValues_ = GpuBuffer(ctx, elementBytes);
+    if (oneSweep_) {
+      secondKeys_ = GpuBuffer(ctx, elementBytes);
+      secondValues_ = GpuBuffer(ctx, elementBytes);
+    }
   } else if (algorithm == SortAlgorithm::Bitonic || algorithm == SortAlgorithm::Tile) {
     // No scratch: the padding to a power of two is virtual (see shaders/sort_bitonic.glsl).
     bitonicLocal_ = ComputePipeline(ctx, "sort_bitonic_local", sizeof(gpu::SortBitonicPush), SORT_BITONIC_GROUP);
@@ -104,7 +108,7 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
 
 uint64_t GpuSorter::scratchBytes() const {
   uint64_t bytes = 0;
-  for (const GpuBuffer* b : {&scratchKeys_, &scratchValues_, &hist_, &oneSweepState_})
+  for (const GpuBuffer* b : {&scratchKeys_, &scratchValues_, &secondKeys_, &secondValues_, &hist_, &oneSweepState_})
     if (b->valid()) bytes += b->size();
   return bytes;
 }
@@ -225,14 +229,21 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
   push.countLimit = countLimit;
   const uint32_t histChunk = kOneSweepHistogramGroup * SORT_ONESWEEP_HIST_KPT;
   oneSweepHistogram_.dispatchGroups(cmd, push, std::min(maxGroups, ceilDiv(count, histChunk)));
+  // Where each pass writes: an even pass count ping-pongs caller -> scratch -> caller; three passes (17 to 24
+  // sorted bits: the two-point keys) rotate through a second scratch set, caller -> scratch -> second ->
+  // caller, and so end in the caller's buffers without a copy that reads and writes every pair once more.
+  // One pass is copied back.
+  const VkDeviceAddress outKeys[3] = {scratchKeys_.address(), passes == 3 ? secondKeys_.address() : keys, keys};
+  const VkDeviceAddress outValues[3] = {scratchValues_.address(), passes == 3 ? secondValues_.address() : values,
+                                        values};
   VkDeviceAddress srcKeys = keys, srcValues = values;
   for (uint32_t pass = 0; pass < passes; ++pass) {
     computeBarrier(cmd);
-    const bool toScratch = pass % 2 == 0;
+    const uint32_t out = passes == 3 ? pass : pass % 2;
     push.keysIn = srcKeys;
     push.valuesIn = srcValues;
-    push.keysOut = toScratch ? scratchKeys_.address() : keys;
-    push.valuesOut = toScratch ? scratchValues_.address() : values;
+    push.keysOut = outKeys[out];
+    push.valuesOut = outValues[out];
     push.shift = lowBit + pass * SORT_RADIX_BITS;
     push.pass = pass;
     // Tiles come from the pass's counter, not the group id, so a split dispatch needs no offset.
@@ -248,7 +259,7 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
     srcKeys = push.keysOut;
     srcValues = push.valuesOut;
   }
-  if (passes % 2 == 1) recordCopyBack(cmd, keys, values, count, countLimit);
+  if (passes == 1) recordCopyBack(cmd, keys, values, count, countLimit);
 }
 
 // Each tile of SORT_BITONIC_TILE pairs sorted alone in shared memory: bitonic's first dispatch, no merges.

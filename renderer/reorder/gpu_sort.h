@@ -14,6 +14,8 @@
 // wait on earlier ones, which only devices known to give forward progress promise (NVIDIA and AMD GPUs);
 // elsewhere (CPU devices) each pass runs one work group per dispatch, a barrier between: the same order
 // from the same shaders, so the invariant tests check them on lavapipe, but slow (oneSweepSerial()).
+// Three passes (17 to 24 sorted bits) rotate through a second scratch set and need no copy back (8 bytes a
+// pair of memory more than radix).
 // Small counts (radix and OneSweep, at most Tuning::smallSortMax pairs, SORT_SMALL_MAX by default): one
 // dispatch, one work group sorting them all in shared memory (sort_small.comp), stable like the radix passes
 // it replaces, which at such counts cost their launches and barriers, not their bytes (issue 36).
@@ -128,6 +130,8 @@ class GpuSorter {
   ComputePipeline oneSweepHistogram_;
   ComputePipeline oneSweepPass_;
   GpuBuffer oneSweepState_;  // histograms, tile counters, look-back status (shaders/sort_types.h)
+  GpuBuffer secondKeys_;     // the second scratch set three passes rotate through (recordOneSweep)
+  GpuBuffer secondValues_;
 
   // Small counts
   ComputePipeline smallSort_;

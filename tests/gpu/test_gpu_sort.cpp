@@ -228,7 +228,7 @@ TEST_F(GpuSortTest, PassCountFollowsKeyBits) {
 TEST_F(GpuSortTest, ScratchIsReported) {
   EXPECT_GE(sorter(SortAlgorithm::Radix).scratchBytes(), 8ull * kMaxCount);
   EXPECT_EQ(sorter(SortAlgorithm::Bitonic).scratchBytes(), 0u);
-  EXPECT_GE(sorter(Variant::OneSweep).scratchBytes(), 8ull * kMaxCount);
+  EXPECT_GE(sorter(Variant::OneSweep).scratchBytes(), 16ull * kMaxCount);  // two scratch sets
   GpuSorter none(ctx(), SortAlgorithm::None, 1000);
   EXPECT_EQ(none.scratchBytes(), 0u);
   EXPECT_EQ(none.algorithm(), SortAlgorithm::None);
@@ -457,24 +457,28 @@ TEST_F(GpuSortTest, SmallSortBitsLimitAndIgnoredBits) {
 // The small sort is what its name says: one dispatch up to its threshold, the passes past it and where it is
 // turned off (counted as a frame's commands are, command_counts.h).
 TEST_F(GpuSortTest, SmallSortIsOneDispatchUpToItsThreshold) {
-  auto dispatches = [&](GpuSorter& s, uint32_t n) {
+  auto dispatches = [&](GpuSorter& s, uint32_t n, uint32_t bits = 30) {
     GpuBuffer keys = makeBufferFrom(ctx(), makeKeys(Dist::Uniform, n, 5));
     GpuBuffer values = makeBufferFrom(ctx(), LimitedSort::iota(n));
     CommandTally tally;
     ctx().submitAndWait([&](VkCommandBuffer cmd) {
       CountCommands counting(cmd, tally);
-      s.record(cmd, keys.address(), values.address(), n, 30);
+      s.record(cmd, keys.address(), values.address(), n, bits);
     });
     return tally.total().dispatches();
   };
   EXPECT_EQ(dispatches(sorter(Variant::Small), SORT_SMALL_MAX), 1u);
   EXPECT_EQ(dispatches(sorter(Variant::Small), SORT_SMALL_MAX + 1), 3 * GpuSorter::radixPasses(30));
   EXPECT_EQ(dispatches(sorter(Variant::Radix), SORT_SMALL_MAX), 3 * GpuSorter::radixPasses(30));
-  // OneSweep: one histogram for all passes, then a dispatch a pass (a dispatch a tile where it runs serially).
+  // OneSweep: one histogram for all passes, then a dispatch a pass (a dispatch a tile where it runs serially);
+  // three passes (16-bit keys: 17 sorted bits) end in the caller's buffers with no copy, one pass is copied.
   GpuSorter& oneSweep = sorter(Variant::OneSweep);
   const uint32_t n = 5 * oneSweep.radixTile() + 1;
   const uint32_t perPass = oneSweep.oneSweepSerial() ? 6 : 1;
   EXPECT_EQ(dispatches(oneSweep, n), 1 + perPass * GpuSorter::radixPasses(30));
+  EXPECT_EQ(dispatches(oneSweep, n, 16), 1 + perPass * 3);
+  EXPECT_EQ(dispatches(oneSweep, n, 7), 1 + perPass + 1);
+  EXPECT_EQ(dispatches(sorter(Variant::Radix), n, 16), 3 * 3 + 1) << "the portable passes copy three passes back";
 }
 
 }  // namespace
