@@ -171,7 +171,7 @@ void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const Lo
               o.order == CameraRayOrder::Tiles ? "tiles" : "scanline", dev.name.c_str(), dev.driver.c_str(), o.repeat,
               o.warmup);
   std::printf("%-7s %-7s %10s %10s %10s %10s %9s %8s %9s  %s\n", "bvh", "kind", "rays", "median_ms", "min_ms",
-              "max_ms", "Grays/s", "spread%", "hit_frac", "check (Embree)");
+              "max_ms", "Mrays/s", "spread%", "hit_frac", "check (Embree)");
   std::string csv = "bvh,kind,rays,median_ms,min_ms,max_ms,rays_per_second,spread_percent,hit_fraction,checked,"
                     "disagreements,scene,view,width,height,order,repeat,warmup,seed,device,driver,revision\n";
   const std::string context = quoted(loaded.scene.name) + "," + quoted(loaded.view.name) + "," +
@@ -181,8 +181,8 @@ void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const Lo
                               "," + quoted(dev.name) + "," + quoted(dev.driver) + "," + gitRevision();
   for (const Cell& c : cells) {
     const Figures f = figuresOf(c);
-    std::printf("%-7s %-7s %10u %10.4f %10.4f %10.4f %9.3f %8.1f %9.4f  %s (%u of %u differ)\n",
-                toString(c.bvh).c_str(), c.kind->name, c.rays->size(), f.median, f.min, f.max, f.raysPerSecond * 1e-9,
+    std::printf("%-7s %-7s %10u %10.4f %10.4f %10.4f %9.1f %8.1f %9.4f  %s (%u of %u differ)\n",
+                toString(c.bvh).c_str(), c.kind->name, c.rays->size(), f.median, f.min, f.max, f.raysPerSecond * 1e-6,
                 f.spreadPercent, c.hitFraction, agrees(c) ? "ok" : "MISMATCH", c.disagreements, c.checked);
     char line[512];
     std::snprintf(line, sizeof line, "%s,%s,%u,%.6f,%.6f,%.6f,%.0f,%.2f,%.6f,%u,%u,", toString(c.bvh).c_str(),
