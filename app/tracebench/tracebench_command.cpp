@@ -35,15 +35,23 @@ struct QueryPipelines {
   ComputePipeline closest, occluded;
 };
 
-// Rays on the device with room for one answer each (hit_query's uvec4), and the push that traces them.
+// Rays on the device (one copy a kind, traced through every tree).
 struct DeviceRays {
-  DeviceRays(const VulkanContext& ctx, const RaySet& rays, VkDeviceAddress scene)
+  DeviceRays(const VulkanContext& ctx, const RaySet& rays)
       : origins(makeBufferFrom(ctx, rays.origins.empty() ? std::vector<glm::vec4>(1) : rays.origins)),
         directions(makeBufferFrom(ctx, rays.directions.empty() ? std::vector<glm::vec4>(1) : rays.directions)),
-        results(ctx, std::max<VkDeviceSize>(16, VkDeviceSize(rays.size()) * 16)),
-        push{scene, origins.address(), directions.address(), results.address(), rays.size(), 0} {}
-  std::vector<glm::uvec4> answers() const { return results.downloadVector<glm::uvec4>(push.count); }
-  GpuBuffer origins, directions, results;
+        count(rays.size()) {}
+  GpuBuffer origins, directions;
+  uint32_t count;
+};
+
+// Room for one answer a ray (hit_query's uvec4) and the push that traces `rays` through `scene`'s tree.
+struct DeviceAnswers {
+  DeviceAnswers(const VulkanContext& ctx, const DeviceRays& rays, VkDeviceAddress scene)
+      : results(ctx, std::max<VkDeviceSize>(16, VkDeviceSize(rays.count) * 16)),
+        push{scene, rays.origins.address(), rays.directions.address(), results.address(), rays.count, 0} {}
+  std::vector<glm::uvec4> download() const { return results.downloadVector<glm::uvec4>(push.count); }
+  GpuBuffer results;
   gpu::HitQueryPush push;
 };
 
@@ -61,14 +69,15 @@ std::array<RaySet, 3> makeRaySets(const VulkanContext& ctx, const QueryPipelines
   std::array<RaySet, 3> sets;
   RaySet& camera = sets[size_t(RayKind::Camera)];
   camera = cameraRays(makeGpuCamera(loaded.view, s.width, s.height), s.width, s.height, o.order);
-  const DeviceRays traced(ctx, camera, scene);
+  const DeviceRays onDevice(ctx, camera);
+  const DeviceAnswers traced(ctx, onDevice, scene);
   ctx.submitAndWait([&](VkCommandBuffer cmd) {
     pipelines.closest.dispatchThreads(cmd, traced.push, camera.size());
     computeBarrier(cmd);
   });
   std::vector<float> t;
   std::vector<uint32_t> triangle;
-  for (const glm::uvec4& a : traced.answers()) {
+  for (const glm::uvec4& a : traced.download()) {
     t.push_back(tOf(a));
     triangle.push_back(a.y);
   }
@@ -83,7 +92,7 @@ struct Cell {
   BvhLayout bvh;
   const RayKindInfo* kind;
   const RaySet* rays;
-  DeviceRays onDevice;
+  DeviceAnswers onDevice;
   std::vector<double> ms;  // one per timed round
   double hitFraction = 0.0;  // closest hits: rays that hit; shadow rays: rays blocked
   uint32_t checked = 0, disagreements = 0;
@@ -114,7 +123,7 @@ void timeCells(const VulkanContext& ctx, const QueryPipelines& pipelines, std::v
 // or lies at the same distance (1e-4 relative: a tie between triangles sharing the point); a shadow ray is
 // blocked or not alike. Also the fraction of rays that hit (or are blocked).
 void checkCell(Cell& c, const EmbreeScene& embree, uint32_t limit) {
-  const std::vector<glm::uvec4> gpu = c.onDevice.answers();
+  const std::vector<glm::uvec4> gpu = c.onDevice.download();
   const RaySet& rays = *c.rays;
   const bool shadow = c.kind->query == RL_HIT_QUERY_OCCLUDED;
   uint32_t positive = 0;
@@ -205,13 +214,14 @@ int runTraceBench(const TraceBenchOptions& o) {
   const QueryPipelines pipelines(ctx);
   const std::array<RaySet, 3> sets = makeRaySets(ctx, pipelines, blocks.front().address(), loaded, o,
                                                  scene.block(o.bvhs.front()).skyLightProbability);
+  std::vector<DeviceRays> rays;  // one copy of each kind's rays; each cell its own answers
+  for (RayKind kind : o.kinds) rays.emplace_back(ctx, sets[size_t(kind)]);
   std::vector<Cell> cells;
   cells.reserve(o.bvhs.size() * o.kinds.size());
   for (size_t b = 0; b < o.bvhs.size(); ++b)
-    for (RayKind kind : o.kinds) {
-      const RaySet& rays = sets[size_t(kind)];
-      cells.push_back({o.bvhs[b], &rayKindInfo(kind), &rays, DeviceRays(ctx, rays, blocks[b].address())});
-    }
+    for (size_t k = 0; k < o.kinds.size(); ++k)
+      cells.push_back({o.bvhs[b], &rayKindInfo(o.kinds[k]), &sets[size_t(o.kinds[k])],
+                       DeviceAnswers(ctx, rays[k], blocks[b].address())});
   timeCells(ctx, pipelines, cells, o.warmup, o.repeat);
   const EmbreeScene embree(loaded.scene.triangles);
   for (Cell& c : cells) checkCell(c, embree, o.check);
