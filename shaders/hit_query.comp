@@ -27,6 +27,11 @@ void main() {
     uint triangle = hit.t > 0.0 ? scene.triangles.v[hit.triangle].sourceIndex : 0xFFFFFFFFu;
     result.xyw = uvec3(floatBitsToUint(hit.t), triangle, hit.steps);
   }
-  if ((kQueries & RL_HIT_QUERY_OCCLUDED) != 0u) result.z = occluded(scene, origin, dir.xyz, dir.w) ? 1u : 0u;
+  if ((kQueries & RL_HIT_QUERY_OCCLUDED) != 0u) {
+    // occluded()'s traversal, keeping its steps where it is the only query.
+    HitRecord any = traverseSceneBvh(scene, origin, dir.xyz, dir.w, true);
+    result.z = any.t > 0.0 ? 1u : 0u;
+    if (kQueries == RL_HIT_QUERY_OCCLUDED) result.w = any.steps;
+  }
   UVec4Buf(pc.results).v[i] = result;
 }

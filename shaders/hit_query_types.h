@@ -15,7 +15,8 @@ namespace raylab::gpu {
 
 // One thread per ray: origins (xyz; w unused) and directions (xyz; w: tMax) in, one uvec4 per ray out:
 // closest hit t (float bits, negative on a miss), its triangle's scene index (GpuTriangle::sourceIndex),
-// whether anything lies before tMax (the shadow-ray query), the closest-hit traversal's steps. The
+// whether anything lies before tMax (the shadow-ray query), the closest-hit traversal's steps (the shadow
+// ray's where it is the only query; 0 unless the pipeline counts them, RL_SPEC_COUNTS_STEPS). The
 // pipeline's RL_SPEC_HIT_QUERIES says which of the two traversals run (the tests ask both; `raylab
 // tracebench` times each kind of ray alone, with only its traversal's code in the pipeline, as the trace
 // stage and the public kernels have); a query not asked reads as a miss (t -1, triangle ~0, 0 steps) or as

@@ -9,6 +9,7 @@
 #include "app/tracebench/tracebench_options.h"
 #include "renderer/bvh/embree_scene.h"
 #include "renderer/checked_write.h"
+#include "renderer/detail_sums.h"
 #include "renderer/git_revision.h"
 #include "renderer/gpu_scene.h"
 #include "renderer/path_tracer.h"
@@ -22,17 +23,23 @@
 namespace raylab {
 namespace {
 
-// hit_query.comp as the trace stage runs: its group size, no step counting (the shader's default counts
-// them for the tests), and one traversal a pipeline.
+// hit_query.comp as the trace stage runs: its group size and one traversal a pipeline; timed without step
+// counting (as the trace stage's frames without detailed figures), and once more counting them.
 struct QueryPipelines {
   explicit QueryPipelines(const VulkanContext& ctx)
-      : closest(make(ctx, RL_HIT_QUERY_CLOSEST)), occluded(make(ctx, RL_HIT_QUERY_OCCLUDED)) {}
-  const ComputePipeline& of(uint32_t query) const { return query == RL_HIT_QUERY_OCCLUDED ? occluded : closest; }
-  static ComputePipeline make(const VulkanContext& ctx, uint32_t query) {
-    return ComputePipeline(ctx, "hit_query", sizeof(gpu::HitQueryPush), RL_PATH_GROUP_SIZE,
-                           {{RL_SPEC_COUNTS_STEPS, 0}, {RL_SPEC_HIT_QUERIES, query}});
+      : closest(make(ctx, RL_HIT_QUERY_CLOSEST, false)),
+        occluded(make(ctx, RL_HIT_QUERY_OCCLUDED, false)),
+        closestCounting(make(ctx, RL_HIT_QUERY_CLOSEST, true)),
+        occludedCounting(make(ctx, RL_HIT_QUERY_OCCLUDED, true)) {}
+  const ComputePipeline& of(uint32_t query, bool countsSteps = false) const {
+    if (query == RL_HIT_QUERY_OCCLUDED) return countsSteps ? occludedCounting : occluded;
+    return countsSteps ? closestCounting : closest;
   }
-  ComputePipeline closest, occluded;
+  static ComputePipeline make(const VulkanContext& ctx, uint32_t query, bool countsSteps) {
+    return ComputePipeline(ctx, "hit_query", sizeof(gpu::HitQueryPush), RL_PATH_GROUP_SIZE,
+                           {{RL_SPEC_COUNTS_STEPS, countsSteps ? 1u : 0u}, {RL_SPEC_HIT_QUERIES, query}});
+  }
+  ComputePipeline closest, occluded, closestCounting, occludedCounting;
 };
 
 // Rays on the device (one copy a kind, traced through every tree).
@@ -96,6 +103,9 @@ struct Cell {
   std::vector<double> ms;  // one per timed round
   double hitFraction = 0.0;  // closest hits: rays that hit; shadow rays: rays blocked
   uint32_t checked = 0, disagreements = 0;
+  // The divergence the lab studies: traversal steps a ray, and the virtual warp efficiency of 32 consecutive
+  // rays (their steps over 32 times the most steps among them), as the frames' detailed figures count them.
+  double meanSteps = 0.0, warpEfficiency = 0.0;
 };
 
 // Every round in one submission, each cell once a round in the table's order: warm-up rounds, then timed ones,
@@ -117,6 +127,11 @@ void timeCells(const VulkanContext& ctx, const QueryPipelines& pipelines, std::v
   });
   const std::vector<StageTime> times = timer.collect();
   for (size_t i = warmup * cells.size(); i < times.size(); ++i) cells[i % cells.size()].ms.push_back(times[i].ms);
+  // Once more counting steps, untimed: the answers checkCell reads.
+  ctx.submitAndWait([&](VkCommandBuffer cmd) {
+    for (const Cell& c : cells) pipelines.of(c.kind->query, true).dispatchThreads(cmd, c.onDevice.push, c.onDevice.push.count);
+    computeBarrier(cmd);
+  });
 }
 
 // The GPU's answers against Embree's on an even sample of `limit` rays: the closest hit is the same triangle
@@ -127,8 +142,19 @@ void checkCell(Cell& c, const EmbreeScene& embree, uint32_t limit) {
   const RaySet& rays = *c.rays;
   const bool shadow = c.kind->query == RL_HIT_QUERY_OCCLUDED;
   uint32_t positive = 0;
-  for (const glm::uvec4& a : gpu) positive += shadow ? a.z != 0u : tOf(a) > 0.0f;
+  std::vector<uint32_t> steps;
+  steps.reserve(gpu.size());
+  for (const glm::uvec4& a : gpu) {
+    positive += shadow ? a.z != 0u : tOf(a) > 0.0f;
+    steps.push_back(a.w);
+  }
   c.hitFraction = rays.size() ? double(positive) / rays.size() : 0.0;
+  gpu::GpuDetailSums sums{};
+  addWarpSums(sums, steps);
+  const double work = double(uint64_t(sums.warpWorkHi) << 32 | sums.warpWorkLo);
+  const double slots = double(uint64_t(sums.warpSlotsHi) << 32 | sums.warpSlotsLo);
+  c.meanSteps = rays.size() ? work / rays.size() : 0.0;
+  c.warpEfficiency = slots > 0.0 ? work / slots : 0.0;
   c.checked = std::min(limit, rays.size());
   for (uint32_t s = 0; s < c.checked; ++s) {
     const uint32_t i = static_cast<uint32_t>(uint64_t(s) * rays.size() / c.checked);
@@ -179,10 +205,11 @@ void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const Lo
               loaded.scene.name.c_str(), loaded.view.name.c_str(), s.width, s.height,
               o.order == CameraRayOrder::Tiles ? "tiles" : "scanline", dev.name.c_str(), dev.driver.c_str(), o.repeat,
               o.warmup);
-  std::printf("%-7s %-7s %10s %10s %10s %10s %9s %8s %9s  %s\n", "bvh", "kind", "rays", "median_ms", "min_ms",
-              "max_ms", "Mrays/s", "spread%", "hit_frac", "check (Embree)");
-  std::string csv = "bvh,kind,rays,median_ms,min_ms,max_ms,rays_per_second,spread_percent,hit_fraction,checked,"
-                    "disagreements,scene,view,width,height,order,repeat,warmup,seed,device,driver,revision\n";
+  std::printf("%-7s %-7s %10s %10s %10s %10s %9s %8s %9s %7s %6s  %s\n", "bvh", "kind", "rays", "median_ms",
+              "min_ms", "max_ms", "Mrays/s", "spread%", "hit_frac", "steps", "warp", "check (Embree)");
+  std::string csv = "bvh,kind,rays,median_ms,min_ms,max_ms,rays_per_second,spread_percent,hit_fraction,"
+                    "mean_steps,warp_efficiency,checked,disagreements,scene,view,width,height,order,repeat,warmup,"
+                    "seed,device,driver,revision\n";
   const std::string context = quoted(loaded.scene.name) + "," + quoted(loaded.view.name) + "," +
                               std::to_string(s.width) + "," + std::to_string(s.height) + "," +
                               (o.order == CameraRayOrder::Tiles ? "tiles" : "scanline") + "," +
@@ -190,13 +217,14 @@ void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const Lo
                               "," + quoted(dev.name) + "," + quoted(dev.driver) + "," + gitRevision();
   for (const Cell& c : cells) {
     const Figures f = figuresOf(c);
-    std::printf("%-7s %-7s %10u %10.4f %10.4f %10.4f %9.1f %8.1f %9.4f  %s (%u of %u differ)\n",
+    std::printf("%-7s %-7s %10u %10.4f %10.4f %10.4f %9.1f %8.1f %9.4f %7.2f %6.3f  %s (%u of %u differ)\n",
                 toString(c.bvh).c_str(), c.kind->name, c.rays->size(), f.median, f.min, f.max, f.raysPerSecond * 1e-6,
-                f.spreadPercent, c.hitFraction, agrees(c) ? "ok" : "MISMATCH", c.disagreements, c.checked);
+                f.spreadPercent, c.hitFraction, c.meanSteps, c.warpEfficiency, agrees(c) ? "ok" : "MISMATCH",
+                c.disagreements, c.checked);
     char line[512];
-    std::snprintf(line, sizeof line, "%s,%s,%u,%.6f,%.6f,%.6f,%.0f,%.2f,%.6f,%u,%u,", toString(c.bvh).c_str(),
+    std::snprintf(line, sizeof line, "%s,%s,%u,%.6f,%.6f,%.6f,%.0f,%.2f,%.6f,%.4f,%.6f,%u,%u,", toString(c.bvh).c_str(),
                   c.kind->name, c.rays->size(), f.median, f.min, f.max, f.raysPerSecond, f.spreadPercent,
-                  c.hitFraction, c.checked, c.disagreements);
+                  c.hitFraction, c.meanSteps, c.warpEfficiency, c.checked, c.disagreements);
     csv += line + context + "\n";
   }
   if (!o.csv.empty()) writeFileChecked(o.csv, csv);  // a WriteError reaches main: exit 1, naming the file

@@ -2,7 +2,9 @@
 # raylab tracebench (issue 35): each kind of ray timed alone through each tree asked, with the validation layer
 # on; its table and CSV say how many rays of each kind were traced (camera: one a pixel; bounce: one a camera
 # hit; shadow: at most one a camera hit; the same rays through every tree), and the GPU's answers agree with
-# Embree's on the sample it checks. --kinds picks kinds, in their order.
+# Embree's on the sample it checks. Each row's traversal steps and virtual warp efficiency are in range, and
+# the camera rays row by row (--order scanline) take the same steps in all as in tiles, in other warps.
+# --kinds picks kinds, in their order.
 set -eu
 raylab="$1"
 dir=$(mktemp -d)
@@ -24,10 +26,22 @@ for bvh in ("sbvh", "wide"):
         assert float(r["median_ms"]) > 0 and float(r["rays_per_second"]) > 0, r
         assert int(r["checked"]) == min(4096, int(r["rays"])), r
         assert int(r["disagreements"]) * 1000 <= int(r["checked"]), r
+        assert float(r["mean_steps"]) >= 1 and 0 < float(r["warp_efficiency"]) <= 1, r
         assert r["width"] == "96" and r["height"] == "64" and r["view"] == "hall" and r["order"] == "tiles", r
     print("ok:", bvh, "rays", cam, bounce, shadow)
 same = lambda k: {r["rays"] for r in table if r["kind"] == k}
 assert all(len(same(k)) == 1 for k in ("camera", "bounce", "shadow")), "the trees traced different rays"
+PY
+"$raylab" tracebench --scene temple --view hall --size 96x64 --repeat 1 --warmup 0 --kinds camera --order scanline \
+  --csv "$dir/s.csv" >/dev/null
+python3 - "$dir/t.csv" "$dir/s.csv" <<'PY'
+import csv, sys
+tiles = next(r for r in csv.DictReader(open(sys.argv[1])) if r["bvh"] == "sbvh" and r["kind"] == "camera")
+rows = next(csv.DictReader(open(sys.argv[2])))
+assert rows["order"] == "scanline" and rows["rays"] == tiles["rays"], rows
+assert rows["mean_steps"] == tiles["mean_steps"], (rows["mean_steps"], tiles["mean_steps"])
+assert rows["warp_efficiency"] != tiles["warp_efficiency"], "the order changed no warp"
+print("ok: camera steps", rows["mean_steps"], "warp efficiency tiles", tiles["warp_efficiency"], "rows", rows["warp_efficiency"])
 PY
 grep -q "^wide *shadow .* ok (" "$dir/out.txt" || { echo "FAIL: no checked shadow row"; cat "$dir/out.txt"; exit 1; }
 "$raylab" tracebench --scene cornell --size 32x16 --kinds shadow,camera --repeat 1 --warmup 0 --csv "$dir/k.csv" >/dev/null
