@@ -11,6 +11,7 @@
 
 #include "renderer/vk/empty_dispatch.h"
 #include "scenes/procedural.h"
+#include "shaders/sort_types.h"
 #include "tests/gpu_test.h"
 #include "tests/render_helpers.h"
 
@@ -112,6 +113,16 @@ TEST_F(CommandCountsTest, EqualWhatReachedVulkan) {
   s.fusion = Fusion::Keys;
   s.sort = SortAlgorithm::Radix;
   expectExact(s, "keys in shade");
+  // Past the small sort's threshold, the radix passes and OneSweep's (its fill of the look-back state is a
+  // transfer, not a dispatch).
+  Settings large = smallFrame(48, 43, 3);
+  large.strategy = KeyStrategy::TwoPoint;
+  large.sortPolicy = SortPolicy::Always;
+  ASSERT_GT(large.width * large.height, uint32_t(SORT_SMALL_MAX));
+  for (SortAlgorithm sort : {SortAlgorithm::Radix, SortAlgorithm::OneSweep}) {
+    large.sort = sort;
+    expectExact(large, "two-point " + toString(sort) + " past the small sort");
+  }
   s = base;
   s.strategy = KeyStrategy::Average;
   s.sortPolicy = SortPolicy::Always;
