@@ -6,6 +6,7 @@
 #include <random>
 
 #include "renderer/gpu_scene.h"
+#include "renderer/reorder/key_functions.h"
 #include "shaders/camera_order.h"
 
 namespace raylab {
@@ -117,6 +118,28 @@ RaySet shadowRays(const std::vector<SurfacePoint>& points, const Scene& scene, f
     rays.add(offsetOrigin(p.position, p.normal, d), d, 0.999f * dist);
   }
   return rays;
+}
+
+RaySet sortedByKey(const RaySet& rays, KeyStrategy strategy, const gpu::GpuKeyParams& params,
+                   const std::vector<float>& hitT) {
+  std::vector<uint32_t> keys(rays.size()), order(rays.size());
+  KeyEnv env;
+  env.bounce = 1;
+  for (uint32_t i = 0; i < rays.size(); ++i) {
+    const KeyPath path{glm::vec3(rays.origins[i]), glm::vec3(rays.directions[i]), i, i < hitT.size() ? hitT[i] : -1.0f};
+    float length = 0.0f;
+    keys[i] = computeKey(strategyId(strategy), params, env, path, 1u, length);
+  }
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return keys[a] < keys[b]; });
+  RaySet sorted;
+  sorted.origins.reserve(rays.size());
+  sorted.directions.reserve(rays.size());
+  for (uint32_t i : order) {
+    sorted.origins.push_back(rays.origins[i]);
+    sorted.directions.push_back(rays.directions[i]);
+  }
+  return sorted;
 }
 
 }  // namespace raylab

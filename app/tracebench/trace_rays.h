@@ -9,6 +9,8 @@
 #include <glm/glm.hpp>
 
 #include "scenes/scene.h"
+#include "renderer/settings/settings.h"
+#include "shaders/key_types.h"
 #include "shaders/shared_types.h"
 
 namespace raylab {
@@ -48,5 +50,12 @@ RaySet bounceRays(const std::vector<SurfacePoint>& points, uint32_t seed);
 // 0.999 of the distance. Points whose light lies behind their surface or in their plane get no ray, as in
 // the shader.
 RaySet shadowRays(const std::vector<SurfacePoint>& points, const Scene& scene, float skyProbability, uint32_t seed);
+
+// `rays` in the order the path sorter would give them: each ray keyed by `strategy`'s key function (the CPU
+// twins of keys.glsl, with `params`; ray i is path i, and `hitT[i]` its true hit distance, which only the
+// oracle reads: may be empty otherwise), then stably sorted by key, as the radix sort orders them. For the
+// strategies that learn nothing (learned lengths need frames of traces, which a batch of rays has not had).
+RaySet sortedByKey(const RaySet& rays, KeyStrategy strategy, const gpu::GpuKeyParams& params,
+                   const std::vector<float>& hitT);
 
 }  // namespace raylab

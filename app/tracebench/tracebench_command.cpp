@@ -13,6 +13,9 @@
 #include "renderer/git_revision.h"
 #include "renderer/gpu_scene.h"
 #include "renderer/path_tracer.h"
+#include "renderer/reorder/key_functions.h"
+#include "renderer/reorder/key_grid.h"
+#include "renderer/reorder/key_stage.h"
 #include "renderer/vk/compute_pipeline.h"
 #include "renderer/vk/gpu_buffer.h"
 #include "renderer/vk/gpu_timer.h"
@@ -68,29 +71,47 @@ float tOf(const glm::uvec4& answer) {
   return t;
 }
 
-// The three ray sets: camera rays, traced once (with `scene`'s tree) to find the points the bounce and
-// shadow rays start from.
-std::array<RaySet, 3> makeRaySets(const VulkanContext& ctx, const QueryPipelines& pipelines, VkDeviceAddress scene,
-                                  const LoadedScene& loaded, const TraceBenchOptions& o, float skyProbability) {
-  const Settings& s = o.common.settings;
-  std::array<RaySet, 3> sets;
-  RaySet& camera = sets[size_t(RayKind::Camera)];
-  camera = cameraRays(makeGpuCamera(loaded.view, s.width, s.height), s.width, s.height, o.order);
-  const DeviceRays onDevice(ctx, camera);
+// The closest hits of `rays` through `scene`'s tree, traced once: hit distances (negative: a miss) and
+// scene triangle indices.
+void traceOnce(const VulkanContext& ctx, const QueryPipelines& pipelines, VkDeviceAddress scene, const RaySet& rays,
+               std::vector<float>& t, std::vector<uint32_t>& triangle) {
+  const DeviceRays onDevice(ctx, rays);
   const DeviceAnswers traced(ctx, onDevice, scene);
   ctx.submitAndWait([&](VkCommandBuffer cmd) {
-    pipelines.closest.dispatchThreads(cmd, traced.push, camera.size());
+    pipelines.closest.dispatchThreads(cmd, traced.push, rays.size());
     computeBarrier(cmd);
   });
-  std::vector<float> t;
-  std::vector<uint32_t> triangle;
+  t.clear();
+  triangle.clear();
   for (const glm::uvec4& a : traced.download()) {
     t.push_back(tOf(a));
     triangle.push_back(a.y);
   }
+}
+
+using RaySets = std::array<RaySet, std::size(kRayKinds)>;
+
+// The ray sets: camera rays, traced once (with `scene`'s tree) to find the points the bounce and shadow rays
+// start from; with --sort-rays, the bounce rays in its key's order (the oracle's key reads their true hits).
+RaySets makeRaySets(const VulkanContext& ctx, const QueryPipelines& pipelines, VkDeviceAddress scene,
+                    const LoadedScene& loaded, const TraceBenchOptions& o, float skyProbability) {
+  const Settings& s = o.common.settings;
+  RaySets sets;
+  RaySet& camera = sets[size_t(RayKind::Camera)];
+  camera = cameraRays(makeGpuCamera(loaded.view, s.width, s.height), s.width, s.height, o.order);
+  std::vector<float> t;
+  std::vector<uint32_t> triangle;
+  traceOnce(ctx, pipelines, scene, camera, t, triangle);
   const std::vector<SurfacePoint> points = surfacePoints(camera, t, triangle, loaded.scene.triangles);
-  sets[size_t(RayKind::Bounce)] = bounceRays(points, o.seed);
+  const RaySet& bounce = sets[size_t(RayKind::Bounce)] = bounceRays(points, o.seed);
   sets[size_t(RayKind::Shadow)] = shadowRays(points, loaded.scene, skyProbability, o.seed + 1);
+  if (o.sortRays) {
+    KeyGrid grid = makeKeyGrid(loaded.scene.bounds(), loaded.view.position, s);
+    grid.gpu.spatialBits = spatialKeyBits(*o.sortRays, grid.gpu);
+    std::vector<float> hitT;
+    if (*o.sortRays == KeyStrategy::Oracle) traceOnce(ctx, pipelines, scene, bounce, hitT, triangle);
+    sets[size_t(RayKind::BounceSorted)] = sortedByKey(bounce, *o.sortRays, baseKeyParams(grid, s), hitT);
+  }
   return sets;
 }
 
@@ -200,24 +221,24 @@ std::string quoted(std::string text) {
 void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const LoadedScene& loaded,
             const DeviceInfo& dev) {
   const Settings& s = o.common.settings;
-  std::printf("tracebench: %s, view %s, %ux%u camera rays (%s order); device %s (driver %s); %u rounds after %u "
+  std::printf("tracebench: %s, view %s, %ux%u camera rays (%s order)%s%s; device %s (driver %s); %u rounds after %u "
               "warm-up\n",
               loaded.scene.name.c_str(), loaded.view.name.c_str(), s.width, s.height,
-              o.order == CameraRayOrder::Tiles ? "tiles" : "scanline", dev.name.c_str(), dev.driver.c_str(), o.repeat,
-              o.warmup);
-  std::printf("%-7s %-7s %10s %10s %10s %10s %9s %8s %9s %7s %6s  %s\n", "bvh", "kind", "rays", "median_ms",
+              o.order == CameraRayOrder::Tiles ? "tiles" : "scanline", o.sortRays ? ", bounce-sorted by " : "",
+              o.sortRays ? toString(*o.sortRays).c_str() : "", dev.name.c_str(), dev.driver.c_str(), o.repeat, o.warmup);
+  std::printf("%-7s %-13s %10s %10s %10s %10s %9s %8s %9s %7s %6s  %s\n", "bvh", "kind", "rays", "median_ms",
               "min_ms", "max_ms", "Mrays/s", "spread%", "hit_frac", "steps", "warp", "check (Embree)");
   std::string csv = "bvh,kind,rays,median_ms,min_ms,max_ms,rays_per_second,spread_percent,hit_fraction,"
-                    "mean_steps,warp_efficiency,checked,disagreements,scene,view,width,height,order,repeat,warmup,"
-                    "seed,device,driver,revision\n";
+                    "mean_steps,warp_efficiency,checked,disagreements,scene,view,width,height,order,sort_rays,repeat,"
+                    "warmup,seed,device,driver,revision\n";
   const std::string context = quoted(loaded.scene.name) + "," + quoted(loaded.view.name) + "," +
                               std::to_string(s.width) + "," + std::to_string(s.height) + "," +
                               (o.order == CameraRayOrder::Tiles ? "tiles" : "scanline") + "," +
-                              std::to_string(o.repeat) + "," + std::to_string(o.warmup) + "," + std::to_string(o.seed) +
+                              (o.sortRays ? toString(*o.sortRays) : std::string("-")) + "," + std::to_string(o.repeat) + "," + std::to_string(o.warmup) + "," + std::to_string(o.seed) +
                               "," + quoted(dev.name) + "," + quoted(dev.driver) + "," + gitRevision();
   for (const Cell& c : cells) {
     const Figures f = figuresOf(c);
-    std::printf("%-7s %-7s %10u %10.4f %10.4f %10.4f %9.1f %8.1f %9.4f %7.2f %6.3f  %s (%u of %u differ)\n",
+    std::printf("%-7s %-13s %10u %10.4f %10.4f %10.4f %9.1f %8.1f %9.4f %7.2f %6.3f  %s (%u of %u differ)\n",
                 toString(c.bvh).c_str(), c.kind->name, c.rays->size(), f.median, f.min, f.max, f.raysPerSecond * 1e-6,
                 f.spreadPercent, c.hitFraction, c.meanSteps, c.warpEfficiency, agrees(c) ? "ok" : "MISMATCH",
                 c.disagreements, c.checked);
@@ -240,7 +261,7 @@ int runTraceBench(const TraceBenchOptions& o) {
   std::vector<GpuBuffer> blocks;  // each tree's scene block (GpuSceneData::block)
   for (BvhLayout bvh : o.bvhs) blocks.push_back(makeBufferFrom(ctx, std::vector<gpu::GpuScene>{scene.block(bvh)}));
   const QueryPipelines pipelines(ctx);
-  const std::array<RaySet, 3> sets = makeRaySets(ctx, pipelines, blocks.front().address(), loaded, o,
+  const RaySets sets = makeRaySets(ctx, pipelines, blocks.front().address(), loaded, o,
                                                  scene.block(o.bvhs.front()).skyLightProbability);
   std::vector<DeviceRays> rays;  // one copy of each kind's rays; each cell its own answers
   for (RayKind kind : o.kinds) rays.emplace_back(ctx, sets[size_t(kind)]);

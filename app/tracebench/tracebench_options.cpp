@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "app/bench/bench_sweep.h"
+#include "renderer/reorder/key_strategies.h"
 
 namespace raylab {
 
@@ -14,8 +15,11 @@ const char* traceBenchUsage() {
          "  --bvhs L[,L...]      trees traversed, each in the same rounds: binary|sbvh|wide (default: --bvh's,\n"
          "                       as render)\n"
          "  --wide-collapse greedy|sah  the wide tree's collapse (as render)\n"
-         "  --kinds K[,K...]     camera|bounce|shadow (default all three; bounce and shadow rays start at the\n"
-         "                       camera rays' hits)\n"
+         "  --kinds K[,K...]     camera|bounce|shadow|bounce-sorted (default all; bounce and shadow rays start\n"
+         "                       at the camera rays' hits)\n"
+         "  --sort-rays S        also trace the bounce rays sorted by strategy S's key (bounce-sorted): a strategy\n"
+         "                       that learns nothing (fixed, origin, direction, origin-direction, two-point,\n"
+         "                       oracle); --grid, --clamp and --fixed-factor as render\n"
          "  --order tiles|scanline  the camera rays' order: the generate stage's 8x4-pixel tiles (default) or rows\n"
          "  --repeat R           timed rounds, 1..1000 (default 10), after --warmup rounds, 0..1000 (default 3)\n"
          "  --seed S             seed of the bounce and shadow directions (default 1)\n"
@@ -29,19 +33,21 @@ namespace {
 
 // The flags of every mode that say what is traced; the others (bounces, strategies, ...) describe a render
 // and would be ignored here without a word, so they are refused.
-const std::vector<std::string> kSharedFlags = {"--scene", "--view", "--size", "--bvh", "--wide-collapse", "--device"};
-const std::vector<std::string> kOwnFlags = {"--bvhs", "--kinds", "--order", "--repeat", "--warmup",
-                                            "--seed", "--check",  "--csv",   "--validate"};
+const std::vector<std::string> kSharedFlags = {"--scene", "--view",  "--size",  "--bvh",         "--wide-collapse",
+                                               "--device", "--grid", "--clamp", "--fixed-factor"};
+const std::vector<std::string> kOwnFlags = {"--bvhs", "--kinds", "--sort-rays", "--order", "--repeat", "--warmup",
+                                            "--seed", "--check", "--csv",       "--validate"};
 
 std::vector<RayKind> parseKinds(const std::string& text) {
   std::vector<RayKind> kinds;
   for (const std::string& name : splitList(text)) {
     const auto* info = std::find_if(std::begin(kRayKinds), std::end(kRayKinds),
                                     [&](const RayKindInfo& k) { return name == k.name; });
-    if (info == std::end(kRayKinds)) throw UsageError("--kinds: unknown kind '" + name + "' (camera, bounce, shadow)");
+    if (info == std::end(kRayKinds))
+      throw UsageError("--kinds: unknown kind '" + name + "' (camera, bounce, shadow, bounce-sorted)");
     if (std::find(kinds.begin(), kinds.end(), info->kind) == kinds.end()) kinds.push_back(info->kind);
   }
-  if (kinds.empty()) throw UsageError("--kinds needs at least one of camera, bounce, shadow");
+  if (kinds.empty()) throw UsageError("--kinds needs at least one of camera, bounce, shadow, bounce-sorted");
   return kinds;
 }
 
@@ -62,6 +68,15 @@ TraceBenchOptions parseTraceBenchOptions(std::vector<std::string> args) {
   TraceBenchOptions o;
   if (auto v = takeFlag(args, "--kinds")) o.kinds = parseKinds(*v);
   if (auto v = takeFlag(args, "--bvhs")) o.bvhs = parseBvhs(*v);
+  if (auto v = takeFlag(args, "--sort-rays")) {
+    const std::optional<KeyStrategy> s = parseKeyStrategy(*v);
+    if (!s) throw UsageError("--sort-rays: unknown strategy '" + *v + "' (" + keyStrategyNames() + ")");
+    if (strategyInfo(*s).learnsLengths || *s == KeyStrategy::None || *s == KeyStrategy::DeadLast)
+      throw UsageError("--sort-rays " + *v + ": " +
+                       (strategyInfo(*s).learnsLengths ? "it learns lengths over frames, and a batch of rays has none"
+                                                       : "it orders nothing where every ray is live"));
+    o.sortRays = s;
+  }
   if (auto v = takeFlag(args, "--order")) {
     if (*v != "tiles" && *v != "scanline") throw UsageError("--order: '" + *v + "' is neither tiles nor scanline");
     o.order = *v == "tiles" ? CameraRayOrder::Tiles : CameraRayOrder::Scanline;
@@ -88,6 +103,12 @@ TraceBenchOptions parseTraceBenchOptions(std::vector<std::string> args) {
   if (!sizeGiven) o.common.settings.width = 2048, o.common.settings.height = 1024;
   if (bvhGiven && !o.bvhs.empty()) throw UsageError("--bvh and --bvhs: give one of them");
   if (o.bvhs.empty()) o.bvhs = {o.common.settings.bvh};
+  if (o.kinds.empty()) {
+    o.kinds = {RayKind::Camera, RayKind::Bounce, RayKind::Shadow};
+    if (o.sortRays) o.kinds.insert(o.kinds.begin() + 2, RayKind::BounceSorted);
+  }
+  if (!o.sortRays && std::find(o.kinds.begin(), o.kinds.end(), RayKind::BounceSorted) != o.kinds.end())
+    throw UsageError("--kinds bounce-sorted needs --sort-rays STRATEGY: the key that sorts them");
   return o;
 }
 

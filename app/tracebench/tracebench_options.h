@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,21 +13,24 @@
 
 namespace raylab {
 
-enum class RayKind { Camera, Bounce, Shadow };
+enum class RayKind { Camera, Bounce, Shadow, BounceSorted };
 struct RayKindInfo {
   RayKind kind;
   const char* name;
   uint32_t query;  // RL_HIT_QUERY_*: the traversal its rays take
 };
+// bounce-sorted: the bounce rays in the order --sort-rays' key gives them (the same rays).
 inline constexpr RayKindInfo kRayKinds[] = {{RayKind::Camera, "camera", RL_HIT_QUERY_CLOSEST},
                                             {RayKind::Bounce, "bounce", RL_HIT_QUERY_CLOSEST},
-                                            {RayKind::Shadow, "shadow", RL_HIT_QUERY_OCCLUDED}};
+                                            {RayKind::Shadow, "shadow", RL_HIT_QUERY_OCCLUDED},
+                                            {RayKind::BounceSorted, "bounce-sorted", RL_HIT_QUERY_CLOSEST}};
 inline const RayKindInfo& rayKindInfo(RayKind k) { return kRayKinds[static_cast<size_t>(k)]; }
 
 struct TraceBenchOptions {
   CommonOptions common;  // scene, view, size, wide collapse, device, validation
   std::vector<BvhLayout> bvhs;  // --bvhs (or --bvh): every tree is timed in the same rounds
-  std::vector<RayKind> kinds{RayKind::Camera, RayKind::Bounce, RayKind::Shadow};
+  std::vector<RayKind> kinds;  // default: camera, bounce (and bounce-sorted with --sort-rays), shadow
+  std::optional<KeyStrategy> sortRays;  // --sort-rays: the key that orders bounce-sorted (grid flags as render)
   CameraRayOrder order = CameraRayOrder::Tiles;
   uint32_t repeat = 10, warmup = 3, seed = 1, check = 4096;
   std::string csv;

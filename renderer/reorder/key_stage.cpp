@@ -67,13 +67,19 @@ void KeyStage::apply(const Settings& settings, glm::vec3 cameraPos, uint32_t max
   uploadParams();
 }
 
-void KeyStage::uploadParams() {
+gpu::GpuKeyParams baseKeyParams(const KeyGrid& grid, const Settings& settings) {
   gpu::GpuKeyParams p{};
-  p.grid = grid_.gpu;
-  float factor = std::clamp(settings_.fixedFactor, SettingLimits::kMinFixedFactor, SettingLimits::kMaxFixedFactor);
+  p.grid = grid.gpu;
+  float factor = std::clamp(settings.fixedFactor, SettingLimits::kMinFixedFactor, SettingLimits::kMaxFixedFactor);
   if (!(factor >= 0.0f)) factor = 0.5f;  // NaN
-  float lengthMax = std::max(grid_.sceneDiagonal, factor * grid_.largestExtent) * 1.01f + 1e-6f;
-  p.fixedLength = std::min(factor * grid_.largestExtent, lengthMax);
+  p.cache.lengthMax = std::max(grid.sceneDiagonal, factor * grid.largestExtent) * 1.01f + 1e-6f;
+  p.fixedLength = std::min(factor * grid.largestExtent, p.cache.lengthMax);
+  return p;
+}
+
+void KeyStage::uploadParams() {
+  gpu::GpuKeyParams p = baseKeyParams(grid_, settings_);
+  const float lengthMax = p.cache.lengthMax;
   p.oracleT = oracleT_.valid() ? oracleT_.address() : 0;
   if (cache_) p.cache = cache_->gpuView();
   p.cache.lengthMax = lengthMax;

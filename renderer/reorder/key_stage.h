@@ -29,6 +29,12 @@ namespace raylab {
 
 class VulkanContext;
 
+// The key parameters that do not depend on the GPU: the grid as given (its spatialBits set for the strategy),
+// the fixed length (fixedFactor times the scene's largest extent) and the longest length a key may use
+// (cache.lengthMax); the rest of `cache` and oracleT zero. KeyStage adds its cache and buffers to them; a host
+// caller (the CPU twins in key_functions.h) can key rays of strategies that learn nothing with them alone.
+gpu::GpuKeyParams baseKeyParams(const KeyGrid& grid, const Settings& settings);
+
 class KeyStage {
  public:
   // Keeps a copy of the scene's triangles (the cache is rebuilt from them when the grid changes); a new

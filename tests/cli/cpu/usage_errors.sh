@@ -33,6 +33,8 @@ check "unknown option '--bounces'" tracebench --bounces 3
 check "--repeat" tracebench --repeat 0
 check "give one of them" tracebench --bvh wide --bvhs sbvh
 check "unknown BVH 'quad'" tracebench --bvhs sbvh,quad
+check "learns lengths" tracebench --sort-rays gaussian
+check "needs --sort-rays" tracebench --kinds bounce-sorted
 check "did you mean hall?" bench --cases temple@hal --out-dir bench-out
 [ -e bench-out ] && { echo "FAIL: a refused bench sweep left bench-out behind"; fail=1; }
 check "did you mean hall?" study temple@hal --out-dir study-out

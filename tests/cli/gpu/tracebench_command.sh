@@ -3,7 +3,8 @@
 # on; its table and CSV say how many rays of each kind were traced (camera: one a pixel; bounce: one a camera
 # hit; shadow: at most one a camera hit; the same rays through every tree), and the GPU's answers agree with
 # Embree's on the sample it checks. Each row's traversal steps and virtual warp efficiency are in range, and
-# the camera rays row by row (--order scanline) take the same steps in all as in tiles, in other warps.
+# the camera rays row by row (--order scanline) take the same steps in all as in tiles, in other warps; the
+# bounce rays sorted by two-point keys (--sort-rays) too, in warps that waste fewer lanes (the lab's premise).
 # --kinds picks kinds, in their order.
 set -eu
 raylab="$1"
@@ -42,6 +43,17 @@ assert rows["order"] == "scanline" and rows["rays"] == tiles["rays"], rows
 assert rows["mean_steps"] == tiles["mean_steps"], (rows["mean_steps"], tiles["mean_steps"])
 assert rows["warp_efficiency"] != tiles["warp_efficiency"], "the order changed no warp"
 print("ok: camera steps", rows["mean_steps"], "warp efficiency tiles", tiles["warp_efficiency"], "rows", rows["warp_efficiency"])
+PY
+"$raylab" tracebench --scene temple --view hall --size 96x64 --repeat 1 --warmup 0 --sort-rays two-point \
+  --csv "$dir/o.csv" >/dev/null
+python3 - "$dir/o.csv" <<'PY'
+import csv, sys
+rows = {r["kind"]: r for r in csv.DictReader(open(sys.argv[1]))}
+assert list(rows) == ["camera", "bounce", "bounce-sorted", "shadow"], list(rows)
+b, s = rows["bounce"], rows["bounce-sorted"]
+assert s["rays"] == b["rays"] and s["mean_steps"] == b["mean_steps"] and s["hit_fraction"] == b["hit_fraction"], (b, s)
+assert float(s["warp_efficiency"]) > float(b["warp_efficiency"]), (b["warp_efficiency"], s["warp_efficiency"])
+print("ok: bounce warp efficiency", b["warp_efficiency"], "sorted by two-point", s["warp_efficiency"])
 PY
 grep -q "^wide *shadow .* ok (" "$dir/out.txt" || { echo "FAIL: no checked shadow row"; cat "$dir/out.txt"; exit 1; }
 "$raylab" tracebench --scene cornell --size 32x16 --kinds shadow,camera --repeat 1 --warmup 0 --csv "$dir/k.csv" >/dev/null

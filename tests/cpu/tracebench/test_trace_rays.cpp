@@ -9,6 +9,9 @@
 #include <vector>
 
 #include "app/tracebench/trace_rays.h"
+#include "renderer/reorder/key_functions.h"
+#include "renderer/reorder/key_grid.h"
+#include "renderer/reorder/key_stage.h"
 #include "shaders/camera_order.h"
 
 namespace raylab {
@@ -147,6 +150,43 @@ TEST(TraceRays, ShadowRaysStopJustShortOfAPointOnTheLight) {
   scene.triangles.pop_back();
   const RaySet noLight = shadowRays(points, scene, 0.0f, 3);
   for (uint32_t i = 0; i < noLight.size(); ++i) EXPECT_EQ(noLight.directions[i].w, 1e30f);
+}
+
+// Sorted as the path sorter sorts: the same rays, by a key that never falls along the order, and stably (rays
+// of one key keep their order). Two-point keys on a grid over the floor's points.
+TEST(TraceRays, SortedByKeyIsAStablePermutationByTheStrategysKey) {
+  const RaySet rays = bounceRays(floorPoints(5000), 11);
+  Bounds box;
+  box.min = glm::vec3(-10, -10, -1);
+  box.max = glm::vec3(10, 10, 5);
+  Settings s;
+  KeyGrid grid = makeKeyGrid(box, glm::vec3(0, 0, 4), s);
+  grid.gpu.spatialBits = spatialKeyBits(KeyStrategy::TwoPoint, grid.gpu);
+  const gpu::GpuKeyParams params = baseKeyParams(grid, s);
+  const RaySet sorted = sortedByKey(rays, KeyStrategy::TwoPoint, params, {});
+  ASSERT_EQ(sorted.size(), rays.size());
+  auto keyOf = [&](const RaySet& set, uint32_t i, uint32_t pathId) {
+    float len = 0;
+    const KeyPath path{glm::vec3(set.origins[i]), glm::vec3(set.directions[i]), pathId, -1.0f};
+    return computeKey(strategyId(KeyStrategy::TwoPoint), params, KeyEnv{}, path, 1u, len);
+  };
+  // Where each sorted ray came from (the rays are distinct: random directions from distinct points).
+  std::vector<uint32_t> from(sorted.size());
+  std::set<uint32_t> seen;
+  for (uint32_t i = 0; i < sorted.size(); ++i) {
+    for (uint32_t j = 0; j < rays.size(); ++j)
+      if (rays.origins[j] == sorted.origins[i] && rays.directions[j] == sorted.directions[i]) from[i] = j;
+    seen.insert(from[i]);
+  }
+  EXPECT_EQ(seen.size(), rays.size()) << "not a permutation";
+  uint32_t distinctKeys = 1;
+  for (uint32_t i = 1; i < sorted.size(); ++i) {
+    const uint32_t a = keyOf(rays, from[i - 1], from[i - 1]), b = keyOf(rays, from[i], from[i]);
+    ASSERT_LE(a, b) << "keys fall at " << i;
+    if (a == b) EXPECT_LT(from[i - 1], from[i]) << "not stable at " << i;
+    distinctKeys += a != b;
+  }
+  EXPECT_GT(distinctKeys, 10u) << "the key orders nothing: the test proves nothing";
 }
 
 }  // namespace
