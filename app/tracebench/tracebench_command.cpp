@@ -261,8 +261,8 @@ int runTraceBench(const TraceBenchOptions& o) {
   std::vector<GpuBuffer> blocks;  // each tree's scene block (GpuSceneData::block)
   for (BvhLayout bvh : o.bvhs) blocks.push_back(makeBufferFrom(ctx, std::vector<gpu::GpuScene>{scene.block(bvh)}));
   const QueryPipelines pipelines(ctx);
-  const RaySets sets = makeRaySets(ctx, pipelines, blocks.front().address(), loaded, o,
-                                                 scene.block(o.bvhs.front()).skyLightProbability);
+  const RaySets sets =
+      makeRaySets(ctx, pipelines, blocks.front().address(), loaded, o, scene.block(o.bvhs.front()).skyLightProbability);
   std::vector<DeviceRays> rays;  // one copy of each kind's rays; each cell its own answers
   for (RayKind kind : o.kinds) rays.emplace_back(ctx, sets[size_t(kind)]);
   std::vector<Cell> cells;
