@@ -90,6 +90,7 @@ RaySet shadowRays(const std::vector<SurfacePoint>& points, const Scene& scene, f
   std::vector<uint32_t> sceneOrder(scene.triangles.size());
   std::iota(sceneOrder.begin(), sceneOrder.end(), 0u);
   const std::vector<gpu::GpuEmitter> emitters = buildEmitterTable(scene, sceneOrder).emitters;
+  if (emitters.empty() && !(skyProbability > 0.0f)) return {};  // no light at all: the shader traces no ray
   if (emitters.empty()) skyProbability = 1.0f;
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u01(0.0f, 1.0f);

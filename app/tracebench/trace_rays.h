@@ -48,7 +48,7 @@ RaySet bounceRays(const std::vector<SurfacePoint>& points, uint32_t seed);
 // uniform direction above the surface, unbounded; below it the shader never traces), otherwise toward a
 // uniform point of an emissive triangle picked by its power (the renderer's emitter table), stopping at
 // 0.999 of the distance. Points whose light lies behind their surface or in their plane get no ray, as in
-// the shader.
+// the shader; a scene with neither emitters nor sky (`skyProbability` 0) gets none at all.
 RaySet shadowRays(const std::vector<SurfacePoint>& points, const Scene& scene, float skyProbability, uint32_t seed);
 
 // `rays` in the order the path sorter would give them: each ray keyed by `strategy`'s key function (the CPU
