@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "app/bench/bench_spread.h"
 #include "app/cli_options.h"
 #include "app/scene_setup.h"
 #include "renderer/checked_write.h"
@@ -256,12 +257,8 @@ int runBench(const BenchOptions& o) {
   }
   if (!o.csv.empty()) {
     std::string csv = "sort,n,median_ms,min_ms,max_ms,pairs_per_s,check,bits,dist,repeat,device,driver\n";
-    auto quoted = [](std::string s) {
-      std::replace(s.begin(), s.end(), '"', '\'');
-      return "\"" + s + "\"";
-    };
     const std::string extra = "," + std::to_string(o.bits) + "," + o.dist + "," + std::to_string(o.repeat) + "," +
-                              quoted(dev.name) + "," + quoted(dev.driver);
+                              csvText(dev.name) + "," + csvText(dev.driver);
     for (const Row& r : rows) csv += formatRow(r, true, extra);
     writeFileChecked(o.csv, csv);  // a WriteError is reported by runSortBenchCommand: exit 1
   }

@@ -42,6 +42,11 @@ std::string csvNumber(std::optional<double> value) {
   return text.str();
 }
 
+std::string csvText(std::string text) {
+  std::replace(text.begin(), text.end(), '"', '\'');
+  return "\"" + text + "\"";
+}
+
 std::string screenNumber(std::optional<double> value, int decimals) {
   if (!value) return "n/a";
   char text[64];

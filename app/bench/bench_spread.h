@@ -28,6 +28,8 @@ nlohmann::json toJson(const Spread& s, bool measured = true);
 // A CSV cell: the number as an ostream writes it (6 significant digits), or empty when not measured. Every
 // bench output writes "not measured" one way: empty in the CSV, null in JSON, "n/a" on screen.
 std::string csvNumber(std::optional<double> value);
+// A CSV text cell: quoted, with its own double quotes turned into apostrophes (device and driver names).
+std::string csvText(std::string text);
 // A figure the renderer writes as a negative number when it did not measure it (renderer/frame_stats.h).
 inline std::optional<double> measuredOrNone(double value) {
   return value < 0.0 ? std::nullopt : std::optional<double>(value);

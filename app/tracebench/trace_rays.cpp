@@ -34,6 +34,10 @@ void RaySet::add(const glm::vec3& origin, const glm::vec3& direction, float tMax
   directions.emplace_back(direction, tMax);
 }
 
+glm::vec3 cameraRayDirection(const gpu::GpuCamera& cam, glm::vec2 ndc) {
+  return glm::normalize(cam.forward + ndc.x * cam.tanHalfFovY * cam.aspect * cam.right + ndc.y * cam.tanHalfFovY * cam.up);
+}
+
 RaySet cameraRays(const gpu::GpuCamera& cam, uint32_t width, uint32_t height, CameraRayOrder order) {
   RaySet rays;
   const uint32_t n = width * height;
@@ -43,11 +47,7 @@ RaySet cameraRays(const gpu::GpuCamera& cam, uint32_t width, uint32_t height, Ca
     const uint32_t pixel = order == CameraRayOrder::Tiles ? gpu::cameraPixelOfSlot(slot, width, height) : slot;
     const float x = (float(pixel % width) + 0.5f) / float(width);
     const float y = (float(pixel / width) + 0.5f) / float(height);
-    const glm::vec2 ndc(2.0f * x - 1.0f, 1.0f - 2.0f * y);  // as path_shading.glsl's cameraPath
-    rays.add(cam.position,
-             glm::normalize(cam.forward + ndc.x * cam.tanHalfFovY * cam.aspect * cam.right +
-                            ndc.y * cam.tanHalfFovY * cam.up),
-             kUnbounded);
+    rays.add(cam.position, cameraRayDirection(cam, glm::vec2(2.0f * x - 1.0f, 1.0f - 2.0f * y)), kUnbounded);
   }
   return rays;
 }

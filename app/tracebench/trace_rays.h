@@ -26,6 +26,8 @@ struct RaySet {
 // One ray through each pixel's centre, in the slots the generate stage gives camera paths (Tiles:
 // camera_order.h's 8x4-pixel tiles, the order the wavefront's first trace meets) or row by row (Scanline).
 enum class CameraRayOrder { Tiles, Scanline };
+// path_shading.glsl's cameraPath direction through the image point `ndc` (-1..1 on each axis, +y up).
+glm::vec3 cameraRayDirection(const gpu::GpuCamera& camera, glm::vec2 ndc);
 RaySet cameraRays(const gpu::GpuCamera& camera, uint32_t width, uint32_t height,
                   CameraRayOrder order = CameraRayOrder::Tiles);
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "app/bench/bench_spread.h"
 #include "app/scene_setup.h"
 #include "app/tracebench/tracebench_options.h"
 #include "renderer/bvh/embree_scene.h"
@@ -197,24 +198,14 @@ void checkCell(Cell& c, const EmbreeScene& embree, uint32_t limit) {
 // Rays grazing an edge or a shared vertex may go either way in two different (correct) intersectors.
 bool agrees(const Cell& c) { return uint64_t(c.disagreements) * 1000 <= c.checked; }
 
-struct Figures {
-  double median = 0, min = 0, max = 0, raysPerSecond = 0, spreadPercent = 0;
+struct Figures : Spread {
+  double raysPerSecond = 0, spreadPercent = 0;
 };
 Figures figuresOf(const Cell& c) {
-  std::vector<double> ms = c.ms;
-  std::sort(ms.begin(), ms.end());
-  Figures f;
-  f.median = ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
-  f.min = ms.front();
-  f.max = ms.back();
+  Figures f{spreadOf(c.ms)};
   f.raysPerSecond = f.median > 0.0 ? c.rays->size() / (f.median * 1e-3) : 0.0;
   f.spreadPercent = f.median > 0.0 ? 100.0 * (f.max - f.min) / f.median : 0.0;
   return f;
-}
-
-std::string quoted(std::string text) {
-  std::replace(text.begin(), text.end(), '"', '\'');
-  return "\"" + text + "\"";
 }
 
 // The table on stdout and, with --csv, the same rows with what produced them.
@@ -231,11 +222,11 @@ void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const Lo
   std::string csv = "bvh,kind,rays,median_ms,min_ms,max_ms,rays_per_second,spread_percent,hit_fraction,"
                     "mean_steps,warp_efficiency,checked,disagreements,scene,view,width,height,order,sort_rays,repeat,"
                     "warmup,seed,device,driver,revision\n";
-  const std::string context = quoted(loaded.scene.name) + "," + quoted(loaded.view.name) + "," +
+  const std::string context = csvText(loaded.scene.name) + "," + csvText(loaded.view.name) + "," +
                               std::to_string(s.width) + "," + std::to_string(s.height) + "," +
                               (o.order == CameraRayOrder::Tiles ? "tiles" : "scanline") + "," +
                               (o.sortRays ? toString(*o.sortRays) : std::string("-")) + "," + std::to_string(o.repeat) + "," + std::to_string(o.warmup) + "," + std::to_string(o.seed) +
-                              "," + quoted(dev.name) + "," + quoted(dev.driver) + "," + gitRevision();
+                              "," + csvText(dev.name) + "," + csvText(dev.driver) + "," + gitRevision();
   for (const Cell& c : cells) {
     const Figures f = figuresOf(c);
     std::printf("%-7s %-13s %10u %10.4f %10.4f %10.4f %9.1f %8.1f %9.4f %7.2f %6.3f  %s (%u of %u differ)\n",

@@ -12,6 +12,7 @@
 #include <map>
 #include <random>
 
+#include "app/tracebench/trace_rays.h"
 #include "renderer/bvh/bvh_traverse_cpu.h"
 #include "renderer/bvh/bvh_wide.h"
 #include "renderer/bvh/bvh_wide_slots.h"
@@ -147,8 +148,7 @@ std::vector<Ray> testRays(const Scene& scene, uint32_t perView, uint32_t seconda
     const gpu::GpuCamera c = makeGpuCamera(v, 512, 256);
     for (uint32_t i = 0; i < perView; ++i) {
       const glm::vec2 ndc(2.0f * u(rng) - 1.0f, 1.0f - 2.0f * u(rng));
-      rays.push_back({c.position, glm::normalize(c.forward + ndc.x * c.tanHalfFovY * c.aspect * c.right +
-                                                 ndc.y * c.tanHalfFovY * c.up)});
+      rays.push_back({c.position, cameraRayDirection(c, ndc)});
     }
   }
   std::uniform_int_distribution<size_t> pick(0, scene.triangles.size() - 1);

@@ -186,7 +186,9 @@ TEST(TraceRays, SortedByKeyIsAStablePermutationByTheStrategysKey) {
   for (uint32_t i = 1; i < sorted.size(); ++i) {
     const uint32_t a = keyOf(rays, from[i - 1], from[i - 1]), b = keyOf(rays, from[i], from[i]);
     ASSERT_LE(a, b) << "keys fall at " << i;
-    if (a == b) EXPECT_LT(from[i - 1], from[i]) << "not stable at " << i;
+    if (a == b) {
+      EXPECT_LT(from[i - 1], from[i]) << "not stable at " << i;
+    }
     distinctKeys += a != b;
   }
   EXPECT_GT(distinctKeys, 10u) << "the key orders nothing: the test proves nothing";

@@ -23,6 +23,7 @@
 #include "scenes/procedural.h"
 #include "scenes/scene_library.h"
 #include "shaders/hit_query_types.h"
+#include "app/tracebench/trace_rays.h"
 #include "tests/gpu_test.h"
 #include "tests/scene_checks.h"
 
@@ -31,16 +32,6 @@ namespace {
 
 class EmbreeHits : public GpuTest {};
 
-struct RayBatch {
-  std::vector<glm::vec4> origins;     // xyz
-  std::vector<glm::vec4> directions;  // xyz, w: tMax
-  void add(const glm::vec3& o, const glm::vec3& d, float tMax) {
-    origins.emplace_back(o, 0.0f);
-    directions.emplace_back(d, tMax);
-  }
-  size_t size() const { return origins.size(); }
-};
-
 struct GpuHit {
   float t;
   uint32_t triangle;  // scene index
@@ -48,7 +39,7 @@ struct GpuHit {
 };
 
 std::vector<GpuHit> traceOnGpu(const VulkanContext& ctx, const GpuSceneData& scene, BvhLayout layout,
-                               const RayBatch& rays) {
+                               const RaySet& rays) {
   const uint32_t n = static_cast<uint32_t>(rays.size());
   GpuBuffer block = makeBufferFrom(ctx, std::vector<gpu::GpuScene>{scene.block(layout)});
   GpuBuffer origins = makeBufferFrom(ctx, rays.origins);
@@ -96,8 +87,8 @@ struct Tally {
 float hitTolerance(float t) { return 1e-4f * (1.0f + std::abs(t)); }
 
 // Compares one batch; fills `next` with diffuse bounce rays from Embree's hits (for the next bounce).
-void compareBatchWithEmbree(const Scene& scene, const EmbreeScene& embree, const RayBatch& rays,
-                            const std::vector<GpuHit>& gpu, Tally& tally, RayBatch* next, std::mt19937& rng) {
+void compareBatchWithEmbree(const Scene& scene, const EmbreeScene& embree, const RaySet& rays,
+                            const std::vector<GpuHit>& gpu, Tally& tally, RaySet* next, std::mt19937& rng) {
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::normal_distribution<float> gauss;
   const float diagonal = glm::length(scene.bounds().extent());
@@ -170,7 +161,7 @@ void checkLayout(const VulkanContext& ctx, const Scene& scene, const GpuSceneDat
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::normal_distribution<float> gauss;
   const Bounds b = scene.bounds();
-  RayBatch rays;
+  RaySet rays;
   for (const Viewpoint& v : scene.viewpoints)
     for (const glm::vec3& d : cameraRays(v, 64, 32)) rays.add(v.position, d, 1e30f);
   for (uint32_t i = 0; i < randomRays; ++i) {
@@ -180,7 +171,7 @@ void checkLayout(const VulkanContext& ctx, const Scene& scene, const GpuSceneDat
   }
   Tally tally;
   for (int bounce = 0; bounce < 3 && rays.size() > 0; ++bounce) {
-    RayBatch next;
+    RaySet next;
     const std::vector<GpuHit> hits = traceOnGpu(ctx, data, layout, rays);
     compareBatchWithEmbree(scene, embree, rays, hits, tally, bounce < 2 ? &next : nullptr, rng);
     rays = std::move(next);
@@ -244,7 +235,7 @@ TEST_F(EmbreeHits, AnEmptySceneMissesEveryRay) {
   Scene empty;
   empty.materials.push_back(Material{});
   GpuSceneData data(ctx(), empty, Settings{}.wideCollapse);
-  RayBatch rays;
+  RaySet rays;
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
   for (int i = 0; i < 256; ++i) {
