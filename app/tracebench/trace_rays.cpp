@@ -121,15 +121,37 @@ RaySet shadowRays(const std::vector<SurfacePoint>& points, const Scene& scene, f
   return rays;
 }
 
+std::string raySetBytes(const RaySet& rays) {
+  std::string bytes;
+  bytes.reserve(size_t(rays.size()) * 2 * sizeof(glm::vec4));
+  for (uint32_t i = 0; i < rays.size(); ++i) {
+    const glm::vec4 origin(glm::vec3(rays.origins[i]), 0.0f);
+    bytes.append(reinterpret_cast<const char*>(&origin), sizeof origin);
+    bytes.append(reinterpret_cast<const char*>(&rays.directions[i]), sizeof(glm::vec4));
+  }
+  return bytes;
+}
+
+std::string triangleBytes(const std::vector<Triangle>& triangles) {
+  std::string bytes;
+  bytes.reserve(triangles.size() * 3 * sizeof(glm::vec4));
+  for (const Triangle& t : triangles)
+    for (const glm::vec3& v : t.v) {
+      const glm::vec4 p(v, 0.0f);
+      bytes.append(reinterpret_cast<const char*>(&p), sizeof p);
+    }
+  return bytes;
+}
+
 RaySet sortedByKey(const RaySet& rays, KeyStrategy strategy, const gpu::GpuKeyParams& params,
-                   const std::vector<float>& hitT) {
+                   const std::vector<float>& hitT, uint32_t ignoredBits) {
   std::vector<uint32_t> keys(rays.size()), order(rays.size());
   KeyEnv env;
   env.bounce = 1;
   for (uint32_t i = 0; i < rays.size(); ++i) {
     const KeyPath path{glm::vec3(rays.origins[i]), glm::vec3(rays.directions[i]), i, i < hitT.size() ? hitT[i] : -1.0f};
     float length = 0.0f;
-    keys[i] = computeKey(strategyId(strategy), params, env, path, 1u, length);
+    keys[i] = computeKey(strategyId(strategy), params, env, path, 1u, length) >> ignoredBits;
   }
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return keys[a] < keys[b]; });

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -57,7 +58,17 @@ RaySet shadowRays(const std::vector<SurfacePoint>& points, const Scene& scene, f
 // twins of keys.glsl, with `params`; ray i is path i, and `hitT[i]` its true hit distance, which only the
 // oracle reads: may be empty otherwise), then stably sorted by key, as the radix sort orders them. For the
 // strategies that learn nothing (learned lengths need frames of traces, which a batch of rays has not had).
+// The sort compares keys without their `ignoredBits` low bits, as the radix sort does for --sort-bits
+// (ignoredKeyBits).
 RaySet sortedByKey(const RaySet& rays, KeyStrategy strategy, const gpu::GpuKeyParams& params,
-                   const std::vector<float>& hitT);
+                   const std::vector<float>& hitT, uint32_t ignoredBits = 0);
+
+// The files of `tracebench --export`, so that another tracer (a public kernel, a CPU traversal) traces the very
+// rays and triangles timed here. Little-endian 32-bit floats, no header:
+// - rays: per ray 8 floats, origin x y z and 0, then the unit direction x y z and tMax (1e30: unbounded);
+// - triangles: per triangle 12 floats, the vertices v0 v1 v2 each as x y z and 0, in the scene's triangle order
+//   (the index hits report and Embree checks).
+std::string raySetBytes(const RaySet& rays);
+std::string triangleBytes(const std::vector<Triangle>& triangles);
 
 }  // namespace raylab

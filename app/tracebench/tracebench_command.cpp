@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 
 #include "app/bench/bench_spread.h"
 #include "app/scene_setup.h"
@@ -111,7 +112,8 @@ RaySets makeRaySets(const VulkanContext& ctx, const QueryPipelines& pipelines, V
     grid.gpu.spatialBits = spatialKeyBits(*o.sortRays, grid.gpu);
     std::vector<float> hitT;
     if (*o.sortRays == KeyStrategy::Oracle) traceOnce(ctx, pipelines, scene, bounce, hitT, triangle);
-    sets[size_t(RayKind::BounceSorted)] = sortedByKey(bounce, *o.sortRays, baseKeyParams(grid, s), hitT);
+    sets[size_t(RayKind::BounceSorted)] = sortedByKey(bounce, *o.sortRays, baseKeyParams(grid, s), hitT,
+                                                      ignoredKeyBits(grid.gpu.spatialBits, s.sortBits));
   }
   return sets;
 }
@@ -220,13 +222,15 @@ void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const Lo
   std::printf("%-7s %-13s %10s %10s %10s %10s %9s %8s %9s %7s %6s  %s\n", "bvh", "kind", "rays", "median_ms",
               "min_ms", "max_ms", "Mrays/s", "spread%", "hit_frac", "steps", "warp", "check (Embree)");
   std::string csv = "bvh,kind,rays,median_ms,min_ms,max_ms,rays_per_second,spread_percent,hit_fraction,"
-                    "mean_steps,warp_efficiency,checked,disagreements,scene,view,width,height,order,sort_rays,repeat,"
-                    "warmup,seed,device,driver,revision\n";
+                    "mean_steps,warp_efficiency,checked,disagreements,scene,view,width,height,order,sort_rays,sort_bits,"
+                    "repeat,warmup,seed,device,driver,revision\n";
   const std::string context = csvText(loaded.scene.name) + "," + csvText(loaded.view.name) + "," +
                               std::to_string(s.width) + "," + std::to_string(s.height) + "," +
                               (o.order == CameraRayOrder::Tiles ? "tiles" : "scanline") + "," +
-                              (o.sortRays ? toString(*o.sortRays) : std::string("-")) + "," + std::to_string(o.repeat) + "," + std::to_string(o.warmup) + "," + std::to_string(o.seed) +
-                              "," + csvText(dev.name) + "," + csvText(dev.driver) + "," + gitRevision();
+                              (o.sortRays ? toString(*o.sortRays) : std::string("-")) + "," + std::to_string(s.sortBits) + "," +
+                              std::to_string(o.repeat) + "," + std::to_string(o.warmup) + "," +
+                              std::to_string(o.seed) + "," + csvText(dev.name) + "," + csvText(dev.driver) + "," +
+                              gitRevision();
   for (const Cell& c : cells) {
     const Figures f = figuresOf(c);
     std::printf("%-7s %-13s %10u %10.4f %10.4f %10.4f %9.1f %8.1f %9.4f %7.2f %6.3f  %s (%u of %u differ)\n",
@@ -242,6 +246,20 @@ void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const Lo
   if (!o.csv.empty()) writeFileChecked(o.csv, csv);  // a WriteError reaches main: exit 1, naming the file
 }
 
+// --export: each kind's rays and the triangles, for another tracer. A folder that cannot be made is a
+// WriteError too (main: exit 1, naming it).
+void exportRays(const TraceBenchOptions& o, const RaySets& sets, const Scene& scene) {
+  std::error_code error;
+  std::filesystem::create_directories(o.exportDir, error);
+  if (error) throw WriteError("cannot write " + o.exportDir + ": " + error.message());
+  const std::string dir = o.exportDir + "/";
+  writeFileChecked(dir + "triangles.bin", triangleBytes(scene.triangles));
+  for (RayKind kind : o.kinds)
+    writeFileChecked(dir + "rays-" + rayKindInfo(kind).name + ".bin", raySetBytes(sets[size_t(kind)]));
+  std::printf("tracebench: wrote %zu triangles and the rays of %zu kinds to %s\n", scene.triangles.size(),
+              o.kinds.size(), o.exportDir.c_str());
+}
+
 int runTraceBench(const TraceBenchOptions& o) {
   const LoadedScene loaded = loadSceneForSettings(o.common.settings);
   ContextOptions co = contextOptionsFor(o.common);
@@ -254,6 +272,7 @@ int runTraceBench(const TraceBenchOptions& o) {
   const QueryPipelines pipelines(ctx);
   const RaySets sets =
       makeRaySets(ctx, pipelines, blocks.front().address(), loaded, o, scene.block(o.bvhs.front()).skyLightProbability);
+  if (!o.exportDir.empty()) exportRays(o, sets, loaded.scene);
   std::vector<DeviceRays> rays;  // one copy of each kind's rays; each cell its own answers
   for (RayKind kind : o.kinds) rays.emplace_back(ctx, sets[size_t(kind)]);
   std::vector<Cell> cells;

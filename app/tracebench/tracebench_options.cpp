@@ -19,12 +19,15 @@ const char* traceBenchUsage() {
          "                       at the camera rays' hits)\n"
          "  --sort-rays S        also trace the bounce rays sorted by strategy S's key (bounce-sorted): a strategy\n"
          "                       that learns nothing (fixed, origin, direction, origin-direction, two-point,\n"
-         "                       oracle); --grid, --clamp and --fixed-factor as render\n"
+         "                       oracle); --grid, --clamp, --fixed-factor and --sort-bits as render\n"
          "  --order tiles|scanline  the camera rays' order: the generate stage's 8x4-pixel tiles (default) or rows\n"
          "  --repeat R           timed rounds, 1..1000 (default 10), after --warmup rounds, 0..1000 (default 3)\n"
          "  --seed S             seed of the bounce and shadow directions (default 1)\n"
          "  --check N            rays of each kind compared with Embree, 0..1000000 (default 4096)\n"
          "  --csv FILE           also write the table as CSV\n"
+         "  --export DIR         also write the rays of each kind traced (DIR/rays-KIND.bin) and the scene's\n"
+         "                       triangles (DIR/triangles.bin) as raw little-endian floats, for another tracer:\n"
+         "                       a ray is origin xyz 0 and direction xyz tMax, a triangle three vertices xyz 0\n"
          "  --device NAME|N      Vulkan device (as render)\n"
          "  --validate[=sync|gpu-av]  the Khronos validation layer (exit 1 on any error)\n";
 }
@@ -34,9 +37,9 @@ namespace {
 // The flags of every mode that say what is traced; the others (bounces, strategies, ...) describe a render
 // and would be ignored here without a word, so they are refused.
 const std::vector<std::string> kSharedFlags = {"--scene", "--view",  "--size",  "--bvh",         "--wide-collapse",
-                                               "--device", "--grid", "--clamp", "--fixed-factor"};
+                                               "--device", "--grid", "--clamp", "--fixed-factor", "--sort-bits"};
 const std::vector<std::string> kOwnFlags = {"--bvhs", "--kinds", "--sort-rays", "--order", "--repeat", "--warmup",
-                                            "--seed", "--check", "--csv",       "--validate"};
+                                            "--seed", "--check", "--csv",       "--export", "--validate"};
 
 std::vector<RayKind> parseKinds(const std::string& text) {
   std::vector<RayKind> kinds;
@@ -86,6 +89,10 @@ TraceBenchOptions parseTraceBenchOptions(std::vector<std::string> args) {
   if (auto v = takeFlag(args, "--seed")) o.seed = parseUint("--seed", *v, 0, 0xFFFFFFFFu);
   if (auto v = takeFlag(args, "--check")) o.check = parseUint("--check", *v, 0, 1000000);
   if (auto v = takeFlag(args, "--csv")) o.csv = *v;
+  if (auto v = takeFlag(args, "--export")) {
+    if (v->empty()) throw UsageError("--export needs a folder");
+    o.exportDir = *v;
+  }
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--validate" || a.rfind("--validate=", 0) == 0) continue;

@@ -34,6 +34,7 @@ struct TraceBenchOptions {
   CameraRayOrder order = CameraRayOrder::Tiles;
   uint32_t repeat = 10, warmup = 3, seed = 1, check = 4096;
   std::string csv;
+  std::string exportDir;  // --export: the rays of each kind and the triangles as files (trace_rays.h)
 };
 
 // Throws UsageError for unknown flags and values, and for the render flags that mean nothing here.

@@ -67,6 +67,11 @@ uint32_t keyWidth(KeyStrategy s, const gpu::GpuKeyGrid& g) {
   return s == KeyStrategy::None ? 0 : spatialKeyBits(s, g) + 1;
 }
 
+uint32_t ignoredKeyBits(uint32_t spatialBits, uint32_t sortBits) {
+  const uint32_t compared = spatialBits + 1;
+  return sortBits > 0 && sortBits < compared ? compared - sortBits : 0;
+}
+
 // ---- deterministic arithmetic
 
 float detRcp(float x) {

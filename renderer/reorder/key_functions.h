@@ -38,6 +38,9 @@ uint32_t strategyId(KeyStrategy s);
 // all ones, so it stays the largest in those bits), or 0 for None.
 uint32_t spatialKeyBits(KeyStrategy s, const gpu::GpuKeyGrid& grid);
 uint32_t keyWidth(KeyStrategy s, const gpu::GpuKeyGrid& grid);
+// Low key bits the sort ignores for Settings::sortBits (0: all compared): it compares the live keys'
+// `spatialBits` bits and its own clamp bit for the dead key (gpu_sort.h), and keeps the top `sortBits` of them.
+uint32_t ignoredKeyBits(uint32_t spatialBits, uint32_t sortBits);
 
 // Deterministic arithmetic (twins of keys.glsl; only +, -, *, comparisons and bit operations).
 float detRcp(float x);

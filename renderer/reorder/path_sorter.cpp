@@ -61,10 +61,9 @@ void PathSorter::recordSort(VkCommandBuffer cmd, const PathBuffers& buffers, uin
     // gave every slot past it the dead key, so the pairs there are already in place.
     // Settings::sortBits keeps only the top bits of what the sort compares (keyBits - 1 live bits and the
     // dead bit): the bits below are ignored, a radix pass less for each 8.
-    const uint32_t bits = std::max(1u, keys_.keyBits() - 1), compared = bits + 1;
-    const uint32_t ignored = sortBits_ > 0 && sortBits_ < compared ? compared - sortBits_ : 0;
+    const uint32_t bits = std::max(1u, keys_.keyBits() - 1);
     sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, bits,
-                    buffers.live.address() + RL_LIVE_COUNT * sizeof(uint32_t), ignored);
+                    buffers.live.address() + RL_LIVE_COUNT * sizeof(uint32_t), ignoredKeyBits(bits, sortBits_));
   }
 }
 

@@ -4,7 +4,8 @@
 # hit; shadow: at most one a camera hit; the same rays through every tree), and the GPU's answers agree with
 # Embree's on the sample it checks. Each row's traversal steps and virtual warp efficiency are in range, and
 # the camera rays row by row (--order scanline) take the same steps in all as in tiles, in other warps; the
-# bounce rays sorted by two-point keys (--sort-rays) too, in warps that waste fewer lanes (the lab's premise).
+# bounce rays sorted by two-point keys (--sort-rays) too, in warps that waste fewer lanes (the lab's premise), and
+# in another order by their top bits alone (--sort-bits).
 # --kinds picks kinds, in their order.
 set -eu
 raylab="$1"
@@ -53,12 +54,46 @@ assert list(rows) == ["camera", "bounce", "bounce-sorted", "shadow"], list(rows)
 b, s = rows["bounce"], rows["bounce-sorted"]
 assert s["rays"] == b["rays"] and s["mean_steps"] == b["mean_steps"] and s["hit_fraction"] == b["hit_fraction"], (b, s)
 assert float(s["warp_efficiency"]) > float(b["warp_efficiency"]), (b["warp_efficiency"], s["warp_efficiency"])
+assert s["sort_bits"] == "0", s
 print("ok: bounce warp efficiency", b["warp_efficiency"], "sorted by two-point", s["warp_efficiency"])
+PY
+# --sort-bits 8: the sort compares the keys' top 8 bits, as the path sorter's would: the same rays in another
+# order (two-point keys have 23 bits on the hall's grid, so ignoring 16 of them merges many).
+"$raylab" tracebench --scene temple --view hall --size 96x64 --repeat 1 --warmup 0 --sort-rays two-point \
+  --sort-bits 8 --kinds bounce-sorted --csv "$dir/b.csv" >/dev/null
+python3 - "$dir/o.csv" "$dir/b.csv" <<'PY'
+import csv, sys
+full = next(r for r in csv.DictReader(open(sys.argv[1])) if r["kind"] == "bounce-sorted")
+cut = next(csv.DictReader(open(sys.argv[2])))
+assert cut["sort_bits"] == "8" and cut["rays"] == full["rays"] and cut["mean_steps"] == full["mean_steps"], (full, cut)
+assert cut["warp_efficiency"] != full["warp_efficiency"], "ignoring 16 key bits changed no warp"
+print("ok: sorted by the top 8 bits", cut["warp_efficiency"], "by all", full["warp_efficiency"])
 PY
 grep -q "^wide *shadow .* ok (" "$dir/out.txt" || { echo "FAIL: no checked shadow row"; cat "$dir/out.txt"; exit 1; }
 "$raylab" tracebench --scene cornell --size 32x16 --kinds shadow,camera --repeat 1 --warmup 0 --csv "$dir/k.csv" >/dev/null
 [ "$(cut -d, -f2 "$dir/k.csv" | tail -n +2 | tr '\n' ' ')" = "shadow camera " ] ||
   { echo "FAIL: --kinds shadow,camera gave"; cat "$dir/k.csv"; exit 1; }
+# --export: each kind's rays (32 bytes a ray, as many as the table says) and the cornell box's triangles (48
+# bytes each), the camera rays unit length and unbounded; a folder that cannot be made: exit 1.
+"$raylab" tracebench --scene cornell --size 32x16 --kinds camera,shadow --repeat 1 --warmup 0 --csv "$dir/e.csv" \
+  --export "$dir/exp/a" >/dev/null
+python3 - "$dir/e.csv" "$dir/exp/a" <<'PY'
+import csv, math, os, struct, sys
+rows = {r["kind"]: int(r["rays"]) for r in csv.DictReader(open(sys.argv[1]))}
+d = sys.argv[2]
+assert sorted(os.listdir(d)) == ["rays-camera.bin", "rays-shadow.bin", "triangles.bin"], os.listdir(d)
+for kind, n in rows.items():
+    assert os.path.getsize(f"{d}/rays-{kind}.bin") == 32 * n, (kind, n)
+tris = os.path.getsize(f"{d}/triangles.bin")
+assert tris > 0 and tris % 48 == 0, tris
+ray = struct.unpack("<8f", open(f"{d}/rays-camera.bin", "rb").read(32))
+assert ray[3] == 0 and abs(math.hypot(*ray[4:7]) - 1) < 1e-5 and ray[7] > 1e29, ray
+print("ok: exported", rows, tris // 48, "triangles")
+PY
+set +e
+"$raylab" tracebench --scene cornell --size 32x16 --repeat 1 --export /proc/raylab-nope >"$dir/exp.log" 2>&1; rc=$?
+set -e
+[ $rc -eq 1 ] && grep -q "cannot write /proc/raylab-nope" "$dir/exp.log" || { echo "FAIL: --export /proc: exit $rc"; cat "$dir/exp.log"; exit 1; }
 # A CSV that cannot be written: exit 1, naming it.
 set +e
 "$raylab" tracebench --scene cornell --size 32x16 --repeat 1 --csv /dev/full >"$dir/full.log" 2>&1; rc=$?

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <set>
 #include <vector>
 
@@ -156,7 +157,8 @@ TEST(TraceRays, ShadowRaysStopJustShortOfAPointOnTheLight) {
 }
 
 // Sorted as the path sorter sorts: the same rays, by a key that never falls along the order, and stably (rays
-// of one key keep their order). Two-point keys on a grid over the floor's points.
+// of one key keep their order). Two-point keys on a grid over the floor's points, with all their bits and
+// with the low bits --sort-bits 12 ignores (the sorter compares 23 + 1 bits: 12 ignored).
 TEST(TraceRays, SortedByKeyIsAStablePermutationByTheStrategysKey) {
   const RaySet rays = bounceRays(floorPoints(5000), 11);
   Bounds box;
@@ -165,33 +167,69 @@ TEST(TraceRays, SortedByKeyIsAStablePermutationByTheStrategysKey) {
   Settings s;
   KeyGrid grid = makeKeyGrid(box, glm::vec3(0, 0, 4), s);
   grid.gpu.spatialBits = spatialKeyBits(KeyStrategy::TwoPoint, grid.gpu);
+  ASSERT_EQ(grid.gpu.spatialBits, RL_KEY_TWO_POINT_BITS) << "the grid is too coarse for this test";
+  EXPECT_EQ(ignoredKeyBits(grid.gpu.spatialBits, 0), 0u);
+  EXPECT_EQ(ignoredKeyBits(grid.gpu.spatialBits, 12), 12u);
+  EXPECT_EQ(ignoredKeyBits(grid.gpu.spatialBits, 24), 0u);
+  EXPECT_EQ(ignoredKeyBits(grid.gpu.spatialBits, 32), 0u);
   const gpu::GpuKeyParams params = baseKeyParams(grid, s);
-  const RaySet sorted = sortedByKey(rays, KeyStrategy::TwoPoint, params, {});
-  ASSERT_EQ(sorted.size(), rays.size());
   auto keyOf = [&](const RaySet& set, uint32_t i, uint32_t pathId) {
     float len = 0;
     const KeyPath path{glm::vec3(set.origins[i]), glm::vec3(set.directions[i]), pathId, -1.0f};
     return computeKey(strategyId(KeyStrategy::TwoPoint), params, KeyEnv{}, path, 1u, len);
   };
-  // Where each sorted ray came from (the rays are distinct: random directions from distinct points).
-  std::vector<uint32_t> from(sorted.size());
-  std::set<uint32_t> seen;
-  for (uint32_t i = 0; i < sorted.size(); ++i) {
-    for (uint32_t j = 0; j < rays.size(); ++j)
-      if (rays.origins[j] == sorted.origins[i] && rays.directions[j] == sorted.directions[i]) from[i] = j;
-    seen.insert(from[i]);
-  }
-  EXPECT_EQ(seen.size(), rays.size()) << "not a permutation";
-  uint32_t distinctKeys = 1;
-  for (uint32_t i = 1; i < sorted.size(); ++i) {
-    const uint32_t a = keyOf(rays, from[i - 1], from[i - 1]), b = keyOf(rays, from[i], from[i]);
-    ASSERT_LE(a, b) << "keys fall at " << i;
-    if (a == b) {
-      EXPECT_LT(from[i - 1], from[i]) << "not stable at " << i;
+  uint32_t distinctAll = 0;
+  for (const uint32_t sortBits : {0u, 12u}) {
+    SCOPED_TRACE("sort bits " + std::to_string(sortBits));
+    const uint32_t ignored = ignoredKeyBits(grid.gpu.spatialBits, sortBits);
+    const RaySet sorted = sortedByKey(rays, KeyStrategy::TwoPoint, params, {}, ignored);
+    ASSERT_EQ(sorted.size(), rays.size());
+    // Where each sorted ray came from (the rays are distinct: random directions from distinct points).
+    std::vector<uint32_t> from(sorted.size());
+    std::set<uint32_t> seen;
+    for (uint32_t i = 0; i < sorted.size(); ++i) {
+      for (uint32_t j = 0; j < rays.size(); ++j)
+        if (rays.origins[j] == sorted.origins[i] && rays.directions[j] == sorted.directions[i]) from[i] = j;
+      seen.insert(from[i]);
     }
-    distinctKeys += a != b;
+    EXPECT_EQ(seen.size(), rays.size()) << "not a permutation";
+    uint32_t distinctKeys = 1;
+    for (uint32_t i = 1; i < sorted.size(); ++i) {
+      const uint32_t a = keyOf(rays, from[i - 1], from[i - 1]) >> ignored, b = keyOf(rays, from[i], from[i]) >> ignored;
+      ASSERT_LE(a, b) << "keys fall at " << i;
+      if (a == b) {
+        EXPECT_LT(from[i - 1], from[i]) << "not stable at " << i;
+      }
+      distinctKeys += a != b;
+    }
+    EXPECT_GT(distinctKeys, 10u) << "the key orders nothing: the test proves nothing";
+    if (sortBits == 0) distinctAll = distinctKeys;
+    else EXPECT_LT(distinctKeys, distinctAll) << "ignoring 12 bits merged no keys";
   }
-  EXPECT_GT(distinctKeys, 10u) << "the key orders nothing: the test proves nothing";
+}
+
+// --export's bytes: each ray's origin (w 0) and direction with tMax, each triangle's three vertices (w 0), as
+// floats in order, so another tracer reads the very rays and triangles traced here.
+TEST(TraceRays, ExportedBytesAreTheRaysAndTrianglesInOrder) {
+  RaySet rays;
+  rays.add(glm::vec3(1, 2, 3), glm::vec3(0, 0, 1), 1e30f);
+  rays.add(glm::vec3(-4, 5.5f, 0.25f), glm::normalize(glm::vec3(1, 1, 0)), 7.5f);
+  const std::string r = raySetBytes(rays);
+  ASSERT_EQ(r.size(), 2u * 8u * sizeof(float));
+  std::vector<float> f(16);
+  std::memcpy(f.data(), r.data(), r.size());
+  EXPECT_EQ(f, (std::vector<float>{1, 2, 3, 0, 0, 0, 1, 1e30f, -4, 5.5f, 0.25f, 0, rays.directions[1].x,
+                                   rays.directions[1].y, 0, 7.5f}));
+  std::vector<Triangle> tris(2);
+  tris[0].v[0] = glm::vec3(1, 2, 3), tris[0].v[1] = glm::vec3(4, 5, 6), tris[0].v[2] = glm::vec3(7, 8, 9);
+  tris[1].v[0] = glm::vec3(-1, -2, -3), tris[1].v[1] = glm::vec3(0.5f), tris[1].v[2] = glm::vec3(10, 0, -10);
+  tris[1].material = 3;
+  const std::string t = triangleBytes(tris);
+  ASSERT_EQ(t.size(), 2u * 12u * sizeof(float));
+  std::vector<float> g(24);
+  std::memcpy(g.data(), t.data(), t.size());
+  EXPECT_EQ(g, (std::vector<float>{1, 2, 3, 0, 4, 5, 6, 0, 7, 8, 9, 0, -1, -2, -3, 0, 0.5f, 0.5f, 0.5f, 0, 10, 0, -10, 0}));
+  EXPECT_TRUE(raySetBytes(RaySet{}).empty());
 }
 
 }  // namespace
