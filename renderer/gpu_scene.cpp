@@ -49,8 +49,9 @@ EmitterTable buildEmitterTable(const Scene& scene, const std::vector<uint32_t>& 
   return table;
 }
 
-GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCollapse collapse)
-    : wideCollapse_(collapse) {
+GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCollapse collapse,
+                           uint32_t reinsertPasses)
+    : wideCollapse_(collapse), reinsertPasses_(reinsertPasses) {
   for (const Triangle& t : scene.triangles)
     if (t.material >= scene.materials.size()) throw SceneLoadError(scene.name + ": triangle material out of range");
   Bvh bvh = buildBvh(scene.triangles);
@@ -99,7 +100,9 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCol
   // Both binary trees read leaf records: the plain tree's are its own order (entry i, triangle i).
   binary_ = {add(pairNodes(bvh)), add(leafRecords(scene.triangles, bvh.triangleOrder, bvh.triangleOrder))};
   {
-    const Bvh split = buildBvh(scene.triangles, kSpatialSplitMaxLeafSize, 0, BvhSplits::Spatial);
+    Bvh split = buildBvh(scene.triangles, kSpatialSplitMaxLeafSize, 0, BvhSplits::Spatial);
+    reinsertStats_ = reinsertOptimize(split, reinsertPasses);
+    split.stats.buildMs += reinsertStats_.ms;
     splitStats_ = split.stats;
     split_ = {add(pairNodes(split)), add(leafRecords(scene.triangles, split.triangleOrder, bvh.triangleOrder))};
   }

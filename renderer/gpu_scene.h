@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "renderer/bvh/bvh.h"
+#include "renderer/bvh/bvh_reinsert.h"
 #include "renderer/bvh/bvh_wide.h"
 #include "renderer/vk/gpu_buffer.h"
 #include "scenes/scene.h"
@@ -20,8 +21,9 @@ inline uint32_t traversalOf(BvhLayout layout) { return layout == BvhLayout::Wide
 class GpuSceneData {
  public:
   // `collapse`: how the wide BVH is made (Settings::wideCollapse), which also decides the BVH order of the
-  // triangles both layouts and the emitter table use.
-  GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCollapse collapse);
+  // triangles both layouts and the emitter table use. `reinsertPasses` (Settings::bvhReinsert): passes of
+  // reinsertOptimize over the spatial-split tree.
+  GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCollapse collapse, uint32_t reinsertPasses = 0);
 
   // The block the shaders read, walking the tree `layout` (Settings::bvh: a frame's choice, not the scene's).
   gpu::GpuScene block(BvhLayout layout) const {
@@ -38,6 +40,10 @@ class GpuSceneData {
   // The wide BVH collapsed from the binary one; both are on the GPU (Settings::bvh picks one per frame).
   const BvhWideStats& wideBvhStats() const { return wideStats_; }
   WideCollapse wideCollapse() const { return wideCollapse_; }
+  uint32_t reinsertPasses() const { return reinsertPasses_; }
+  // What the reinsertion did to the spatial-split tree (all zero without it; its time is in splitBvhStats'
+  // buildMs).
+  const ReinsertStats& reinsertStats() const { return reinsertStats_; }
   const Bounds& bounds() const { return bounds_; }
   uint32_t triangleCount() const { return triangleCount_; }
   uint32_t emitterCount() const { return block_.emitterCount; }
@@ -57,6 +63,8 @@ class GpuSceneData {
   BvhBuildStats bvhStats_, splitStats_;
   BvhWideStats wideStats_;
   WideCollapse wideCollapse_;
+  uint32_t reinsertPasses_ = 0;
+  ReinsertStats reinsertStats_;
   Bounds bounds_;
   uint32_t triangleCount_ = 0;
   std::vector<glm::vec3> bvhOrderVertices_;

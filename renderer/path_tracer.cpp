@@ -56,7 +56,7 @@ LazyPipeline megakernelStage(const VulkanContext& ctx, uint32_t countSimt, uint3
 }  // namespace
 
 PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera)
-    : PathTracer(ctx, scene, std::make_shared<GpuSceneData>(ctx, scene, settings.wideCollapse), settings, camera) {}
+    : PathTracer(ctx, scene, std::make_shared<GpuSceneData>(ctx, scene, settings.wideCollapse, settings.bvhReinsert), settings, camera) {}
 
 PathTracer::PathTracer(const PathTracer& sameScene, const Scene& scene, const Settings& settings,
                        const Viewpoint& camera)
@@ -114,6 +114,9 @@ void PathTracer::checkSupported(const Settings& settings) const {
   if (settings.wideCollapse != scene_->wideCollapse())
     throw std::logic_error("--wide-collapse " + toString(settings.wideCollapse) + " for a scene collapsed " +
                            toString(scene_->wideCollapse()) + ": build the tracer again");
+  if (settings.bvhReinsert != scene_->reinsertPasses())
+    throw std::logic_error("--bvh-reinsert " + std::to_string(settings.bvhReinsert) + " for a scene built with " +
+                           std::to_string(scene_->reinsertPasses()) + ": build the tracer again");
   if (std::string why = unsupportedSettings(ctx_.info(), settings); !why.empty()) throw VulkanError(why);
 }
 

@@ -15,6 +15,7 @@ const char* traceBenchUsage() {
          "  --bvhs L[,L...]      trees traversed, each in the same rounds: binary|sbvh|wide (default: --bvh's,\n"
          "                       as render)\n"
          "  --wide-collapse greedy|sah  the wide tree's collapse (as render)\n"
+         "  --bvh-reinsert N     passes of optimization of the sbvh tree (as render)\n"
          "  --kinds K[,K...]     camera|bounce|shadow|bounce-sorted (default all; bounce and shadow rays start\n"
          "                       at the camera rays' hits)\n"
          "  --sort-rays S        also trace the bounce rays sorted by strategy S's key (bounce-sorted): a strategy\n"
@@ -37,7 +38,8 @@ namespace {
 // The flags of every mode that say what is traced; the others (bounces, strategies, ...) describe a render
 // and would be ignored here without a word, so they are refused.
 const std::vector<std::string> kSharedFlags = {"--scene", "--view",  "--size",  "--bvh",         "--wide-collapse",
-                                               "--device", "--grid", "--clamp", "--fixed-factor", "--sort-bits"};
+                                               "--device", "--grid", "--clamp", "--fixed-factor", "--sort-bits",
+                                               "--bvh-reinsert"};
 const std::vector<std::string> kOwnFlags = {"--bvhs", "--kinds", "--sort-rays", "--order", "--repeat", "--warmup",
                                             "--seed", "--check", "--csv",       "--export", "--validate"};
 

@@ -70,6 +70,11 @@ std::vector<SettingRow> tracerRows() {
           .help("greedy|sah", "how the wide BVH is collapsed from the binary one: open the largest subtree\n"
                 "first, or SAH-optimal (Ylitie et al.) (default {default}); the scene is built again")
           .sample("greedy"),
+      RAYLAB_FIELD(bvhReinsert, "bvh-reinsert").range(0, SettingLimits::kMaxBvhReinsertPasses)
+          .json("bvh_reinsert", keepDefault).csv("bvh_reinsert").effects(kEffectScene | kAccumulation | kCache)
+          .help("N", "passes of insertion-based optimization of the sbvh tree, each of its worst 1%\n"
+                "of interior nodes, {range} (default {default}: Embree's tree); the scene is built again")
+          .sample("5"),
       RAYLAB_FIELD(ser, "ser").jsonAbsent("ser", "off").jsonError("unknown ser").csv("ser").effects(kSortCosts)
           .help("off|on|hint", "rt megakernel: Shader Execution Reordering by hit, or by hit with the\n"
                 "top bits of --strategy's key as coherence hint (needs a strategy)").sample("hint"),

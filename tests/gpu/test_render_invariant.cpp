@@ -261,20 +261,27 @@ TEST_P(SortInvariant, SteppedFramesKeepDetailedStatistics) {
 }
 
 // The invariant on the trees the tests above do not walk: every BVH layout but the default one (with the
-// default collapse), and the default layout with every other collapse (each collapse is a scene of its own:
-// its triangle order). Every key strategy (the oracle traces the same tree) with the radix sort, the bitonic
+// default collapse), the default layout with every other collapse (each collapse is a scene of its own:
+// its triangle order), and the default layout's tree optimized by reinsertion (Settings::bvhReinsert). Every key strategy (the oracle traces the same tree) with the radix sort, the bitonic
 // and tile sorts and every sort policy with one strategy, and fused trace+shade render that tree's unsorted
 // image bit for bit. One case per strategy, not per sort, so each tree adds about a third of the
 // parameterised test above, not its double.
 class SortInvariantLayouts : public GpuTest {};
 
-std::vector<std::pair<BvhLayout, WideCollapse>> treesBesidesTheDefault() {
+struct Tree {
+  BvhLayout layout;
+  WideCollapse collapse;
+  uint32_t reinsert;
+};
+
+std::vector<Tree> treesBesidesTheDefault() {
   const Settings defaults;
-  std::vector<std::pair<BvhLayout, WideCollapse>> trees;
+  std::vector<Tree> trees;
   for (BvhLayout layout : allValues<BvhLayout>())
-    if (layout != defaults.bvh) trees.push_back({layout, defaults.wideCollapse});
+    if (layout != defaults.bvh) trees.push_back({layout, defaults.wideCollapse, defaults.bvhReinsert});
   for (WideCollapse collapse : allValues<WideCollapse>())
-    if (collapse != defaults.wideCollapse) trees.push_back({defaults.bvh, collapse});
+    if (collapse != defaults.wideCollapse) trees.push_back({defaults.bvh, collapse, defaults.bvhReinsert});
+  trees.push_back({BvhLayout::Sbvh, defaults.wideCollapse, defaults.bvhReinsert == 0 ? 5u : 0u});
   return trees;
 }
 
@@ -282,10 +289,11 @@ TEST_F(SortInvariantLayouts, EveryStrategySortAndPolicyRendersTheUnsortedImageOf
   const VulkanContext& context = ctx();
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
-  for (const auto& [layout, collapse] : treesBesidesTheDefault()) {
+  for (const auto& [layout, collapse, reinsert] : treesBesidesTheDefault()) {
     Settings base = smallFrame(37, 19, 4);
     base.bvh = layout;
     base.wideCollapse = collapse;
+    base.bvhReinsert = reinsert;
     base.sppPerFrame = 2;
     base.frames = 2;  // the second frame uses what adaptive caches learned in the first
     const std::vector<glm::vec3> unsorted = renderRadiance(context, scene, base, view);
@@ -322,7 +330,8 @@ TEST_F(SortInvariantLayouts, EveryStrategySortAndPolicyRendersTheUnsortedImageOf
     for (const auto& [what, s] : cases) {
       ASSERT_TRUE(s.sorts()) << what;
       expectSameImage(renderRadiance(context, scene, s, view), unsorted,
-                      what + " on the " + toString(layout) + " BVH, " + toString(collapse) + " collapse");
+                      what + " on the " + toString(layout) + " BVH, " + toString(collapse) + " collapse, " +
+                          std::to_string(reinsert) + " reinsertion passes");
     }
   }
 }

@@ -217,6 +217,16 @@ TEST_F(EmbreeHits, TempleRaysAgreeWithEmbree) {
   }
 }
 
+// The spatial-split tree after reinsertion (Settings::bvhReinsert): the same hits from a tree of another shape.
+TEST_F(EmbreeHits, ReinsertedTreeRaysAgreeWithEmbree) {
+  for (const Scene& scene : {makeTemple(), loadSceneByName("temple-detail:200000")}) {
+    SCOPED_TRACE(scene.name);
+    GpuSceneData data(ctx(), scene, Settings{}.wideCollapse, 8);
+    EXPECT_GT(data.reinsertStats().reinserted, 0u) << "the tree did not change: the test proves nothing";
+    checkLayout(ctx(), scene, data, EmbreeScene(scene.triangles), BvhLayout::Sbvh, 8192);
+  }
+}
+
 TEST_F(EmbreeHits, TempleDetailRaysAgreeWithEmbree) {
   checkScene(ctx(), loadSceneByName("temple-detail:200000"), 8192);
 }
