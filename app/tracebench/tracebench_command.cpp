@@ -104,7 +104,13 @@ RaySets makeRaySets(const VulkanContext& ctx, const QueryPipelines& pipelines, V
   std::vector<float> t;
   std::vector<uint32_t> triangle;
   traceOnce(ctx, pipelines, scene, camera, t, triangle);
-  const std::vector<SurfacePoint> points = surfacePoints(camera, t, triangle, loaded.scene.triangles);
+  std::vector<SurfacePoint> points = surfacePoints(camera, t, triangle, loaded.scene.triangles);
+  // --bounce-depth D: the bounce and shadow rays leave the hits of D - 1 earlier bounces, each traced here.
+  for (uint32_t depth = 1; depth < o.bounceDepth; ++depth) {
+    const RaySet earlier = bounceRays(points, o.seed + 1000u * depth);
+    traceOnce(ctx, pipelines, scene, earlier, t, triangle);
+    points = surfacePoints(earlier, t, triangle, loaded.scene.triangles);
+  }
   const RaySet& bounce = sets[size_t(RayKind::Bounce)] = bounceRays(points, o.seed);
   sets[size_t(RayKind::Shadow)] = shadowRays(points, loaded.scene, skyProbability, o.seed + 1);
   if (o.sortRays) {
@@ -223,12 +229,12 @@ void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const Lo
               "min_ms", "max_ms", "Mrays/s", "spread%", "hit_frac", "steps", "warp", "check (Embree)");
   std::string csv = "bvh,kind,rays,median_ms,min_ms,max_ms,rays_per_second,spread_percent,hit_fraction,"
                     "mean_steps,warp_efficiency,checked,disagreements,scene,view,width,height,order,sort_rays,sort_bits,"
-                    "repeat,warmup,seed,device,driver,revision\n";
+                    "bounce_depth,repeat,warmup,seed,device,driver,revision\n";
   const std::string context = csvText(loaded.scene.name) + "," + csvText(loaded.view.name) + "," +
                               std::to_string(s.width) + "," + std::to_string(s.height) + "," +
                               (o.order == CameraRayOrder::Tiles ? "tiles" : "scanline") + "," +
                               (o.sortRays ? toString(*o.sortRays) : std::string("-")) + "," + std::to_string(s.sortBits) + "," +
-                              std::to_string(o.repeat) + "," + std::to_string(o.warmup) + "," +
+                              std::to_string(o.bounceDepth) + "," + std::to_string(o.repeat) + "," + std::to_string(o.warmup) + "," +
                               std::to_string(o.seed) + "," + csvText(dev.name) + "," + csvText(dev.driver) + "," +
                               gitRevision();
   for (const Cell& c : cells) {

@@ -17,10 +17,12 @@ const char* traceBenchUsage() {
          "  --wide-collapse greedy|sah  the wide tree's collapse (as render)\n"
          "  --bvh-reinsert N     passes of optimization of the sbvh tree (as render)\n"
          "  --kinds K[,K...]     camera|bounce|shadow|bounce-sorted (default all; bounce and shadow rays start\n"
-         "                       at the camera rays' hits)\n"
+         "                       at the camera rays' hits, or --bounce-depth's)\n"
          "  --sort-rays S        also trace the bounce rays sorted by strategy S's key (bounce-sorted): a strategy\n"
          "                       that learns nothing (fixed, origin, direction, origin-direction, two-point,\n"
          "                       oracle); --grid, --clamp, --fixed-factor and --sort-bits as render\n"
+         "  --bounce-depth D     bounce and shadow rays leave the hits of bounce D - 1 (1: the camera rays' hits,\n"
+         "                       the default; 2: the first bounce's; up to 8), each earlier bounce traced here\n"
          "  --order tiles|scanline  the camera rays' order: the generate stage's 8x4-pixel tiles (default) or rows\n"
          "  --repeat R           timed rounds, 1..1000 (default 10), after --warmup rounds, 0..1000 (default 3)\n"
          "  --seed S             seed of the bounce and shadow directions (default 1)\n"
@@ -41,7 +43,8 @@ const std::vector<std::string> kSharedFlags = {"--scene", "--view",  "--size",  
                                                "--device", "--grid", "--clamp", "--fixed-factor", "--sort-bits",
                                                "--bvh-reinsert"};
 const std::vector<std::string> kOwnFlags = {"--bvhs", "--kinds", "--sort-rays", "--order", "--repeat", "--warmup",
-                                            "--seed", "--check", "--csv",       "--export", "--validate"};
+                                            "--seed", "--check", "--csv",       "--export", "--validate",
+                                            "--bounce-depth"};
 
 std::vector<RayKind> parseKinds(const std::string& text) {
   std::vector<RayKind> kinds;
@@ -89,6 +92,7 @@ TraceBenchOptions parseTraceBenchOptions(std::vector<std::string> args) {
   if (auto v = takeFlag(args, "--repeat")) o.repeat = parseUint("--repeat", *v, 1, 1000);
   if (auto v = takeFlag(args, "--warmup")) o.warmup = parseUint("--warmup", *v, 0, 1000);
   if (auto v = takeFlag(args, "--seed")) o.seed = parseUint("--seed", *v, 0, 0xFFFFFFFFu);
+  if (auto v = takeFlag(args, "--bounce-depth")) o.bounceDepth = parseUint("--bounce-depth", *v, 1, 8);
   if (auto v = takeFlag(args, "--check")) o.check = parseUint("--check", *v, 0, 1000000);
   if (auto v = takeFlag(args, "--csv")) o.csv = *v;
   if (auto v = takeFlag(args, "--export")) {

@@ -33,6 +33,7 @@ struct TraceBenchOptions {
   std::optional<KeyStrategy> sortRays;  // --sort-rays: the key that orders bounce-sorted (grid flags as render)
   CameraRayOrder order = CameraRayOrder::Tiles;
   uint32_t repeat = 10, warmup = 3, seed = 1, check = 4096;
+  uint32_t bounceDepth = 1;  // --bounce-depth: bounce and shadow rays leave the hits of this many bounces - 1
   std::string csv;
   std::string exportDir;  // --export: the rays of each kind and the triangles as files (trace_rays.h)
 };

@@ -22,6 +22,18 @@ for c in "temple hall" "$S CameraMain"; do
     done
   done
 done
+# Later bounces (--bounce-depth D: the rays leave the hits of D - 1 earlier bounces, traced by tracebench).
+for c in "temple hall" "$S CameraMain"; do
+  set -- $c
+  for d in 2 3; do
+    ks="fixed origin direction origin-direction two-point oracle"; [ $d = 3 ] && ks="origin origin-direction two-point"
+    kinds=bounce,bounce-sorted
+    for k in $ks; do
+      tb --scene "$1" --view "$2" --bounce-depth $d --kinds $kinds --sort-rays $k; append $out/depth.csv
+      kinds=bounce-sorted
+    done
+  done
+done
 # The ranked-cells prototype (not in main): git apply $out/ranked-cells.patch; build; then
 # RL_PROTO_RANK=1|2|3 ./build/raylab tracebench --scene temple --view hall --size 2048x1024 --kinds bounce-sorted \
 #   --sort-rays two-point --sort-bits 0|16 --repeat 1 --warmup 0 --check 64   (the same with Sponza CameraMain)

@@ -35,6 +35,8 @@ check "give one of them" tracebench --bvh wide --bvhs sbvh
 check "unknown BVH 'quad'" tracebench --bvhs sbvh,quad
 check "learns lengths" tracebench --sort-rays gaussian
 check "needs --sort-rays" tracebench --kinds bounce-sorted
+check "--bounce-depth" tracebench --bounce-depth 9
+check "--export needs a folder" tracebench --export ""
 check "did you mean hall?" bench --cases temple@hal --out-dir bench-out
 [ -e bench-out ] && { echo "FAIL: a refused bench sweep left bench-out behind"; fail=1; }
 check "did you mean hall?" study temple@hal --out-dir study-out

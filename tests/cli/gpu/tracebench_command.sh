@@ -73,6 +73,22 @@ grep -q "^wide *shadow .* ok (" "$dir/out.txt" || { echo "FAIL: no checked shado
 "$raylab" tracebench --scene cornell --size 32x16 --kinds shadow,camera --repeat 1 --warmup 0 --csv "$dir/k.csv" >/dev/null
 [ "$(cut -d, -f2 "$dir/k.csv" | tail -n +2 | tr '\n' ' ')" = "shadow camera " ] ||
   { echo "FAIL: --kinds shadow,camera gave"; cat "$dir/k.csv"; exit 1; }
+# --bounce-depth 2: bounce and shadow rays from the first bounce's hits (traced in tracebench): no more rays than
+# the first bounce had, other steps, and sorting them still fills warps better (the later bounces the frames sort).
+"$raylab" tracebench --scene temple --view hall --size 96x64 --repeat 1 --warmup 0 --sort-rays two-point \
+  --bounce-depth 2 --csv "$dir/d.csv" >/dev/null
+python3 - "$dir/o.csv" "$dir/d.csv" <<'PY'
+import csv, sys
+one = {r["kind"]: r for r in csv.DictReader(open(sys.argv[1]))}
+two = {r["kind"]: r for r in csv.DictReader(open(sys.argv[2]))}
+assert one["bounce"]["bounce_depth"] == "1" and two["bounce"]["bounce_depth"] == "2", two["bounce"]
+assert two["camera"]["rays"] == one["camera"]["rays"] and two["camera"]["mean_steps"] == one["camera"]["mean_steps"]
+assert 0 < int(two["bounce"]["rays"]) <= int(one["bounce"]["rays"]), (one["bounce"]["rays"], two["bounce"]["rays"])
+assert two["bounce"]["mean_steps"] != one["bounce"]["mean_steps"], "the same bounce at depth 2"
+assert float(two["bounce-sorted"]["warp_efficiency"]) > float(two["bounce"]["warp_efficiency"]), two
+print("ok: second bounce", two["bounce"]["rays"], "rays, warp efficiency", two["bounce"]["warp_efficiency"], "sorted",
+      two["bounce-sorted"]["warp_efficiency"])
+PY
 # --export: each kind's rays (32 bytes a ray, as many as the table says) and the cornell box's triangles (48
 # bytes each), the camera rays unit length and unbounded; a folder that cannot be made: exit 1.
 "$raylab" tracebench --scene cornell --size 32x16 --kinds camera,shadow --repeat 1 --warmup 0 --csv "$dir/e.csv" \
