@@ -1,5 +1,7 @@
 #include "app/cli_options.h"
 
+#include <algorithm>
+
 #include "app/command_errors.h"
 
 #include "renderer/settings/settings_table.h"
@@ -18,6 +20,13 @@ std::optional<std::string> takeFlag(std::vector<std::string>& args, const std::s
     --i;
   }
   return value;
+}
+
+bool takeSwitch(std::vector<std::string>& args, const std::string& flag) {
+  const auto end = std::remove(args.begin(), args.end(), flag);
+  const bool given = end != args.end();
+  args.erase(end, args.end());
+  return given;
 }
 
 uint32_t parseUint(const std::string& flag, const std::string& text, uint32_t lo, uint32_t hi) {

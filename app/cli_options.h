@@ -37,6 +37,8 @@ std::string commonOptionsHelp();
 // Takes `flag VALUE` out of `args` (a mode's own flags, before the common ones are parsed): the last value
 // given, or nullopt. Throws UsageError when the flag ends the list.
 std::optional<std::string> takeFlag(std::vector<std::string>& args, const std::string& flag);
+// Takes every `flag` (a switch, without a value) out of `args`: whether it was given.
+bool takeSwitch(std::vector<std::string>& args, const std::string& flag);
 
 // Strict number parsing for flags: the whole string must be a number within [lo, hi].
 uint32_t parseUint(const std::string& flag, const std::string& text, uint32_t lo, uint32_t hi);

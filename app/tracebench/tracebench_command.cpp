@@ -95,6 +95,8 @@ using RaySets = std::array<RaySet, std::size(kRayKinds)>;
 
 // The ray sets: camera rays, traced once (with `scene`'s tree) to find the points the bounce and shadow rays
 // start from; with --sort-rays, the bounce rays in its key's order (the oracle's key reads their true hits).
+// With --sort-earlier each earlier bounce is traced in that key's order, so the bounce rays come in the order the
+// last sort left (as a frame's that sorted the bounces before and not this one).
 RaySets makeRaySets(const VulkanContext& ctx, const QueryPipelines& pipelines, VkDeviceAddress scene,
                     const LoadedScene& loaded, const TraceBenchOptions& o, float skyProbability) {
   const Settings& s = o.common.settings;
@@ -105,21 +107,22 @@ RaySets makeRaySets(const VulkanContext& ctx, const QueryPipelines& pipelines, V
   std::vector<uint32_t> triangle;
   traceOnce(ctx, pipelines, scene, camera, t, triangle);
   std::vector<SurfacePoint> points = surfacePoints(camera, t, triangle, loaded.scene.triangles);
+  KeyGrid grid = makeKeyGrid(loaded.scene.bounds(), loaded.view.position, s);
+  if (o.sortRays) grid.gpu.spatialBits = spatialKeyBits(*o.sortRays, grid.gpu);
+  const uint32_t ignoredBits = ignoredKeyBits(grid.gpu.spatialBits, s.sortBits);
   // --bounce-depth D: the bounce and shadow rays leave the hits of D - 1 earlier bounces, each traced here.
   for (uint32_t depth = 1; depth < o.bounceDepth; ++depth) {
-    const RaySet earlier = bounceRays(points, o.seed + 1000u * depth);
+    RaySet earlier = bounceRays(points, o.seed + 1000u * depth);
+    if (o.sortEarlier) earlier = sortedByKey(earlier, *o.sortRays, baseKeyParams(grid, s), {}, ignoredBits);
     traceOnce(ctx, pipelines, scene, earlier, t, triangle);
     points = surfacePoints(earlier, t, triangle, loaded.scene.triangles);
   }
   const RaySet& bounce = sets[size_t(RayKind::Bounce)] = bounceRays(points, o.seed);
   sets[size_t(RayKind::Shadow)] = shadowRays(points, loaded.scene, skyProbability, o.seed + 1);
   if (o.sortRays) {
-    KeyGrid grid = makeKeyGrid(loaded.scene.bounds(), loaded.view.position, s);
-    grid.gpu.spatialBits = spatialKeyBits(*o.sortRays, grid.gpu);
     std::vector<float> hitT;
     if (*o.sortRays == KeyStrategy::Oracle) traceOnce(ctx, pipelines, scene, bounce, hitT, triangle);
-    sets[size_t(RayKind::BounceSorted)] = sortedByKey(bounce, *o.sortRays, baseKeyParams(grid, s), hitT,
-                                                      ignoredKeyBits(grid.gpu.spatialBits, s.sortBits));
+    sets[size_t(RayKind::BounceSorted)] = sortedByKey(bounce, *o.sortRays, baseKeyParams(grid, s), hitT, ignoredBits);
   }
   return sets;
 }
@@ -229,12 +232,13 @@ void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const Lo
               "min_ms", "max_ms", "Mrays/s", "spread%", "hit_frac", "steps", "warp", "check (Embree)");
   std::string csv = "bvh,kind,rays,median_ms,min_ms,max_ms,rays_per_second,spread_percent,hit_fraction,"
                     "mean_steps,warp_efficiency,checked,disagreements,scene,view,width,height,order,sort_rays,sort_bits,"
-                    "bounce_depth,repeat,warmup,seed,device,driver,revision\n";
+                    "bounce_depth,sort_earlier,repeat,warmup,seed,device,driver,revision\n";
   const std::string context = csvText(loaded.scene.name) + "," + csvText(loaded.view.name) + "," +
                               std::to_string(s.width) + "," + std::to_string(s.height) + "," +
                               (o.order == CameraRayOrder::Tiles ? "tiles" : "scanline") + "," +
                               (o.sortRays ? toString(*o.sortRays) : std::string("-")) + "," + std::to_string(s.sortBits) + "," +
-                              std::to_string(o.bounceDepth) + "," + std::to_string(o.repeat) + "," + std::to_string(o.warmup) + "," +
+                              std::to_string(o.bounceDepth) + "," + (o.sortEarlier ? "1" : "0") + "," +
+                              std::to_string(o.repeat) + "," + std::to_string(o.warmup) + "," +
                               std::to_string(o.seed) + "," + csvText(dev.name) + "," + csvText(dev.driver) + "," +
                               gitRevision();
   for (const Cell& c : cells) {

@@ -23,6 +23,8 @@ const char* traceBenchUsage() {
          "                       oracle); --grid, --clamp, --fixed-factor and --sort-bits as render\n"
          "  --bounce-depth D     bounce and shadow rays leave the hits of bounce D - 1 (1: the camera rays' hits,\n"
          "                       the default; 2: the first bounce's; up to 8), each earlier bounce traced here\n"
+         "  --sort-earlier       trace the earlier bounces in --sort-rays' order (not the oracle's), so that the\n"
+         "                       bounce rays come in the order the last sort left them (needs --bounce-depth 2+)\n"
          "  --order tiles|scanline  the camera rays' order: the generate stage's 8x4-pixel tiles (default) or rows\n"
          "  --repeat R           timed rounds, 1..1000 (default 10), after --warmup rounds, 0..1000 (default 3)\n"
          "  --seed S             seed of the bounce and shadow directions (default 1)\n"
@@ -44,7 +46,7 @@ const std::vector<std::string> kSharedFlags = {"--scene", "--view",  "--size",  
                                                "--bvh-reinsert"};
 const std::vector<std::string> kOwnFlags = {"--bvhs", "--kinds", "--sort-rays", "--order", "--repeat", "--warmup",
                                             "--seed", "--check", "--csv",       "--export", "--validate",
-                                            "--bounce-depth"};
+                                            "--bounce-depth", "--sort-earlier"};
 
 std::vector<RayKind> parseKinds(const std::string& text) {
   std::vector<RayKind> kinds;
@@ -93,6 +95,7 @@ TraceBenchOptions parseTraceBenchOptions(std::vector<std::string> args) {
   if (auto v = takeFlag(args, "--warmup")) o.warmup = parseUint("--warmup", *v, 0, 1000);
   if (auto v = takeFlag(args, "--seed")) o.seed = parseUint("--seed", *v, 0, 0xFFFFFFFFu);
   if (auto v = takeFlag(args, "--bounce-depth")) o.bounceDepth = parseUint("--bounce-depth", *v, 1, 8);
+  o.sortEarlier = takeSwitch(args, "--sort-earlier");
   if (auto v = takeFlag(args, "--check")) o.check = parseUint("--check", *v, 0, 1000000);
   if (auto v = takeFlag(args, "--csv")) o.csv = *v;
   if (auto v = takeFlag(args, "--export")) {
@@ -122,6 +125,10 @@ TraceBenchOptions parseTraceBenchOptions(std::vector<std::string> args) {
   }
   if (!o.sortRays && std::find(o.kinds.begin(), o.kinds.end(), RayKind::BounceSorted) != o.kinds.end())
     throw UsageError("--kinds bounce-sorted needs --sort-rays STRATEGY: the key that sorts them");
+  if (o.sortEarlier && (!o.sortRays || *o.sortRays == KeyStrategy::Oracle))
+    throw UsageError("--sort-earlier needs --sort-rays with a key other than the oracle's (whose key needs the hits)");
+  if (o.sortEarlier && o.bounceDepth < 2)
+    throw UsageError("--sort-earlier needs --bounce-depth 2 or more: the camera rays are not sorted");
   return o;
 }
 

@@ -34,6 +34,16 @@ for c in "temple hall" "$S CameraMain"; do
     done
   done
 done
+# The later bounces in the order the earlier bounces' sorts left them (--sort-earlier).
+for c in "temple hall" "$S CameraMain"; do
+  set -- $c
+  for d in 2 3; do
+    for k in two-point origin-direction; do
+      tb --scene "$1" --view "$2" --bounce-depth $d --sort-earlier --kinds bounce,bounce-sorted --sort-rays $k
+      append $out/earlier.csv
+    done
+  done
+done
 # The ranked-cells prototype (not in main): git apply $out/ranked-cells.patch; build; then
 # RL_PROTO_RANK=1|2|3 ./build/raylab tracebench --scene temple --view hall --size 2048x1024 --kinds bounce-sorted \
 #   --sort-rays two-point --sort-bits 0|16 --repeat 1 --warmup 0 --check 64   (the same with Sponza CameraMain)

@@ -36,6 +36,8 @@ check "unknown BVH 'quad'" tracebench --bvhs sbvh,quad
 check "learns lengths" tracebench --sort-rays gaussian
 check "needs --sort-rays" tracebench --kinds bounce-sorted
 check "--bounce-depth" tracebench --bounce-depth 9
+check "--sort-earlier needs --sort-rays" tracebench --sort-earlier --bounce-depth 2
+check "--sort-earlier needs --bounce-depth" tracebench --sort-earlier --sort-rays two-point
 check "--export needs a folder" tracebench --export ""
 check "did you mean hall?" bench --cases temple@hal --out-dir bench-out
 [ -e bench-out ] && { echo "FAIL: a refused bench sweep left bench-out behind"; fail=1; }

@@ -89,6 +89,20 @@ assert float(two["bounce-sorted"]["warp_efficiency"]) > float(two["bounce"]["war
 print("ok: second bounce", two["bounce"]["rays"], "rays, warp efficiency", two["bounce"]["warp_efficiency"], "sorted",
       two["bounce-sorted"]["warp_efficiency"])
 PY
+# --sort-earlier: the first bounce traced in two-point order, so the second bounce's rays come in the order it left:
+# other rays than by pixel (their directions follow the slots), the column says so, and sorting them again still pays.
+"$raylab" tracebench --scene temple --view hall --size 96x64 --repeat 1 --warmup 0 --sort-rays two-point \
+  --bounce-depth 2 --sort-earlier --kinds bounce,bounce-sorted --csv "$dir/e2.csv" >/dev/null
+python3 - "$dir/d.csv" "$dir/e2.csv" <<'PY'
+import csv, sys
+pixel = {r["kind"]: r for r in csv.DictReader(open(sys.argv[1]))}
+carried = {r["kind"]: r for r in csv.DictReader(open(sys.argv[2]))}
+assert pixel["bounce"]["sort_earlier"] == "0" and carried["bounce"]["sort_earlier"] == "1", carried["bounce"]
+assert carried["bounce"]["warp_efficiency"] != pixel["bounce"]["warp_efficiency"], "the earlier sort changed no warp"
+assert float(carried["bounce-sorted"]["warp_efficiency"]) > float(carried["bounce"]["warp_efficiency"]), carried
+print("ok: second bounce in the first sort's order", carried["bounce"]["warp_efficiency"], "sorted again",
+      carried["bounce-sorted"]["warp_efficiency"])
+PY
 # --export: each kind's rays (32 bytes a ray, as many as the table says) and the cornell box's triangles (48
 # bytes each), the camera rays unit length and unbounded; a folder that cannot be made: exit 1.
 "$raylab" tracebench --scene cornell --size 32x16 --kinds camera,shadow --repeat 1 --warmup 0 --csv "$dir/e.csv" \
