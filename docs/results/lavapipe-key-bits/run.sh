@@ -22,7 +22,9 @@ for c in "temple hall" "$S CameraMain"; do
     done
   done
 done
-# Later bounces (--bounce-depth D: the rays leave the hits of D - 1 earlier bounces, traced by tracebench).
+# Later bounces (--bounce-depth D: the rays leave the hits of D - 1 earlier bounces, traced by tracebench), by pixel
+# (depth.csv) and, for the combined keys, in the order the earlier bounces' sorts left them (--sort-earlier,
+# earlier.csv).
 for c in "temple hall" "$S CameraMain"; do
   set -- $c
   for d in 2 3; do
@@ -31,16 +33,10 @@ for c in "temple hall" "$S CameraMain"; do
     for k in $ks; do
       tb --scene "$1" --view "$2" --bounce-depth $d --kinds $kinds --sort-rays $k; append $out/depth.csv
       kinds=bounce-sorted
-    done
-  done
-done
-# The later bounces in the order the earlier bounces' sorts left them (--sort-earlier).
-for c in "temple hall" "$S CameraMain"; do
-  set -- $c
-  for d in 2 3; do
-    for k in two-point origin-direction; do
-      tb --scene "$1" --view "$2" --bounce-depth $d --sort-earlier --kinds bounce,bounce-sorted --sort-rays $k
-      append $out/earlier.csv
+      case $k in two-point|origin-direction)
+        tb --scene "$1" --view "$2" --bounce-depth $d --sort-earlier --kinds bounce,bounce-sorted --sort-rays $k
+        append $out/earlier.csv;;
+      esac
     done
   done
 done
