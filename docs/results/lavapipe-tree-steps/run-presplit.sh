@@ -4,7 +4,8 @@
 # its own spatial splits); duplicates of one triangle in a leaf are dropped. Counted as run-harness.sh counts, over
 # tracebench --export's rays: Sponza at 2048x1024, the temple's hall and temple-detail:1000000 at 1024x512.
 # RL_PRESPLIT_AREA=1 orders the references by box area less the triangle's share (RL_PRESPLIT_K times it); without
-# it, by the area the cut saves. Run from the repository root after run-harness.sh (it reuses its folder).
+# it, by the area the cut saves. RL_PRESPLIT_ROOT=f: only while the largest reference's box is over f of the scene
+# box's. Run from the repository root after run-harness.sh (it reuses its folder).
 set -eu
 D=docs/results/lavapipe-tree-steps
 T=${TMPDIR:-/tmp}/tree-steps
@@ -26,5 +27,9 @@ K="camera bounce shadow"
     done
     echo "# $sc, presplit by the area saved, 0.001"; RL_PRESPLIT=0.001 $T/raylab_pre $T/$sc $K
     echo "# $sc, presplit by area less 2.5x the triangle's, 0.001"; RL_PRESPLIT_K=2.5 RL_PRESPLIT_AREA=1 RL_PRESPLIT=0.001 $T/raylab_pre $T/$sc $K
+    for f in 0.05 0.01; do
+      echo "# $sc, presplit by area while a box is over $f of the scene box's, 0.01"
+      RL_PRESPLIT_ROOT=$f RL_PRESPLIT_AREA=1 RL_PRESPLIT=0.01 $T/raylab_pre $T/$sc $K
+    done
   done
 } | tee $D/presplit.txt
