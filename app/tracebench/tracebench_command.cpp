@@ -109,11 +109,12 @@ RaySets makeRaySets(const VulkanContext& ctx, const QueryPipelines& pipelines, V
   std::vector<SurfacePoint> points = surfacePoints(camera, t, triangle, loaded.scene.triangles);
   KeyGrid grid = makeKeyGrid(loaded.scene.bounds(), loaded.view.position, s);
   if (o.sortRays) grid.gpu.spatialBits = spatialKeyBits(*o.sortRays, grid.gpu);
+  const gpu::GpuKeyParams keyParams = baseKeyParams(grid, s);
   const uint32_t ignoredBits = ignoredKeyBits(grid.gpu.spatialBits, s.sortBits);
   // --bounce-depth D: the bounce and shadow rays leave the hits of D - 1 earlier bounces, each traced here.
   for (uint32_t depth = 1; depth < o.bounceDepth; ++depth) {
     RaySet earlier = bounceRays(points, o.seed + 1000u * depth);
-    if (o.sortEarlier) earlier = sortedByKey(earlier, *o.sortRays, baseKeyParams(grid, s), {}, ignoredBits);
+    if (o.sortEarlier) earlier = sortedByKey(earlier, *o.sortRays, keyParams, {}, ignoredBits);
     traceOnce(ctx, pipelines, scene, earlier, t, triangle);
     points = surfacePoints(earlier, t, triangle, loaded.scene.triangles);
   }
@@ -122,7 +123,7 @@ RaySets makeRaySets(const VulkanContext& ctx, const QueryPipelines& pipelines, V
   if (o.sortRays) {
     std::vector<float> hitT;
     if (*o.sortRays == KeyStrategy::Oracle) traceOnce(ctx, pipelines, scene, bounce, hitT, triangle);
-    sets[size_t(RayKind::BounceSorted)] = sortedByKey(bounce, *o.sortRays, baseKeyParams(grid, s), hitT, ignoredBits);
+    sets[size_t(RayKind::BounceSorted)] = sortedByKey(bounce, *o.sortRays, keyParams, hitT, ignoredBits);
   }
   return sets;
 }

@@ -40,10 +40,9 @@
 namespace raylab {
 namespace {
 
-// The depth Embree may use: our root is depth 0 and the deepest leaf must stay below the shaders' stack.
-// Embree switches to its fallback "large leaf" splits (halving the primitive range) 8 levels before it
-// and fails a build that goes past it; the flattening checks our own depth against RL_BVH_STACK.
-constexpr uint32_t kEmbreeMaxDepth = RL_BVH_STACK - 2;
+// The depth Embree may use (kMaxBvhDepth). Embree switches to its fallback "large leaf" splits (halving the
+// primitive range) 8 levels before it and fails a build that goes past it; the flattening checks our own depth
+// against RL_BVH_STACK.
 constexpr uint32_t kEmbreeLeafLimit = RTC_BUILD_MAX_PRIMITIVES_PER_LEAF;
 static_assert(kEmbreeLeafLimit <= (1u << RL_LEAF_COUNT_BITS), "a leaf must fit the traversal's leaf word");
 
@@ -286,7 +285,7 @@ const EmbreeBuildNode* runEmbreeBuild(RTCBVH handle, RTCBuildPrimitive* prims, s
   args.buildQuality = spatial ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM;
   args.buildFlags = RTC_BUILD_FLAG_NONE;
   args.maxBranchingFactor = 2;
-  args.maxDepth = kEmbreeMaxDepth;
+  args.maxDepth = kMaxBvhDepth;
   args.sahBlockSize = 1;
   args.minLeafSize = 1;
   args.maxLeafSize = leafLimit;

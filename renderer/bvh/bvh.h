@@ -67,6 +67,9 @@ constexpr uint32_t kSpatialSplitMaxLeafSize = 4;
 // around Embree's build (Embree has its own); 0: the hardware's, fewer for small scenes. The tree is the same
 // for every count (the tests compare them).
 constexpr uint32_t kDefaultMaxLeafSize = 8;
+// The deepest a leaf may lie (the root is depth 0): below the shaders' traversal stack, which holds a path's
+// pending siblings. buildBvh gives Embree this limit; reinsertOptimize keeps its trees within it.
+constexpr uint32_t kMaxBvhDepth = RL_BVH_STACK - 2;
 Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize = kDefaultMaxLeafSize, uint32_t threads = 0,
              BvhSplits splits = BvhSplits::None);
 

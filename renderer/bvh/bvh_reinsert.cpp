@@ -13,8 +13,6 @@ namespace raylab {
 namespace {
 
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
-// buildBvh's own depth limit (Embree's maxDepth): the traversal stack holds a path's pending siblings.
-constexpr uint32_t kMaxDepth = RL_BVH_STACK - 2;
 
 // A node that knows its parent, so a subtree can be taken out and put back elsewhere.
 struct Node {
@@ -142,9 +140,7 @@ struct Tree {
     begin();
     const uint32_t g = nodes[p].parent;
     const uint32_t sibling = nodes[p].child[nodes[p].child[0] == n ? 1 : 0];
-    edit(n);
-    edit(p);
-    replaceChild(g, p, sibling);
+    replaceChild(g, p, sibling);  // n and p are journaled where they become new parents, before any change
     refitUp(g);
     const uint32_t a = nodes[n].child[0], b = nodes[n].child[1];
     edit(a).parent = kNone;
@@ -242,7 +238,7 @@ ReinsertStats reinsertOptimize(Bvh& bvh, uint32_t passes, double fraction) {
   }
   // A move may deepen the tree; past the traversal stack's room the tree stays Embree's.
   const uint32_t depth = tree.depth();
-  if (depth > kMaxDepth) {
+  if (depth > kMaxBvhDepth) {
     stats.kept = stats.reinserted = 0;
   } else {
     stats.areaAfter = tree.interiorArea() / rootArea;

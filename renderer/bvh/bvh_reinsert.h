@@ -4,7 +4,7 @@
 // new sibling of the node where it adds the least surface area to the tree (a branch-and-bound search from the
 // root). Leaves keep their triangles and boxes; only the interior boxes and the shape change, so the tree's
 // SAH (bvh_sah.h) falls or stays: a move is kept only if it lowered the interior nodes' total area, and the
-// whole optimization only if the deepest leaf stays as shallow as buildBvh's limit (RL_BVH_STACK - 2).
+// whole optimization only if the deepest leaf stays within kMaxBvhDepth, buildBvh's limit.
 //
 // Why: on Sponza's rays (tracebench --export, 2048x1024) Embree's spatial-split tree takes 44.4 steps a first-
 // bounce ray where tinybvh's SBVH takes 38.2, with the same leaf visits (2.6-2.7 a ray): the gap is interior

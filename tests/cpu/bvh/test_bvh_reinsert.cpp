@@ -68,7 +68,7 @@ void expectWellFormed(const Bvh& bvh) {
   EXPECT_EQ(bvh.stats.nodeCount, bvh.nodes.size());
   EXPECT_EQ(bvh.stats.leafCount, leaves);
   EXPECT_EQ(bvh.stats.maxDepth, deepest);
-  EXPECT_LE(deepest, uint32_t(RL_BVH_STACK - 2));
+  EXPECT_LE(deepest, kMaxBvhDepth);
 }
 
 // Long thin boards at random angles: overlapping boxes, which Embree's top-down build leaves room to improve.
