@@ -93,7 +93,7 @@ void PathTracer::buildWavefrontSteps(gpu::PathStagePush push) {
       // The bounces left in one dispatch over the live paths (Settings::loopsBounces): nothing runs between them.
       addStep("trace+shade", static_cast<int>(b), [this, push](VkCommandBuffer cmd) {
         recordStage(cmd, &timer_, "trace+shade", [&] {
-          shadeLoop_.get().dispatchIndirect(cmd, push, buffers_->live.handle(), PathBuffers::kLiveDispatchOffset);
+          shadeLoop_[traversalOf(settings_.bvh)].get().dispatchIndirect(cmd, push, buffers_->live.handle(), PathBuffers::kLiveDispatchOffset);
         });
       });
       return;

@@ -53,6 +53,13 @@ LazyPipeline megakernelStage(const VulkanContext& ctx, uint32_t countSimt, uint3
   return pathStage(ctx, "megakernel",
                    {{RL_SPEC_COUNT_SIMT, countSimt}, {RL_SPEC_COUNTS_STEPS, countsSteps}, {RL_SPEC_BVH_LAYOUT, traversal}});
 }
+// shade.comp's bounce loop (Settings::traceShade loop), holding one traversal as the megakernel does: on the
+// H200 at 512x256 that made Sponza's unsorted loop frame 11.5% shorter and the clutter room's 5.5%, the temple's
+// alley and hall level, the openings 9% longer (docs/results/h200-onesweep-loop).
+LazyPipeline shadeLoopStage(const VulkanContext& ctx, uint32_t traversal) {
+  return pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 1}, {RL_SPEC_LOOPS_BOUNCES, 1},
+                                  {RL_SPEC_BVH_LAYOUT, traversal}});
+}
 }  // namespace
 
 PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera)
@@ -83,7 +90,7 @@ PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, std::shared
                    {megakernelStage(ctx, 0, 1, 0), megakernelStage(ctx, 0, 1, 1)}},
                   {{megakernelStage(ctx, 1, 0, 0), megakernelStage(ctx, 1, 0, 1)},
                    {megakernelStage(ctx, 1, 1, 0), megakernelStage(ctx, 1, 1, 1)}}},
-      shadeLoop_(pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 1}, {RL_SPEC_LOOPS_BOUNCES, 1}})),
+      shadeLoop_{shadeLoopStage(ctx, RL_BVH_BINARY), shadeLoopStage(ctx, RL_BVH_WIDE)},
       timer_(ctx) {
   checkSupported(settings_);
   allocate();

@@ -157,7 +157,7 @@ class PathTracer {
   // shade.comp by [compact][fusesTraceShade] (Settings::compaction, Settings::traceShade), megakernel.comp by
   // [countSimt][countsSteps][traversalOf(Settings::bvh)]. Steps are counted on the frames that read them (countsSteps).
   LazyPipeline trace_[2][2][2], shade_[2][2], megakernel_[2][2][2];
-  LazyPipeline shadeLoop_;  // shade.comp's bounce loop (Settings::loopsBounces)
+  LazyPipeline shadeLoop_[2];  // shade.comp's bounce loop (Settings::loopsBounces) by [traversalOf(Settings::bvh)]
   GpuTimer timer_;
   SortPolicyModel sortPolicy_;
   SortPlan framePlan_;  // which bounces the frame being recorded sorts after

@@ -157,9 +157,11 @@ HitRecord traverseBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool an
 
 // The layout is GpuScene::bvhLayout (Settings::bvh), the same for every invocation of a dispatch: a uniform
 // branch, no divergence. A pipeline may fix it instead (RL_SPEC_BVH_LAYOUT, to the same Settings::bvh), so
-// that its code holds one traversal. On the H200 only the megakernel gains from that: 80 registers down to
-// 72 and a 4.6-8.8% shorter frame, where the trace and shade stages took 4-20% longer with one traversal
-// (the trace: 48 registers down to 39; docs/results/h200-binary-only). Those stages keep the default.
+// that its code holds one traversal. On the H200 the megakernel gains from that (80 registers down to 72, a
+// 4.6-8.8% shorter frame) and so does shade.comp's bounce loop, a megakernel over the live paths (512x256:
+// Sponza 11.5% and the clutter room 5.5% shorter, the temple's openings 9% longer; docs/results/
+// h200-onesweep-loop), where the split trace and shade stages took 4-20% longer with one traversal (the
+// trace: 48 registers down to 39; docs/results/h200-binary-only). Those stages keep the default.
 layout(constant_id = RL_SPEC_BVH_LAYOUT) const uint kBvhLayout = RL_BVH_FROM_SCENE;
 
 HitRecord traverseSceneBvh(GpuScene scene, vec3 origin, vec3 dir, float tMax, bool anyHit) {
