@@ -50,8 +50,8 @@ EmitterTable buildEmitterTable(const Scene& scene, const std::vector<uint32_t>& 
 }
 
 GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCollapse collapse,
-                           uint32_t reinsertPasses)
-    : wideCollapse_(collapse), reinsertPasses_(reinsertPasses) {
+                           uint32_t reinsertPasses, float presplit)
+    : wideCollapse_(collapse), reinsertPasses_(reinsertPasses), presplit_(presplit) {
   for (const Triangle& t : scene.triangles)
     if (t.material >= scene.materials.size()) throw SceneLoadError(scene.name + ": triangle material out of range");
   Bvh bvh = buildBvh(scene.triangles);
@@ -100,7 +100,7 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCol
   // Both binary trees read leaf records: the plain tree's are its own order (entry i, triangle i).
   binary_ = {add(pairNodes(bvh)), add(leafRecords(scene.triangles, bvh.triangleOrder, bvh.triangleOrder))};
   {
-    Bvh split = buildBvh(scene.triangles, kSpatialSplitMaxLeafSize, 0, BvhSplits::Spatial);
+    Bvh split = buildBvh(scene.triangles, kSpatialSplitMaxLeafSize, 0, BvhSplits::Spatial, presplit);
     reinsertStats_ = reinsertOptimize(split, reinsertPasses);
     split.stats.buildMs += reinsertStats_.ms;
     splitStats_ = split.stats;

@@ -22,8 +22,10 @@ class GpuSceneData {
  public:
   // `collapse`: how the wide BVH is made (Settings::wideCollapse), which also decides the BVH order of the
   // triangles both layouts and the emitter table use. `reinsertPasses` (Settings::bvhReinsert): passes of
-  // reinsertOptimize over the spatial-split tree.
-  GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCollapse collapse, uint32_t reinsertPasses = 0);
+  // reinsertOptimize over the spatial-split tree. `presplit` (Settings::bvhPresplit): its cuts before that
+  // tree's build (buildBvh).
+  GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCollapse collapse, uint32_t reinsertPasses = 0,
+               float presplit = 0.0f);
 
   // The block the shaders read, walking the tree `layout` (Settings::bvh: a frame's choice, not the scene's).
   gpu::GpuScene block(BvhLayout layout) const {
@@ -41,6 +43,7 @@ class GpuSceneData {
   const BvhWideStats& wideBvhStats() const { return wideStats_; }
   WideCollapse wideCollapse() const { return wideCollapse_; }
   uint32_t reinsertPasses() const { return reinsertPasses_; }
+  float presplit() const { return presplit_; }
   // What the reinsertion did to the spatial-split tree (all zero without it; its time is in splitBvhStats'
   // buildMs).
   const ReinsertStats& reinsertStats() const { return reinsertStats_; }
@@ -64,6 +67,7 @@ class GpuSceneData {
   BvhWideStats wideStats_;
   WideCollapse wideCollapse_;
   uint32_t reinsertPasses_ = 0;
+  float presplit_ = 0.0f;
   ReinsertStats reinsertStats_;
   Bounds bounds_;
   uint32_t triangleCount_ = 0;

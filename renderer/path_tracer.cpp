@@ -63,7 +63,8 @@ LazyPipeline shadeLoopStage(const VulkanContext& ctx, uint32_t traversal) {
 }  // namespace
 
 PathTracer::PathTracer(const VulkanContext& ctx, const Scene& scene, const Settings& settings, const Viewpoint& camera)
-    : PathTracer(ctx, scene, std::make_shared<GpuSceneData>(ctx, scene, settings.wideCollapse, settings.bvhReinsert), settings, camera) {}
+    : PathTracer(ctx, scene, std::make_shared<GpuSceneData>(ctx, scene, settings.wideCollapse, settings.bvhReinsert,
+                                                                settings.bvhPresplit), settings, camera) {}
 
 PathTracer::PathTracer(const PathTracer& sameScene, const Scene& scene, const Settings& settings,
                        const Viewpoint& camera)
@@ -124,6 +125,9 @@ void PathTracer::checkSupported(const Settings& settings) const {
   if (settings.bvhReinsert != scene_->reinsertPasses())
     throw std::logic_error("--bvh-reinsert " + std::to_string(settings.bvhReinsert) + " for a scene built with " +
                            std::to_string(scene_->reinsertPasses()) + ": build the tracer again");
+  if (settings.bvhPresplit != scene_->presplit())
+    throw std::logic_error("--bvh-presplit " + std::to_string(settings.bvhPresplit) + " for a scene built with " +
+                           std::to_string(scene_->presplit()) + ": build the tracer again");
   if (std::string why = unsupportedSettings(ctx_.info(), settings); !why.empty()) throw VulkanError(why);
 }
 

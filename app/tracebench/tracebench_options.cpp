@@ -16,6 +16,7 @@ const char* traceBenchUsage() {
          "                       as render)\n"
          "  --wide-collapse greedy|sah  the wide tree's collapse (as render)\n"
          "  --bvh-reinsert N     passes of optimization of the sbvh tree (as render)\n"
+         "  --bvh-presplit F     cuts before the sbvh tree's build, a fraction of the triangles (as render)\n"
          "  --kinds K[,K...]     camera|bounce|shadow|bounce-sorted (default all; bounce and shadow rays start\n"
          "                       at the camera rays' hits, or --bounce-depth's)\n"
          "  --sort-rays S        also trace the bounce rays sorted by strategy S's key (bounce-sorted): a strategy\n"
@@ -43,7 +44,7 @@ namespace {
 // and would be ignored here without a word, so they are refused.
 const std::vector<std::string> kSharedFlags = {"--scene", "--view",  "--size",  "--bvh",         "--wide-collapse",
                                                "--device", "--grid", "--clamp", "--fixed-factor", "--sort-bits",
-                                               "--bvh-reinsert"};
+                                               "--bvh-reinsert", "--bvh-presplit"};
 const std::vector<std::string> kOwnFlags = {"--bvhs", "--kinds", "--sort-rays", "--order", "--repeat", "--warmup",
                                             "--seed", "--check", "--csv",       "--export", "--validate",
                                             "--bounce-depth", "--sort-earlier"};

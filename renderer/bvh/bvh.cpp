@@ -33,6 +33,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "renderer/bvh/bvh_presplit.h"
 #include "renderer/bvh/bvh_sah.h"
 #include "renderer/bvh/embree_device.h"
 #include "renderer/parallel.h"
@@ -84,44 +85,13 @@ void embreeSetBounds(void* node, const RTCBounds** bounds, unsigned int childCou
 
 void* embreeCreateLeaf(RTCThreadLocalAllocator alloc, const RTCBuildPrimitive* prims, size_t count, void*) {
   auto* n = new (rtcThreadLocalAlloc(alloc, sizeof(EmbreeBuildNode), 16)) EmbreeBuildNode();
-  n->leafCount = static_cast<uint32_t>(count);
   n->prims = static_cast<uint32_t*>(rtcThreadLocalAlloc(alloc, sizeof(uint32_t) * std::max<size_t>(count, 1), 4));
-  for (size_t i = 0; i < count; ++i) n->prims[i] = prims[i].primID;
+  // Two pieces of one presplit triangle (bvh_presplit.h) may meet in a leaf: it holds the triangle once.
+  uint32_t kept = 0;
+  for (size_t i = 0; i < count; ++i)
+    if (std::find(n->prims, n->prims + kept, prims[i].primID) == n->prims + kept) n->prims[kept++] = prims[i].primID;
+  n->leafCount = kept;
   return n;
-}
-
-// Embree's spatial-split callback: the boxes of the parts of a triangle on either side of the plane
-// `dimension` = `position`, each cut down to the box the reference has already (it may be a part of a part).
-// The triangle's corners on a side and its edges' crossings of the plane bound that side's part. Where float
-// rounding leaves a side's box empty (a crossing just outside the reference's box), that side keeps the
-// reference's box cut at the plane: a looser box loses no hit, an empty one would.
-void embreeSplitPrimitive(const RTCBuildPrimitive* prim, unsigned int dimension, float position, RTCBounds* leftBounds,
-                          RTCBounds* rightBounds, void* userPtr) {
-  const Triangle& t = (*static_cast<const std::vector<Triangle>*>(userPtr))[prim->primID];
-  glm::vec3 lo[2] = {glm::vec3(std::numeric_limits<float>::max()), glm::vec3(std::numeric_limits<float>::max())};
-  glm::vec3 hi[2] = {glm::vec3(-std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
-  auto grow = [&](int side, glm::vec3 p) { lo[side] = glm::min(lo[side], p), hi[side] = glm::max(hi[side], p); };
-  for (int i = 0; i < 3; ++i) {
-    const glm::vec3 a = t.v[i], b = t.v[(i + 1) % 3];
-    if (a[dimension] <= position) grow(0, a);
-    if (a[dimension] >= position) grow(1, a);
-    if ((a[dimension] < position && position < b[dimension]) || (b[dimension] < position && position < a[dimension])) {
-      glm::vec3 c = a + (b - a) * ((position - a[dimension]) / (b[dimension] - a[dimension]));
-      c[dimension] = position;
-      grow(0, c);
-      grow(1, c);
-    }
-  }
-  const glm::vec3 primLo(prim->lower_x, prim->lower_y, prim->lower_z), primHi(prim->upper_x, prim->upper_y, prim->upper_z);
-  RTCBounds* out[2] = {leftBounds, rightBounds};
-  for (int side = 0; side < 2; ++side) {
-    glm::vec3 cutLo = primLo, cutHi = primHi;
-    (side == 0 ? cutHi : cutLo)[dimension] = position;
-    glm::vec3 l = glm::max(lo[side], cutLo), h = glm::min(hi[side], cutHi);
-    if (l.x > h.x || l.y > h.y || l.z > h.z) l = cutLo, h = cutHi;
-    out[side]->lower_x = l.x, out[side]->lower_y = l.y, out[side]->lower_z = l.z;
-    out[side]->upper_x = h.x, out[side]->upper_y = h.y, out[side]->upper_z = h.z;
-  }
 }
 
 bool finite(const Triangle& t) {
@@ -301,9 +271,9 @@ const EmbreeBuildNode* runEmbreeBuild(RTCBVH handle, RTCBuildPrimitive* prims, s
   args.setNodeChildren = embreeSetChildren;
   args.setNodeBounds = embreeSetBounds;
   args.createLeaf = embreeCreateLeaf;
-  args.splitPrimitive = spatial ? embreeSplitPrimitive : nullptr;
+  args.splitPrimitive = spatial ? splitTriangleReference : nullptr;
   args.buildProgress = nullptr;
-  args.userPtr = const_cast<std::vector<Triangle>*>(&triangles);  // read only, by embreeSplitPrimitive
+  args.userPtr = const_cast<std::vector<Triangle>*>(&triangles);  // read only, by splitTriangleReference
   return static_cast<const EmbreeBuildNode*>(rtcBuildBVH(&args));
 }
 
@@ -338,20 +308,27 @@ void flattenInto(Bvh& bvh, const EmbreeBuildNode& root, size_t triangleCount, si
 
 }  // namespace
 
-Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize, uint32_t threads, BvhSplits splits) {
+Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize, uint32_t threads, BvhSplits splits,
+             double presplit) {
   const auto start = std::chrono::steady_clock::now();
   Bvh bvh;
   if (triangles.empty()) {
     emptyTree(bvh);
   } else {
     threads = workerThreads(threads, triangles.size(), 16384);
+    const bool spatial = splits == BvhSplits::Spatial;
+    const size_t cuts = spatial ? static_cast<size_t>(std::clamp(presplit, 0.0, 1.0) * triangles.size()) : 0;
     // Not zero-filled: every element is written before Embree reads it (10M triangles: 320 MB).
-    const size_t capacity = splits == BvhSplits::Spatial
-                                ? triangles.size() + static_cast<size_t>(kSpatialSplitBudget * triangles.size())
-                                : triangles.size();
+    const size_t capacity =
+        triangles.size() + cuts + (spatial ? static_cast<size_t>(kSpatialSplitBudget * triangles.size()) : 0);
     auto prims = std::make_unique_for_overwrite<RTCBuildPrimitive[]>(capacity);
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    fillPrimitives(triangles, threads, prims.get(), lo, hi);
+    // The references Embree starts from: one a triangle, then the presplit pieces (none without cuts).
+    auto fillReferences = [&] {
+      fillPrimitives(triangles, threads, prims.get(), lo, hi);
+      return presplitReferences(prims.get(), triangles.size(), cuts, triangles);
+    };
+    size_t count = fillReferences();
     bvh.stats.primitivesMs = msSince(start);
     const auto embreeStart = std::chrono::steady_clock::now();
     EmbreeDevice device;
@@ -364,8 +341,8 @@ Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize, uint3
     // leaves need fewer levels, so that one error is retried with twice the leaf limit, from the primitives
     // refilled (Embree reorders the array it is given).
     for (bool retry = false;; retry = true) {
-      if (retry) fillPrimitives(triangles, threads, prims.get(), lo, hi);
-      root = runEmbreeBuild(handle, prims.get(), triangles.size(), capacity, leafLimit, splits, triangles);
+      if (retry) count = fillReferences();
+      root = runEmbreeBuild(handle, prims.get(), count, capacity, leafLimit, splits, triangles);
       error = device.takeError();
       if (root || leafLimit >= kEmbreeLeafLimit || error.find("depth limit") == std::string::npos) break;
       leafLimit = std::min(leafLimit * 2, kEmbreeLeafLimit);

@@ -70,7 +70,8 @@ constexpr uint32_t kDefaultMaxLeafSize = 8;
 // The deepest a leaf may lie (the root is depth 0): below the shaders' traversal stack, which holds a path's
 // pending siblings. buildBvh gives Embree this limit; reinsertOptimize keeps its trees within it.
 constexpr uint32_t kMaxBvhDepth = RL_BVH_STACK - 2;
+// `presplit` (spatial splits only): cuts before the build, as a fraction of the triangle count (bvh_presplit.h).
 Bvh buildBvh(const std::vector<Triangle>& triangles, uint32_t maxLeafSize = kDefaultMaxLeafSize, uint32_t threads = 0,
-             BvhSplits splits = BvhSplits::None);
+             BvhSplits splits = BvhSplits::None, double presplit = 0.0);
 
 }  // namespace raylab

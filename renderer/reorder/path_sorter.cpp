@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "renderer/path_buffers.h"
+#include "renderer/reorder/key_functions.h"
 #include "renderer/vk/stage_timer.h"
 #include "renderer/vk/vk_context.h"
 

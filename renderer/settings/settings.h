@@ -194,6 +194,7 @@ struct SettingLimits {
   static constexpr float kMaxExposure = 1e6f;
   static constexpr uint32_t kMaxGridCellsPerAxis = 1024;  // 10 bits per axis: 30-bit Morton keys
   static constexpr uint32_t kMaxBvhReinsertPasses = 64;
+  static constexpr float kMaxBvhPresplit = 1.0f;  // a cut for every triangle at most
   static constexpr float kMaxClampDistance = 1e6f;
   static constexpr float kMinFixedFactor = 0.0f;
   static constexpr float kMaxFixedFactor = 4.0f;
@@ -224,6 +225,10 @@ struct Settings {
   // Not the default until a GPU's bench says it pays: on Sponza's rays it takes 6-10% fewer steps a camera or
   // bounce ray for 8% more triangle tests (docs/results/lavapipe-tree-steps).
   uint32_t bvhReinsert = 0;
+  // Cuts before the spatial-split tree's build (renderer/bvh/bvh_presplit.h), a fraction of the triangle count;
+  // 0: none. Another tree is another scene. An option: on the H200 0.001 makes Sponza's trace 9-13% faster
+  // and the temple hall's 4-8% slower (docs/results/h200-tree-variants).
+  float bvhPresplit = 0.0f;
   Ser ser = Ser::Off;  // rt tracer's megakernel only
 
   // Reordering

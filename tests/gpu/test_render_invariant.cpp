@@ -262,8 +262,9 @@ TEST_P(SortInvariant, SteppedFramesKeepDetailedStatistics) {
 
 // The invariant on the trees the tests above do not walk: every BVH layout but the default one (with the
 // default collapse), the default layout with every other collapse (each collapse is a scene of its own:
-// its triangle order), and the default layout's tree optimized by reinsertion (Settings::bvhReinsert). Every key strategy (the oracle traces the same tree) with the radix sort, the bitonic
-// and tile sorts and every sort policy with one strategy, and fused trace+shade render that tree's unsorted
+// its triangle order), and the default layout's tree optimized by reinsertion (Settings::bvhReinsert) and built
+// from presplit references (Settings::bvhPresplit). Every key strategy (the oracle traces the same tree) with
+// the radix sort, the bitonic and tile sorts and every sort policy with one strategy, and fused trace+shade render that tree's unsorted
 // image bit for bit. One case per strategy, not per sort, so each tree adds about a third of the
 // parameterised test above, not its double.
 class SortInvariantLayouts : public GpuTest {};
@@ -272,16 +273,19 @@ struct Tree {
   BvhLayout layout;
   WideCollapse collapse;
   uint32_t reinsert;
+  float presplit;
 };
 
 std::vector<Tree> treesBesidesTheDefault() {
   const Settings defaults;
   std::vector<Tree> trees;
   for (BvhLayout layout : allValues<BvhLayout>())
-    if (layout != defaults.bvh) trees.push_back({layout, defaults.wideCollapse, defaults.bvhReinsert});
+    if (layout != defaults.bvh) trees.push_back({layout, defaults.wideCollapse, defaults.bvhReinsert, defaults.bvhPresplit});
   for (WideCollapse collapse : allValues<WideCollapse>())
-    if (collapse != defaults.wideCollapse) trees.push_back({defaults.bvh, collapse, defaults.bvhReinsert});
-  trees.push_back({BvhLayout::Sbvh, defaults.wideCollapse, defaults.bvhReinsert == 0 ? 5u : 0u});
+    if (collapse != defaults.wideCollapse)
+      trees.push_back({defaults.bvh, collapse, defaults.bvhReinsert, defaults.bvhPresplit});
+  trees.push_back({BvhLayout::Sbvh, defaults.wideCollapse, defaults.bvhReinsert == 0 ? 5u : 0u, defaults.bvhPresplit});
+  trees.push_back({BvhLayout::Sbvh, defaults.wideCollapse, defaults.bvhReinsert, defaults.bvhPresplit == 0 ? 0.05f : 0.0f});
   return trees;
 }
 
@@ -289,11 +293,12 @@ TEST_F(SortInvariantLayouts, EveryStrategySortAndPolicyRendersTheUnsortedImageOf
   const VulkanContext& context = ctx();
   Scene scene = makeTemple();
   const Viewpoint& view = *scene.findViewpoint("hall");
-  for (const auto& [layout, collapse, reinsert] : treesBesidesTheDefault()) {
+  for (const auto& [layout, collapse, reinsert, presplit] : treesBesidesTheDefault()) {
     Settings base = smallFrame(37, 19, 4);
     base.bvh = layout;
     base.wideCollapse = collapse;
     base.bvhReinsert = reinsert;
+    base.bvhPresplit = presplit;
     base.sppPerFrame = 2;
     base.frames = 2;  // the second frame uses what adaptive caches learned in the first
     const std::vector<glm::vec3> unsorted = renderRadiance(context, scene, base, view);
@@ -331,7 +336,7 @@ TEST_F(SortInvariantLayouts, EveryStrategySortAndPolicyRendersTheUnsortedImageOf
       ASSERT_TRUE(s.sorts()) << what;
       expectSameImage(renderRadiance(context, scene, s, view), unsorted,
                       what + " on the " + toString(layout) + " BVH, " + toString(collapse) + " collapse, " +
-                          std::to_string(reinsert) + " reinsertion passes");
+                          std::to_string(reinsert) + " reinsertion passes, presplit " + std::to_string(presplit));
     }
   }
 }

@@ -227,6 +227,18 @@ TEST_F(EmbreeHits, ReinsertedTreeRaysAgreeWithEmbree) {
   }
 }
 
+// The spatial-split tree built from presplit references (Settings::bvhPresplit): a triangle in more leaves, each
+// leaf holding it once; its hits are still Embree's triangles.
+TEST_F(EmbreeHits, PresplitTreeRaysAgreeWithEmbree) {
+  for (const Scene& scene : {makeTemple(), loadSceneByName("temple-detail:200000")}) {
+    SCOPED_TRACE(scene.name);
+    const GpuSceneData plain(ctx(), scene, Settings{}.wideCollapse);
+    GpuSceneData data(ctx(), scene, Settings{}.wideCollapse, 0, 0.05f);
+    EXPECT_GT(data.splitBvhStats().references, plain.splitBvhStats().references) << "no cut: the test proves nothing";
+    checkLayout(ctx(), scene, data, EmbreeScene(scene.triangles), BvhLayout::Sbvh, 8192);
+  }
+}
+
 TEST_F(EmbreeHits, TempleDetailRaysAgreeWithEmbree) {
   checkScene(ctx(), loadSceneByName("temple-detail:200000"), 8192);
 }
