@@ -14,6 +14,7 @@
 #include "renderer/bvh/bvh_traverse_cpu.h"
 #include "renderer/gpu_scene.h"
 #include "scenes/procedural.h"
+#include "tests/same_tree_hits.h"
 
 namespace raylab {
 namespace {
@@ -117,26 +118,9 @@ TEST(BvhPresplit, TreeHoldsEveryTriangleOnceALeafAndFindsTheSameHits) {
     }
   }
   EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](uint32_t s) { return s > 0; }));
-  const std::vector<gpu::GpuTriangle> a = bvhOrderTriangles(tris, plain.triangleOrder);
-  const std::vector<gpu::GpuTriangle> b = bvhOrderTriangles(tris, presplit.triangleOrder);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<float> u(-12.0f, 12.0f);
-  uint32_t hits = 0;
-  for (int i = 0; i < 20000; ++i) {
-    const glm::vec3 o{u(rng), u(rng), u(rng)};
-    const glm::vec3 d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
-    const CpuHit ha = traverseBinaryCpu(plain.nodes, a, o, d, 1e30f, false);
-    const CpuHit hb = traverseBinaryCpu(presplit.nodes, b, o, d, 1e30f, false);
-    ASSERT_EQ(ha.t, hb.t) << "ray " << i;
-    if (ha.t > 0.0f) {
-      ++hits;
-      EXPECT_EQ(plain.triangleOrder[ha.triangle], presplit.triangleOrder[hb.triangle]) << "ray " << i;
-    }
-    EXPECT_EQ(traverseBinaryCpu(plain.nodes, a, o, d, 3.0f, true).t > 0.0f,
-              traverseBinaryCpu(presplit.nodes, b, o, d, 3.0f, true).t > 0.0f)
-        << "shadow ray " << i;
-  }
-  EXPECT_GT(hits, 5000u);
+  const SameTreeHits same = expectSameHits(tris, plain, presplit, 20000, 5);
+  EXPECT_GT(same.hits, 5000u);
+  EXPECT_GT(same.blocked, 1000u);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "renderer/bvh/bvh_traverse_cpu.h"
 #include "renderer/gpu_scene.h"
 #include "scenes/procedural.h"
+#include "tests/same_tree_hits.h"
 #include "tests/scene_checks.h"
 
 namespace raylab {
@@ -123,33 +124,11 @@ TEST(BvhReinsert, RaysFindTheSameHits) {
   const Bvh built = buildBvh(tris, kSpatialSplitMaxLeafSize, 0, BvhSplits::Spatial);
   Bvh optimized = built;
   ASSERT_GT(reinsertOptimize(optimized, 8).reinserted, 0u);
-  const std::vector<gpu::GpuTriangle> before = bvhOrderTriangles(tris, built.triangleOrder);
-  const std::vector<gpu::GpuTriangle> after = bvhOrderTriangles(tris, optimized.triangleOrder);
-  std::mt19937 rng(4);
-  std::uniform_real_distribution<float> u(-12.0f, 12.0f);
-  uint32_t hits = 0, blocked = 0;
-  uint64_t stepsBefore = 0, stepsAfter = 0;
-  for (int i = 0; i < 20000; ++i) {
-    const glm::vec3 o{u(rng), u(rng), u(rng)};
-    const glm::vec3 d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
-    const CpuHit a = traverseBinaryCpu(built.nodes, before, o, d, 1e30f, false);
-    const CpuHit b = traverseBinaryCpu(optimized.nodes, after, o, d, 1e30f, false);
-    ASSERT_EQ(a.t, b.t) << "ray " << i;
-    if (a.t > 0.0f) {
-      ++hits;
-      EXPECT_EQ(built.triangleOrder[a.triangle], optimized.triangleOrder[b.triangle]) << "ray " << i;
-    }
-    stepsBefore += a.steps, stepsAfter += b.steps;
-    const float shadowT = 4.0f;
-    const bool sa = traverseBinaryCpu(built.nodes, before, o, d, shadowT, true).t > 0.0f;
-    const bool sb = traverseBinaryCpu(optimized.nodes, after, o, d, shadowT, true).t > 0.0f;
-    EXPECT_EQ(sa, sb) << "shadow ray " << i;
-    blocked += sa;
-  }
-  EXPECT_GT(hits, 5000u);
-  EXPECT_GT(blocked, 1000u);
-  RecordProperty("steps_before", std::to_string(stepsBefore));
-  RecordProperty("steps_after", std::to_string(stepsAfter));
+  const SameTreeHits same = expectSameHits(tris, built, optimized, 20000, 4);
+  EXPECT_GT(same.hits, 5000u);
+  EXPECT_GT(same.blocked, 1000u);
+  RecordProperty("steps_before", std::to_string(same.stepsA));
+  RecordProperty("steps_after", std::to_string(same.stepsB));
 }
 
 // Nothing to do: no passes, an empty scene, a tree too small to rearrange.
