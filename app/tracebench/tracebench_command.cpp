@@ -277,7 +277,8 @@ int runTraceBench(const TraceBenchOptions& o) {
   co.quiet = true;
   VulkanContext ctx(co);
   if (!deviceTimesCompute(ctx, "raylab tracebench")) return kExitFailure;
-  const GpuSceneData scene(ctx, loaded.scene, o.common.settings.wideCollapse, o.common.settings.bvhReinsert);
+  const GpuSceneData scene(ctx, loaded.scene, o.common.settings.wideCollapse, o.common.settings.bvhReinsert,
+                           o.common.settings.bvhPresplit);
   std::vector<GpuBuffer> blocks;  // each tree's scene block (GpuSceneData::block)
   for (BvhLayout bvh : o.bvhs) blocks.push_back(makeBufferFrom(ctx, std::vector<gpu::GpuScene>{scene.block(bvh)}));
   const QueryPipelines pipelines(ctx);
