@@ -222,11 +222,11 @@ struct Settings {
   WideCollapse wideCollapse = WideCollapse::Sah;  // the scene's wide BVH (both tracers see its triangle order)
   // Passes of insertion-based optimization over the spatial-split tree (renderer/bvh/bvh_reinsert.h), each of the
   // worst 1% of its interior nodes; 0: Embree's tree as built. Another tree is another scene (built again).
-  // Not the default until a GPU's bench says it pays: on Sponza's rays it takes 6-10% fewer steps a camera or
-  // bounce ray for 8% more triangle tests (docs/results/lavapipe-tree-steps).
+  // An option: on the H200 5 passes make Sponza's frame trace 4-7% faster, temple-detail's 3-4% slower and the
+  // clutter room's megakernel 4% longer (docs/results/h200-tree-variants; steps: lavapipe-tree-steps).
   uint32_t bvhReinsert = 0;
   // Cuts before the spatial-split tree's build (renderer/bvh/bvh_presplit.h), a fraction of the triangle count;
-  // 0: none. Another tree is another scene. An option: on the H200 0.001 makes Sponza's trace 9-13% faster
+  // 0: none. Another tree is another scene. An option: on the H200 0.001 makes Sponza's trace 10-13% faster
   // and the temple hall's 4-8% slower (docs/results/h200-tree-variants).
   float bvhPresplit = 0.0f;
   Ser ser = Ser::Off;  // rt tracer's megakernel only
