@@ -66,8 +66,7 @@ int parseRenderRequest(const std::vector<std::string>& givenArgs, RenderRequest&
     if (auto budget = takeFlag(args, "--time-budget")) r.budgetSeconds = parseFloat("--time-budget", *budget, 0.001f, 86400.0f);
     const auto detailEvery = takeFlag(args, "--detail-every");
     if (detailEvery) r.detailEvery = parseUint("--detail-every", *detailEvery, 0, SettingLimits::kMaxFrames);
-    if (const auto at = std::find(args.begin(), args.end(), "--frame-digests"); at != args.end())
-      r.frameDigests = true, args.erase(at);
+    r.frameDigests = takeSwitch(args, "--frame-digests");
     const std::string cameraText = takeFlag(args, "--camera").value_or("");
     const std::optional<std::string> pathSpec = takeFlag(args, "--camera-path");
     r.options = parseOptionsWithSettingsFile(args, &sidecarCamera, nullptr, &r.learnedNote);

@@ -53,9 +53,8 @@ LazyPipeline megakernelStage(const VulkanContext& ctx, uint32_t countSimt, uint3
   return pathStage(ctx, "megakernel",
                    {{RL_SPEC_COUNT_SIMT, countSimt}, {RL_SPEC_COUNTS_STEPS, countsSteps}, {RL_SPEC_BVH_LAYOUT, traversal}});
 }
-// shade.comp's bounce loop (Settings::traceShade loop), holding one traversal as the megakernel does: on the
-// H200 at 512x256 that made Sponza's unsorted loop frame 11.5% shorter and the clutter room's 5.5%, the temple's
-// alley and hall level, the openings 9% longer (docs/results/h200-onesweep-loop).
+// shade.comp's bounce loop (Settings::traceShade loop), holding one traversal as the megakernel does
+// (bvh_traverse.glsl's RL_SPEC_BVH_LAYOUT says what that measured).
 LazyPipeline shadeLoopStage(const VulkanContext& ctx, uint32_t traversal) {
   return pathStage(ctx, "shade", {{RL_SPEC_COMPACT, 0}, {RL_SPEC_FUSES_TRACE_SHADE, 1}, {RL_SPEC_LOOPS_BOUNCES, 1},
                                   {RL_SPEC_BVH_LAYOUT, traversal}});
