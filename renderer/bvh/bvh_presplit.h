@@ -2,8 +2,11 @@
 // of Karras and Aila, HPG 2013): the references whose boxes hold the most empty space are cut in half, at the
 // middle of the box's longest axis, before Embree sees them, so a long diagonal triangle enters the build as
 // several tighter boxes. Embree's own spatial splits only cut where a node's SAH gains; these cuts happen
-// everywhere such a triangle is, near the root included. With 0.1% of the triangles cut, Sponza's rays take 16%
-// fewer steps a camera ray and 10% fewer a bounce ray, the temple hall's 3-7% more (docs/results/h200-tree-variants).
+// everywhere such a triangle is, near the root included. Axis-aligned triangles are never cut (kPresplitFlatness).
+// With 0.1% of the triangles cut, Sponza's rays take 16.7% / 11.1% / 7.6% fewer steps per warp efficiency (camera /
+// bounce / shadow), the temple's views and the clutter room's as many as without cuts (within 0.3%), the
+// temple-detail hall's about 1% more (lavapipe, docs/results/lavapipe-presplit-rules). Cutting by box area alone,
+// the ground included, the H200 traced the hall's bounce rays 8% slower (docs/results/h200-tree-variants).
 #pragma once
 
 #include <cstddef>
@@ -20,9 +23,16 @@ namespace raylab {
 void splitTriangleReference(const RTCBuildPrimitive* prim, unsigned int dimension, float position,
                             RTCBounds* leftBounds, RTCBounds* rightBounds, void* userPtr);
 
+// A triangle whose box is thinner than this share of its longest side lies in an axis plane (up to float noise and
+// modelling tolerance) and is never cut. On lavapipe's count (docs/results/lavapipe-presplit-rules) every
+// threshold from 1e-5 to 3e-4 gives Sponza the same tree; 3e-3 leaves out the slightly leaning walls whose
+// cuts make Sponza's gain.
+inline constexpr float kPresplitFlatness = 1e-4f;
+
 // A reference's empty space, the order of the cuts: its box's surface area less the part of it the triangle
 // covers, estimated as twice the triangle's area scaled by this box's share of the whole triangle's box area.
-// Zero for a degenerate triangle, which is never cut; a flat triangle fills at most half its box's area.
+// Zero for a degenerate or an axis-aligned triangle (kPresplitFlatness), which is never cut; a flat triangle fills
+// at most half its box's area.
 float presplitPriority(const RTCBuildPrimitive& reference, const Triangle& triangle);
 
 // Makes up to `cuts` cuts among prims[0, count) (primID: the triangle's index in `triangles`), the largest

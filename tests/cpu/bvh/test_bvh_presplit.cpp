@@ -100,6 +100,27 @@ TEST(BvhPresplit, CutsStopAtTheBudgetSkipDegenerateTrianglesAndRepeat) {
             1) << "the degenerate triangle was cut";
 }
 
+// A triangle in an axis plane fills its flat box with its quad's other half: never cut, even where it has the
+// largest box (the temple's ground), while a wall leaning by a fraction of a degree (Sponza's) is cut first.
+TEST(BvhPresplit, AxisAlignedTrianglesAreNeverCut) {
+  const float noise = 0.1f * kPresplitFlatness * 150.0f;  // within the flatness tolerance of a 150-unit side
+  const float lean = 30.0f * kPresplitFlatness * 30.0f;   // well past it on a 30-unit side
+  const std::vector<Triangle> tris{
+      Triangle{{glm::vec3(-75.0f, 0.0f, -75.0f), glm::vec3(75.0f, 0.0f, -75.0f), glm::vec3(75.0f, 0.0f, 75.0f)}},
+      Triangle{{glm::vec3(-75.0f, 0.0f, -75.0f), glm::vec3(75.0f, noise, 75.0f), glm::vec3(-75.0f, 0.0f, 75.0f)}},
+      Triangle{{glm::vec3(5.0f, 0.0f, 0.0f), glm::vec3(5.0f + lean, 20.0f, 0.0f), glm::vec3(5.0f + lean, 20.0f, 30.0f)}}};
+  std::vector<RTCBuildPrimitive> prims(tris.size() + 6);
+  for (size_t i = 0; i < tris.size(); ++i) prims[i] = referenceOf(tris[i], static_cast<uint32_t>(i));
+  EXPECT_EQ(presplitPriority(prims[0], tris[0]), 0.0f);
+  EXPECT_EQ(presplitPriority(prims[1], tris[1]), 0.0f);
+  EXPECT_GT(presplitPriority(prims[2], tris[2]), 0.0f);
+  const size_t count = presplitReferences(prims.data(), tris.size(), 6, tris);
+  EXPECT_EQ(count, tris.size() + 6);
+  for (uint32_t ground = 0; ground < 2; ++ground)
+    EXPECT_EQ(std::count_if(prims.begin(), prims.begin() + count, [&](const RTCBuildPrimitive& p) { return p.primID == ground; }), 1)
+        << "ground triangle " << ground << " was cut";
+}
+
 // The tree over presplit references: every triangle in some leaf and none twice in one (two pieces of a
 // triangle meeting in a leaf hold it once), more references than without, and the same closest hits and
 // shadow answers as the tree without presplitting.

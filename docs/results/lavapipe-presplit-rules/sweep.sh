@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# lavapipe count sweep of presplit plane modes
+B=/work/main/build/raylab; S=/work/shared/scenes/Sponza/Sponza.gltf
+out=/tmp/sw/sweep.csv; rm -f $out /tmp/sw/errors
+run() { # case mode F
+  local c=$1 m=$2 f=$3
+  n=$(basename "${c%%@*}" .gltf)-${c#*@}
+  RL_PRESPLIT_MODE=$m timeout 900 nice $B tracebench --scene "${c%%@*}" --view "${c#*@}" --size 1024x512 --bvhs sbvh --bvh-presplit $f \
+    --repeat 1 --warmup 0 --check 512 --csv /tmp/sw/t.csv > /tmp/sw/t.txt 2>&1 || echo "fail $n $m $f" >> /tmp/sw/errors
+  [ -s $out ] || head -1 /tmp/sw/t.csv | sed 's/^/case,mode,presplit,/' > $out
+  tail -n +2 /tmp/sw/t.csv | sed "s/^/$n,$m,$f,/" >> $out
+}
+for c in "$S@CameraMain" temple@hall temple@openings temple-detail:200000@hall clutter:200000@overview; do
+  run "$c" mid 0
+  for f in 0.001 0.003 0.01 0.03; do for m in mid grid gridw; do run "$c" $m $f; done; done
+done
+echo done > /tmp/sw/done
