@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <string>
+#include <tuple>
 
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
@@ -93,12 +94,7 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
       smallSort_ = ComputePipeline(ctx, "sort_small", sizeof(gpu::SortSmallPush), SORT_SMALL_GROUP);
     }
     const VkDeviceSize elementBytes = std::max<VkDeviceSize>(16, VkDeviceSize(maxCount) * 4);
-    scratchKeys_ = GpuBuffer(ctx, elementBytes);
-    scratchValues_ = GpuBuffer(ctx, elementBytes);
-    if (oneSweep_) {
-      secondKeys_ = GpuBuffer(ctx, elementBytes);
-      secondValues_ = GpuBuffer(ctx, elementBytes);
-    }
+    for (GpuBuffer* b : {&scratchKeys_, &scratchValues_, &secondKeys_, &secondValues_}) *b = GpuBuffer(ctx, elementBytes);
   } else if (algorithm == SortAlgorithm::Bitonic || algorithm == SortAlgorithm::Tile) {
     // No scratch: the padding to a power of two is virtual (see shaders/sort_bitonic.glsl).
     bitonicLocal_ = ComputePipeline(ctx, "sort_bitonic_local", sizeof(gpu::SortBitonicPush), SORT_BITONIC_GROUP);
@@ -156,16 +152,12 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
   const auto [lowBit, passes] = radixPasses(keyBits, ignoredLowBits);
   const uint32_t numGroups = ceilDiv(count, radixTile_);
   const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
-  // Ping-pong caller -> scratch -> caller ...: an even pass count ends in the caller's buffers, an odd one
-  // in scratch and is copied back (cheaper than a second scratch set for 17- or 24-bit keys).
   VkDeviceAddress srcKeys = keys, srcValues = values;
   for (uint32_t pass = 0; pass < passes; ++pass) {
-    const bool toScratch = pass % 2 == 0;
     gpu::SortRadixPush push{};
     push.keysIn = srcKeys;
     push.valuesIn = srcValues;
-    push.keysOut = toScratch ? scratchKeys_.address() : keys;
-    push.valuesOut = toScratch ? scratchValues_.address() : values;
+    std::tie(push.keysOut, push.valuesOut) = passOutput(pass, passes, keys, values);
     push.hist = hist_.address();
     push.count = count;
     push.shift = lowBit + pass * SORT_RADIX_BITS;
@@ -186,7 +178,15 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
     srcKeys = push.keysOut;
     srcValues = push.valuesOut;
   }
-  if (passes % 2 == 1) recordCopyBack(cmd, keys, values, count, countLimit);
+  if (passes == 1) recordCopyBack(cmd, keys, values, count, countLimit);
+}
+
+std::pair<VkDeviceAddress, VkDeviceAddress> GpuSorter::passOutput(uint32_t pass, uint32_t passes, VkDeviceAddress keys,
+                                                                  VkDeviceAddress values) const {
+  if (pass == 0) return {scratchKeys_.address(), scratchValues_.address()};
+  if (passes == 3 && pass == 1) return {secondKeys_.address(), secondValues_.address()};
+  if (passes == 3 || pass % 2 == 1) return {keys, values};
+  return {scratchKeys_.address(), scratchValues_.address()};
 }
 
 void GpuSorter::recordSmall(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
@@ -229,21 +229,12 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
   push.countLimit = countLimit;
   const uint32_t histChunk = kOneSweepHistogramGroup * SORT_ONESWEEP_HIST_KPT;
   oneSweepHistogram_.dispatchGroups(cmd, push, std::min(maxGroups, ceilDiv(count, histChunk)));
-  // Where each pass writes: an even pass count ping-pongs caller -> scratch -> caller; three passes (17 to 24
-  // sorted bits: the two-point keys) rotate through a second scratch set, caller -> scratch -> second ->
-  // caller, and so end in the caller's buffers without a copy that reads and writes every pair once more.
-  // One pass is copied back.
-  const VkDeviceAddress outKeys[3] = {scratchKeys_.address(), passes == 3 ? secondKeys_.address() : keys, keys};
-  const VkDeviceAddress outValues[3] = {scratchValues_.address(), passes == 3 ? secondValues_.address() : values,
-                                        values};
   VkDeviceAddress srcKeys = keys, srcValues = values;
   for (uint32_t pass = 0; pass < passes; ++pass) {
     computeBarrier(cmd);
-    const uint32_t out = passes == 3 ? pass : pass % 2;
     push.keysIn = srcKeys;
     push.valuesIn = srcValues;
-    push.keysOut = outKeys[out];
-    push.valuesOut = outValues[out];
+    std::tie(push.keysOut, push.valuesOut) = passOutput(pass, passes, keys, values);
     push.shift = lowBit + pass * SORT_RADIX_BITS;
     push.pass = pass;
     // Tiles come from the pass's counter, not the group id, so a split dispatch needs no offset.

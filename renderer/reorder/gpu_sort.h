@@ -14,8 +14,10 @@
 // wait on earlier ones, which only devices known to give forward progress promise (NVIDIA and AMD GPUs);
 // elsewhere (CPU devices) each pass runs one work group per dispatch, a barrier between: the same order
 // from the same shaders, so the invariant tests check them on lavapipe, but slow (oneSweepSerial()).
-// Three passes (17 to 24 sorted bits) rotate through a second scratch set and need no copy back (8 bytes a
-// pair of memory more than radix).
+// Both radix sorts end in the caller's buffers without copying every pair back after an odd pass count:
+// three passes (17 to 24 sorted bits, the two-point keys) rotate through a second scratch set (passOutput);
+// only a single pass is copied back. That costs 8 bytes a pair of memory and saves a dispatch, a barrier and
+// 16 bytes a pair read and written per sort.
 // Small counts (radix and OneSweep, at most Tuning::smallSortMax pairs, SORT_SMALL_MAX by default): one
 // dispatch, one work group sorting them all in shared memory (sort_small.comp), stable like the radix passes
 // it replaces, which at such counts cost their launches and barriers, not their bytes (issue 36).
@@ -28,6 +30,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 
 #include <vulkan/vulkan.h>
 
@@ -96,7 +99,11 @@ class GpuSorter {
  private:
   void recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                    uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits);
-  // After an odd number of radix passes the result is in scratch: copy it to the caller's buffers.
+  // Where radix pass `pass` of `passes` writes (keys, values): an even count ping-pongs caller -> scratch ->
+  // caller; three passes go caller -> scratch -> second -> caller; one pass ends in scratch (recordCopyBack).
+  std::pair<VkDeviceAddress, VkDeviceAddress> passOutput(uint32_t pass, uint32_t passes, VkDeviceAddress keys,
+                                                         VkDeviceAddress values) const;
+  // After a single radix pass the result is in scratch: copy it to the caller's buffers.
   void recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                       VkDeviceAddress countLimit);
   void recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
@@ -130,7 +137,7 @@ class GpuSorter {
   ComputePipeline oneSweepHistogram_;
   ComputePipeline oneSweepPass_;
   GpuBuffer oneSweepState_;  // histograms, tile counters, look-back status (shaders/sort_types.h)
-  GpuBuffer secondKeys_;     // the second scratch set three passes rotate through (recordOneSweep)
+  GpuBuffer secondKeys_;     // the second scratch set three passes rotate through (passOutput)
   GpuBuffer secondValues_;
 
   // Small counts
