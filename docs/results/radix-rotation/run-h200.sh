@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# For a session with the device (about 4 minutes): the radix sort's three passes through a second scratch set
+# (7b190ea, build-device/raylab) against the copy back before it (d387578, packed as .dev/copyback/raylab), in the
+# frame at real-time and study sizes, 4 bounces, two-point keys, radix; binaries interleaved, two rounds each.
+# Keys + sort against the bandwidth floor: the `keys` and `sort` stage columns at 4096x2048.
+source docs/results/device-unpack.sh
+B=build-device/raylab
+CASES="$S@CameraMain,temple@hall,temple-detail:1000000@hall,clutter:1000000"
+t0=$SECONDS
+for round in 1 2; do
+  for v in rotate copyback; do
+    bin=$B; [ $v = copyback ] && bin=.dev/copyback/raylab
+    timeout 150 $bin bench --cases "$CASES" --sizes 720p,1080p,4096x2048 --bounces 4 --strategies two-point \
+      --sorts radix --trace-shades split --rounds 1 --no-detail --no-charts --out-dir /tmp/r-$v-$round \
+      > /tmp/r-$v-$round.log 2>&1 || echo "bench $v $round exit $?" >> $OUT/errors.txt
+    [ -s $OUT/rotation.csv ] || head -1 /tmp/r-$v-$round/results.csv | sed 's/^/binary,round,/' > $OUT/rotation.csv
+    tail -n +2 /tmp/r-$v-$round/results.csv | sed "s/^/$v,$round,/" >> $OUT/rotation.csv
+  done
+done
+echo "rotation: $((SECONDS - t0)) s" >> $OUT/times.txt
+echo done
