@@ -13,3 +13,9 @@ done
 S=.dev/sponza/Sponza.gltf
 mkdir -p /tmp/out
 nvidia-smi --query-gpu=name,driver_version --format=csv > $OUT/gpu.txt 2>&1
+# appendRows CSV OUT HEADER_PREFIX ROW_PREFIX: CSV's rows appended to OUT, each behind ROW_PREFIX; OUT starts with
+# CSV's header behind HEADER_PREFIX (the columns the prefixes fill).
+appendRows() {
+  [ -s "$2" ] || head -1 "$1" | sed "s/^/$3,/" > "$2"
+  tail -n +2 "$1" | sed "s/^/$4,/" >> "$2"
+}

@@ -37,8 +37,7 @@ for round in 1 2; do
       n=$(basename "${c%%@*}" .gltf)-${c#*@}-p$f-r$round
       timeout 30 $B tracebench --scene "${c%%@*}" --view "${c#*@}" --size 2048x1024 --bvhs sbvh --bvh-presplit $f \
         --repeat 20 --check 1024 --csv /tmp/tb-$n.csv > /tmp/tb-$n.txt 2>&1 || echo "tracebench $n exit $?" >> $OUT/errors.txt
-      [ -s $OUT/tracebench.csv ] || head -1 /tmp/tb-$n.csv | sed 's/^/table,presplit,round,/' > $OUT/tracebench.csv
-      tail -n +2 /tmp/tb-$n.csv | sed "s/^/$n,$f,$round,/" >> $OUT/tracebench.csv
+      appendRows /tmp/tb-$n.csv $OUT/tracebench.csv table,presplit,round $n,$f,$round
     done
   done
 done

@@ -13,8 +13,7 @@ for round in 1 2; do
     timeout 150 $bin bench --cases "$CASES" --sizes 720p,1080p,4096x2048 --bounces 4 --strategies two-point \
       --sorts radix --trace-shades split --rounds 1 --no-detail --no-charts --out-dir /tmp/r-$v-$round \
       > /tmp/r-$v-$round.log 2>&1 || echo "bench $v $round exit $?" >> $OUT/errors.txt
-    [ -s $OUT/rotation.csv ] || head -1 /tmp/r-$v-$round/results.csv | sed 's/^/binary,round,/' > $OUT/rotation.csv
-    tail -n +2 /tmp/r-$v-$round/results.csv | sed "s/^/$v,$round,/" >> $OUT/rotation.csv
+    appendRows /tmp/r-$v-$round/results.csv $OUT/rotation.csv binary,round $v,$round
   done
 done
 echo "rotation: $((SECONDS - t0)) s" >> $OUT/times.txt
