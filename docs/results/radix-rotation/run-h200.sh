@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # For a session with the device (about 4 minutes): the radix sort's three passes through a second scratch set
-# (7b190ea, build-device/raylab) against the copy back before it (d387578, packed as .dev/copyback/raylab), in the
+# (7b190ea, build-device/raylab) against the copy back before it (.dev/copyback/raylab: the same tree with d387578's
+# renderer/reorder/gpu_sort.{h,cpp}, so its revision column reads the same; .dev/bins.tar.xz holds both), in the
 # frame at real-time and study sizes, 4 bounces, two-point keys, radix; binaries interleaved, two rounds each.
 # Keys + sort against the bandwidth floor: the `keys` and `sort` stage columns at 4096x2048.
 source docs/results/device-unpack.sh
