@@ -18,4 +18,12 @@ for round in 1 2; do
   done
 done
 echo "rotation: $((SECONDS - t0)) s" >> $OUT/times.txt
+# 2. Issue 36: is the gather fused into the trace (the default, measured at 2.1M paths and more) still the better
+# choice at real-time sizes, where the sorted trace gained nothing on Sponza? Fusion none against gather.
+t1=$SECONDS
+if [ $((t1 - t0)) -lt 400 ]; then
+  timeout 150 $B bench --cases "$S@CameraMain,temple@hall" --sizes 720p,1080p --bounces 4 --strategies two-point     --sorts radix --fusions none,gather --trace-shades split --rounds 2 --no-detail --no-charts --out-dir /tmp/fu     > /tmp/fu.log 2>&1 || echo "bench fusion exit $?" >> $OUT/errors.txt
+  cp /tmp/fu/results.csv $OUT/fusion.csv 2>/dev/null
+fi
+echo "fusion: $((SECONDS - t1)) s" >> $OUT/times.txt
 echo done
