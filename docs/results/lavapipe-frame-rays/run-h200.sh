@@ -4,7 +4,8 @@
 # `l1` (.dev/lean-l1/raylab: lean-trace.patch with RL_LEAN_TRACE defined, the frame's fields by access chain and
 # no steps written) and `l2` (.dev/lean-l2/raylab: also RL_LEAN_NO_COUNT, no ray-count atomics; its stats count
 # 0 rays, so its rate is base's rays over its own trace time). Issue 35's measure, Sponza CameraMain, three rounds
-# interleaved between the binaries, then tracebench's traversal alone on the same sizes.
+# interleaved between the binaries, then tracebench's traversal alone on the same sizes. Read the frames with
+# `python3 docs/results/h200-pair-nodes/analyse.py lean/` (l2's rows read 0: divide base's rays by its trace ms).
 source docs/results/device-unpack.sh
 t0=$SECONDS
 mkdir -p /tmp/lean
@@ -13,7 +14,7 @@ for round in 1 2 3; do
     bin=build-device/raylab; [ $v != base ] && bin=.dev/lean-$v/raylab
     for size in 2048x1024 4096x2048; do
       timeout 60 $bin render --scene $S --view CameraMain --size $size --bounces 2 --strategy none --compaction none \
-        --trace-shade split --frames 10 --detail-every 0 --stats /tmp/lean/$v-$size-r$round.json --out /tmp/x.png \
+        --trace-shade split --frames 10 --detail-every 0 --stats /tmp/lean/sponza-$v-sbvh-$size-r$round.json --out /tmp/x.png \
         > /dev/null 2>&1 || echo "render $v $size $round exit $?" >> $OUT/errors.txt
     done
   done
