@@ -26,16 +26,19 @@ for round in 1 2; do
     run openings $f 2048x1024 - --scene temple --view openings
     run detail $f 2048x1024 - --scene temple-detail:1000000 --view hall
     run clutter $f 2048x1024 mk --scene clutter:1000000
+    run cornell $f 2048x1024 - --scene .dev/cornell/cornellBox.gltf
   done
 done
 tar -cJf $OUT/trees.tar.xz -C /tmp out mk
 echo "frames: $((SECONDS - t0)) s" >> $OUT/times.txt; t0=$SECONDS
 for round in 1 2; do
-  for c in "$S@CameraMain" temple@hall temple@openings temple-detail:1000000@hall clutter:1000000@overview; do
+  for c in "$S@CameraMain" temple@hall temple@openings temple-detail:1000000@hall clutter:1000000@overview \
+           .dev/cornell/cornellBox.gltf@; do
     for f in 0 0.001 0.003; do
       [ $((SECONDS - t0)) -lt 150 ] || break 3
       n=$(basename "${c%%@*}" .gltf)-${c#*@}-p$f-r$round
-      timeout 30 $B tracebench --scene "${c%%@*}" --view "${c#*@}" --size 2048x1024 --bvhs sbvh --bvh-presplit $f \
+      view=${c#*@}
+      timeout 30 $B tracebench --scene "${c%%@*}" ${view:+--view $view} --size 2048x1024 --bvhs sbvh --bvh-presplit $f \
         --repeat 20 --check 1024 --csv /tmp/tb-$n.csv > /tmp/tb-$n.txt 2>&1 || echo "tracebench $n exit $?" >> $OUT/errors.txt
       appendRows /tmp/tb-$n.csv $OUT/tracebench.csv table,presplit,round $n,$f,$round
     done
