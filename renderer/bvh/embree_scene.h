@@ -24,7 +24,7 @@ class EmbreeScene {
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-  // Hits with t in (tNear, tMax]; both faces count, as in our shaders.
+  // Hits with t in (tNear, tMax), open at both ends and both faces counting, as in our shaders.
   EmbreeHit intersect(const glm::vec3& origin, const glm::vec3& direction, float tMax = 1e30f,
                       float tNear = 0.0f) const;
   // Whether anything lies in (tNear, tMax).

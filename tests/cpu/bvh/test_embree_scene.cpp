@@ -65,6 +65,12 @@ TEST(EmbreeScene, EmptySceneAndTMaxAreHonoured) {
   EXPECT_NEAR(scene.intersect({0, 0, 4}, {0, 0, -1}).t, 2.0f, 1e-6f);  // the back face counts
   EXPECT_TRUE(scene.occluded({0, 0, 0}, {0, 0, 1}, 3.0f));
   EXPECT_FALSE(scene.occluded({0, 0, 0}, {0, 0, 1}, 1.0f));
+  // The segment is open at both ends, as the shaders' test (t > 0, t < tMax): a ray starting on the triangle,
+  // leaving it or running in its plane, does not hit it at t = 0, and a shadow ray ending on it is not blocked.
+  EXPECT_LT(scene.intersect({0, 0, 2}, {0, 0, 1}).t, 0.0f);
+  EXPECT_LT(scene.intersect({0, 0, 2}, {0, 0, -1}).t, 0.0f);
+  EXPECT_FALSE(scene.occluded({0, 0, 2}, {0, 0, 1}, 1e30f));
+  EXPECT_FALSE(scene.occluded({0, 0, 0}, {0, 0, 1}, 2.0f));
 }
 
 }  // namespace
