@@ -19,3 +19,18 @@ appendRows() {
   [ -s "$2" ] || head -1 "$1" | sed "s/^/$3,/" > "$2"
   tail -n +2 "$1" | sed "s/^/$4,/" >> "$2"
 }
+# benchBinaries CSV CASES SIZES TIMEOUT NAME=BINARY...: the frame bench of each binary at 4 bounces, two-point keys,
+# radix, split trace and shade, one round each, the binaries interleaved over two rounds; rows to $OUT/CSV behind
+# (binary, round); a bench that fails or runs past TIMEOUT seconds goes to $OUT/errors.txt.
+benchBinaries() {
+  local csv=$1 cases=$2 sizes=$3 limit=$4; shift 4
+  for round in 1 2; do
+    for pair in "$@"; do
+      local v=${pair%%=*} bin=${pair#*=}
+      timeout $limit $bin bench --cases "$cases" --sizes $sizes --bounces 4 --strategies two-point --sorts radix \
+        --trace-shades split --rounds 1 --no-detail --no-charts --out-dir /tmp/b-$v-$round \
+        > /tmp/b-$v-$round.log 2>&1 || echo "bench $v $round exit $?" >> $OUT/errors.txt
+      appendRows /tmp/b-$v-$round/results.csv $OUT/$csv binary,round $v,$round
+    done
+  done
+}

@@ -8,15 +8,7 @@ source docs/results/device-unpack.sh
 B=build-device/raylab
 CASES="$S@CameraMain,temple@hall,temple-detail:1000000@hall,clutter:1000000"
 t0=$SECONDS
-for round in 1 2; do
-  for v in rotate copyback; do
-    bin=$B; [ $v = copyback ] && bin=.dev/copyback/raylab
-    timeout 150 $bin bench --cases "$CASES" --sizes 720p,1080p,4096x2048 --bounces 4 --strategies two-point \
-      --sorts radix --trace-shades split --rounds 1 --no-detail --no-charts --out-dir /tmp/r-$v-$round \
-      > /tmp/r-$v-$round.log 2>&1 || echo "bench $v $round exit $?" >> $OUT/errors.txt
-    appendRows /tmp/r-$v-$round/results.csv $OUT/rotation.csv binary,round $v,$round
-  done
-done
+benchBinaries rotation.csv "$CASES" 720p,1080p,4096x2048 150 rotate=$B copyback=.dev/copyback/raylab
 echo "rotation: $((SECONDS - t0)) s" >> $OUT/times.txt
 # 2. Issue 36: is the gather fused into the trace (the default, measured at 2.1M paths and more) still the better
 # choice at real-time sizes, where the sorted trace gained nothing on Sponza? Fusion none against gather.

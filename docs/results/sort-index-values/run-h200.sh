@@ -7,14 +7,6 @@
 source docs/results/device-unpack.sh
 CASES="$S@CameraMain,temple@hall,clutter:1000000"
 t0=$SECONDS
-for round in 1 2; do
-  for v in given indices; do
-    bin=build-device/raylab; [ $v = indices ] && bin=.dev/indices/raylab
-    timeout 140 $bin bench --cases "$CASES" --sizes 720p,1080p,4096x2048 --bounces 4 --strategies two-point \
-      --sorts radix --trace-shades split --rounds 1 --no-detail --no-charts --out-dir /tmp/v-$v-$round \
-      > /tmp/v-$v-$round.log 2>&1 || echo "bench $v $round exit $?" >> $OUT/errors.txt
-    appendRows /tmp/v-$v-$round/results.csv $OUT/values.csv binary,round $v,$round
-  done
-done
+benchBinaries values.csv "$CASES" 720p,1080p,4096x2048 140 given=build-device/raylab indices=.dev/indices/raylab
 echo "benches: $((SECONDS - t0)) s" >> $OUT/times.txt
 echo done
