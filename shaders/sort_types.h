@@ -44,7 +44,8 @@ struct SortRadixPush {
   uint groupOffset;  // first tile of this dispatch (dispatches are split at the device's group limit)
   uint hasCountLimit;  // 1: sort only min(count, countLimit.v[0]) pairs (GpuSorter::record's countLimit)
   SORT_REF(SortUintBuf) countLimit;
-  uint valuesAreIndices;  // 1: the input values are not read: each pair's value is its input index (SortValues::Indices)
+  // 1: the input values are not read; each pair's value is its input index (SortValues::Indices).
+  uint valuesAreIndices;
   uint pad0;
 };
 
