@@ -1,5 +1,7 @@
 #include "renderer/gpu_scene.h"
 
+#include <stdexcept>
+
 #include "renderer/bvh/bvh_leaf_records.h"
 #include "renderer/bvh/bvh_pairs.h"
 #include "renderer/vk/vk_context.h"
@@ -50,8 +52,8 @@ EmitterTable buildEmitterTable(const Scene& scene, const std::vector<uint32_t>& 
 }
 
 GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCollapse collapse,
-                           uint32_t reinsertPasses, float presplit)
-    : wideCollapse_(collapse), reinsertPasses_(reinsertPasses), presplit_(presplit) {
+                           uint32_t reinsertPasses, float presplit, bool keepHostTrees)
+    : keepsHostTrees_(keepHostTrees), wideCollapse_(collapse), reinsertPasses_(reinsertPasses), presplit_(presplit) {
   for (const Triangle& t : scene.triangles)
     if (t.material >= scene.materials.size()) throw SceneLoadError(scene.name + ": triangle material out of range");
   Bvh bvh = buildBvh(scene.triangles);
@@ -98,13 +100,18 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCol
     return buffers_.back().address();
   };
   // Both binary trees read leaf records: the plain tree's are its own order (entry i, triangle i).
-  binary_ = {add(pairNodes(bvh)), add(leafRecords(scene.triangles, bvh.triangleOrder, bvh.triangleOrder))};
+  auto upload = [&](HostPairTree tree, HostPairTree& kept) {
+    const BinaryTree onGpu{add(tree.nodes), add(tree.entries)};
+    if (keepHostTrees) kept = std::move(tree);
+    return onGpu;
+  };
+  binary_ = upload({pairNodes(bvh), leafRecords(scene.triangles, bvh.triangleOrder, bvh.triangleOrder)}, hostBinary_);
   {
     Bvh split = buildBvh(scene.triangles, kSpatialSplitMaxLeafSize, 0, BvhSplits::Spatial, presplit);
     reinsertStats_ = reinsertOptimize(split, reinsertPasses);
     split.stats.buildMs += reinsertStats_.ms;
     splitStats_ = split.stats;
-    split_ = {add(pairNodes(split)), add(leafRecords(scene.triangles, split.triangleOrder, bvh.triangleOrder))};
+    split_ = upload({pairNodes(split), leafRecords(scene.triangles, split.triangleOrder, bvh.triangleOrder)}, hostSplit_);
   }
   block_.wideNodes = add(wide.nodes);
   block_.bvhLayout = RL_BVH_BINARY;  // block(layout) sets it
@@ -120,6 +127,12 @@ GpuSceneData::GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCol
   bool sky = luminance(scene.skyColor) > 0.0f;
   // Light sampling splits between the sky and the emitters; with only one of them, all goes to it.
   block_.skyLightProbability = !sky ? 0.0f : (lights.emitters.empty() ? 1.0f : 0.5f);
+}
+
+const HostPairTree& GpuSceneData::hostTree(BvhLayout layout) const {
+  if (!keepsHostTrees_) throw std::logic_error("GpuSceneData::hostTree: the scene was made without keepHostTrees");
+  if (layout == BvhLayout::Wide) throw std::logic_error("GpuSceneData::hostTree: the wide tree has no pair nodes");
+  return layout == BvhLayout::Sbvh ? hostSplit_ : hostBinary_;
 }
 
 uint64_t GpuSceneData::memoryBytes() const {

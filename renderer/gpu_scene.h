@@ -18,14 +18,21 @@ class VulkanContext;
 // The traversal a layout takes (GpuScene::bvhLayout, RL_SPEC_BVH_LAYOUT): both binary trees take the binary one.
 inline uint32_t traversalOf(BvhLayout layout) { return layout == BvhLayout::Wide ? RL_BVH_WIDE : RL_BVH_BINARY; }
 
+// A binary tree as its traversal reads it (GpuScene::nodes and leafTriangles), kept on the host for the CPU twin
+// of that traversal (traversePairsCpu).
+struct HostPairTree {
+  std::vector<gpu::BvhPairNode> nodes;
+  std::vector<gpu::GpuLeafTriangle> entries;
+};
+
 class GpuSceneData {
  public:
   // `collapse`: how the wide BVH is made (Settings::wideCollapse), which also decides the BVH order of the
   // triangles both layouts and the emitter table use. `reinsertPasses` (Settings::bvhReinsert): passes of
   // reinsertOptimize over the spatial-split tree. `presplit` (Settings::bvhPresplit): its cuts before that
-  // tree's build (buildBvh).
+  // tree's build (buildBvh). `keepHostTrees`: keep both binary trees' GPU form on the host too (hostTree).
   GpuSceneData(const VulkanContext& ctx, const Scene& scene, WideCollapse collapse, uint32_t reinsertPasses = 0,
-               float presplit = 0.0f);
+               float presplit = 0.0f, bool keepHostTrees = false);
 
   // The block the shaders read, walking the tree `layout` (Settings::bvh: a frame's choice, not the scene's).
   gpu::GpuScene block(BvhLayout layout) const {
@@ -36,6 +43,9 @@ class GpuSceneData {
     b.leafTriangles = tree.leafTriangles;
     return b;
   }
+  // The binary tree `layout` names (Binary or Sbvh) as the GPU reads it; throws std::logic_error for the wide
+  // layout or a scene made without keepHostTrees.
+  const HostPairTree& hostTree(BvhLayout layout) const;
   const BvhBuildStats& bvhStats() const { return bvhStats_; }
   // The binary tree built again with spatial splits (BvhLayout::Sbvh) over the same BVH order.
   const BvhBuildStats& splitBvhStats() const { return splitStats_; }
@@ -63,6 +73,8 @@ class GpuSceneData {
   std::vector<GpuBuffer> buffers_;
   gpu::GpuScene block_{};
   BinaryTree binary_, split_;
+  bool keepsHostTrees_ = false;
+  HostPairTree hostBinary_, hostSplit_;
   BvhBuildStats bvhStats_, splitStats_;
   BvhWideStats wideStats_;
   WideCollapse wideCollapse_;

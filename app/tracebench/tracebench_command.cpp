@@ -5,10 +5,12 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 
 #include "app/bench/bench_spread.h"
 #include "app/scene_setup.h"
 #include "app/tracebench/tracebench_options.h"
+#include "app/tracebench/warp_fetches.h"
 #include "renderer/bvh/embree_scene.h"
 #include "renderer/checked_write.h"
 #include "renderer/detail_sums.h"
@@ -140,6 +142,7 @@ struct Cell {
   // The divergence the lab studies: traversal steps a ray, and the virtual warp efficiency of 32 consecutive
   // rays (their steps over 32 times the most steps among them), as the frames' detailed figures count them.
   double meanSteps = 0.0, warpEfficiency = 0.0;
+  std::optional<FetchCounts> fetches;  // --fetches
 };
 
 // Every round in one submission, each cell once a round in the table's order: warm-up rounds, then timed ones,
@@ -220,6 +223,31 @@ Figures figuresOf(const Cell& c) {
   return f;
 }
 
+// --fetches' columns of a row: the CPU twin's counts (warp_fetches.h), -1 each where not counted.
+std::string fetchColumns(const std::optional<FetchCounts>& f) {
+  const FetchCounts none{-1, -1, -1, -1, -1, -1};
+  const FetchCounts& c = f ? *f : none;
+  char text[256];
+  std::snprintf(text, sizeof text, ",%.4f,%.4f,%.4f,%.4f,%.4f,%.3f", c.meanSteps, c.nodesPerRay, c.warpNodesPerRay,
+                c.entriesPerRay, c.warpEntriesPerRay, c.windowMegabytes);
+  return text;
+}
+
+// --fetches' table: what each cell's traversal reads, lane by lane and warp by warp, and what the rays an H200
+// holds at once touch.
+void reportFetches(const std::vector<Cell>& cells) {
+  std::printf("reads (CPU twin of the traversal; a ray; warp: the distinct reads of 32 consecutive rays; window: "
+              "distinct MB of %u rays)\n", kH200ResidentThreads);
+  std::printf("%-7s %-13s %7s %9s %10s %9s %10s %10s %10s\n", "bvh", "kind", "steps", "nodes", "warp_nodes", "entries",
+              "warp_entr", "node_share", "window_MB");
+  for (const Cell& c : cells) {
+    const FetchCounts& f = *c.fetches;
+    std::printf("%-7s %-13s %7.2f %9.2f %10.2f %9.2f %10.2f %10.2f %10.2f\n", toString(c.bvh).c_str(), c.kind->name,
+                f.meanSteps, f.nodesPerRay, f.warpNodesPerRay, f.entriesPerRay, f.warpEntriesPerRay,
+                f.warpNodesPerRay > 0 ? f.nodesPerRay / f.warpNodesPerRay : 0.0, f.windowMegabytes);
+  }
+}
+
 // The table on stdout and, with --csv, the same rows with what produced them.
 void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const LoadedScene& loaded,
             const DeviceInfo& dev) {
@@ -233,7 +261,8 @@ void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const Lo
               "min_ms", "max_ms", "Mrays/s", "spread%", "hit_frac", "steps", "warp", "check (Embree)");
   std::string csv = "bvh,kind,rays,median_ms,min_ms,max_ms,rays_per_second,spread_percent,hit_fraction,"
                     "mean_steps,warp_efficiency,checked,disagreements,scene,view,width,height,order,sort_rays,sort_bits,"
-                    "bounce_depth,sort_earlier,repeat,warmup,seed,device,driver,revision\n";
+                    "bounce_depth,sort_earlier,repeat,warmup,seed,device,driver,revision,cpu_mean_steps,nodes_per_ray,"
+                    "warp_nodes_per_ray,entries_per_ray,warp_entries_per_ray,window_megabytes\n";
   const std::string context = csvText(loaded.scene.name) + "," + csvText(loaded.view.name) + "," +
                               std::to_string(s.width) + "," + std::to_string(s.height) + "," +
                               (o.order == CameraRayOrder::Tiles ? "tiles" : "scanline") + "," +
@@ -252,8 +281,9 @@ void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const Lo
     std::snprintf(line, sizeof line, "%s,%s,%u,%.6f,%.6f,%.6f,%.0f,%.2f,%.6f,%.4f,%.6f,%u,%u,", toString(c.bvh).c_str(),
                   c.kind->name, c.rays->size(), f.median, f.min, f.max, f.raysPerSecond, f.spreadPercent,
                   c.hitFraction, c.meanSteps, c.warpEfficiency, c.checked, c.disagreements);
-    csv += line + context + "\n";
+    csv += line + context + fetchColumns(c.fetches) + "\n";
   }
+  if (o.fetches) reportFetches(cells);
   if (!o.csv.empty()) writeFileChecked(o.csv, csv);  // a WriteError reaches main: exit 1, naming the file
 }
 
@@ -278,7 +308,7 @@ int runTraceBench(const TraceBenchOptions& o) {
   VulkanContext ctx(co);
   if (!deviceTimesCompute(ctx, "raylab tracebench")) return kExitFailure;
   const GpuSceneData scene(ctx, loaded.scene, o.common.settings.wideCollapse, o.common.settings.bvhReinsert,
-                           o.common.settings.bvhPresplit);
+                           o.common.settings.bvhPresplit, o.fetches);
   std::vector<GpuBuffer> blocks;  // each tree's scene block (GpuSceneData::block)
   for (BvhLayout bvh : o.bvhs) blocks.push_back(makeBufferFrom(ctx, std::vector<gpu::GpuScene>{scene.block(bvh)}));
   const QueryPipelines pipelines(ctx);
@@ -296,6 +326,9 @@ int runTraceBench(const TraceBenchOptions& o) {
   timeCells(ctx, pipelines, cells, o.warmup, o.repeat);
   const EmbreeScene embree(loaded.scene.triangles);
   for (Cell& c : cells) checkCell(c, embree, o.check);
+  if (o.fetches)
+    for (Cell& c : cells)
+      c.fetches = countFetches(scene.hostTree(c.bvh), *c.rays, c.kind->query == RL_HIT_QUERY_OCCLUDED);
   report(cells, o, loaded, ctx.info());
   if (co.validation != ValidationMode::Off && ctx.validationErrors() > 0) {
     std::fprintf(stderr, "raylab tracebench: the validation layer reported %u errors\n", ctx.validationErrors());

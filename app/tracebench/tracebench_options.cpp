@@ -26,6 +26,10 @@ const char* traceBenchUsage() {
          "                       the default; 2: the first bounce's; up to 8), each earlier bounce traced here\n"
          "  --sort-earlier       trace the earlier bounces in --sort-rays' order (not the oracle's), so that the\n"
          "                       bounce rays come in the order the last sort left them (needs --bounce-depth 2+)\n"
+         "  --fetches            also count what each ray's traversal reads, walking the same rays with its CPU\n"
+         "                       twin: pair nodes and leaf entries a ray, the distinct ones of each warp of 32\n"
+         "                       rays (a ray), and the distinct megabytes of each 270,336 rays (the H200's\n"
+         "                       resident threads); binary and sbvh trees\n"
          "  --order tiles|scanline  the camera rays' order: the generate stage's 8x4-pixel tiles (default) or rows\n"
          "  --repeat R           timed rounds, 1..1000 (default 10), after --warmup rounds, 0..1000 (default 3)\n"
          "  --seed S             seed of the bounce and shadow directions (default 1)\n"
@@ -47,7 +51,7 @@ const std::vector<std::string> kSharedFlags = {"--scene", "--view",  "--size",  
                                                "--bvh-reinsert", "--bvh-presplit"};
 const std::vector<std::string> kOwnFlags = {"--bvhs", "--kinds", "--sort-rays", "--order", "--repeat", "--warmup",
                                             "--seed", "--check", "--csv",       "--export", "--validate",
-                                            "--bounce-depth", "--sort-earlier"};
+                                            "--bounce-depth", "--sort-earlier", "--fetches"};
 
 std::vector<RayKind> parseKinds(const std::string& text) {
   std::vector<RayKind> kinds;
@@ -97,6 +101,7 @@ TraceBenchOptions parseTraceBenchOptions(std::vector<std::string> args) {
   if (auto v = takeFlag(args, "--seed")) o.seed = parseUint("--seed", *v, 0, 0xFFFFFFFFu);
   if (auto v = takeFlag(args, "--bounce-depth")) o.bounceDepth = parseUint("--bounce-depth", *v, 1, 8);
   o.sortEarlier = takeSwitch(args, "--sort-earlier");
+  o.fetches = takeSwitch(args, "--fetches");
   if (auto v = takeFlag(args, "--check")) o.check = parseUint("--check", *v, 0, 1000000);
   if (auto v = takeFlag(args, "--csv")) o.csv = *v;
   if (auto v = takeFlag(args, "--export")) {
@@ -130,6 +135,8 @@ TraceBenchOptions parseTraceBenchOptions(std::vector<std::string> args) {
     throw UsageError("--sort-earlier needs --sort-rays with a key other than the oracle's (whose key needs the hits)");
   if (o.sortEarlier && o.bounceDepth < 2)
     throw UsageError("--sort-earlier needs --bounce-depth 2 or more: the camera rays are not sorted");
+  if (o.fetches && std::find(o.bvhs.begin(), o.bvhs.end(), BvhLayout::Wide) != o.bvhs.end())
+    throw UsageError("--fetches counts the pair-node traversal's reads: --bvhs binary or sbvh, not wide");
   return o;
 }
 

@@ -35,6 +35,7 @@ struct TraceBenchOptions {
   uint32_t repeat = 10, warmup = 3, seed = 1, check = 4096;
   uint32_t bounceDepth = 1;  // --bounce-depth: bounce and shadow rays leave the hits of this many bounces - 1
   bool sortEarlier = false;  // --sort-earlier: the earlier bounces traced in --sort-rays' order
+  bool fetches = false;  // --fetches: each cell's reads counted by the CPU twin (warp_fetches.h)
   std::string csv;
   std::string exportDir;  // --export: the rays of each kind and the triangles as files (trace_rays.h)
 };

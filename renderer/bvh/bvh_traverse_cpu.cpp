@@ -19,21 +19,26 @@ float cpuIntersectBox(glm::vec3 bmin, glm::vec3 bmax, glm::vec3 origin, glm::vec
 
 // shaders/bvh_traverse.glsl's intersectTriangleEdges: no early exit, one test after u, v and t (a ray parallel
 // to the plane divides by zero, and the infinities or NaNs fail the test).
-void cpuIntersectTriangle(const gpu::GpuTriangle& tri, uint32_t index, glm::vec3 origin, glm::vec3 dir, CpuHit& hit,
-                          float& tMax) {
-  const glm::vec3 p = glm::cross(dir, tri.e2);
-  const float inv = 1.0f / glm::dot(tri.e1, p);
-  const glm::vec3 s = origin - tri.v0;
+void cpuIntersectTriangle(glm::vec3 v0, glm::vec3 e1, glm::vec3 e2, uint32_t index, glm::vec3 origin, glm::vec3 dir,
+                          CpuHit& hit, float& tMax) {
+  const glm::vec3 p = glm::cross(dir, e2);
+  const float inv = 1.0f / glm::dot(e1, p);
+  const glm::vec3 s = origin - v0;
   const float u = glm::dot(s, p) * inv;
-  const glm::vec3 q = glm::cross(s, tri.e1);
+  const glm::vec3 q = glm::cross(s, e1);
   const float v = glm::dot(dir, q) * inv;
-  const float t = glm::dot(tri.e2, q) * inv;
+  const float t = glm::dot(e2, q) * inv;
   if (u >= 0.0f && v >= 0.0f && u + v <= 1.0f && t > 0.0f && t < tMax) {
     tMax = t;
     hit.t = t;
     hit.triangle = index;
     hit.bary = {u, v};
   }
+}
+
+void cpuIntersectTriangle(const gpu::GpuTriangle& tri, uint32_t index, glm::vec3 origin, glm::vec3 dir, CpuHit& hit,
+                          float& tMax) {
+  cpuIntersectTriangle(tri.v0, tri.e1, tri.e2, index, origin, dir, hit, tMax);
 }
 
 glm::vec3 cpuSafeInverse(glm::vec3 d) {
@@ -80,6 +85,58 @@ CpuHit traverseBinaryCpu(const std::vector<gpu::BvhNode>& nodes, const std::vect
     }
     node = left;
     if (dr < 1e30f && sp < RL_BVH_STACK) stack[sp++] = right;
+  }
+  return hit;
+}
+
+CpuHit traversePairsCpu(const std::vector<gpu::BvhPairNode>& nodes, const std::vector<gpu::GpuLeafTriangle>& entries,
+                        glm::vec3 origin, glm::vec3 dir, float tMax, bool anyHit, PairFetchLog* log) {
+  CpuHit hit;
+  if (nodes.empty()) return hit;
+  const glm::vec3 invDir = cpuSafeInverse(dir);
+  const glm::vec3 originInv = origin * invDir;
+  uint32_t stack[RL_BVH_STACK];
+  uint32_t sp = 0, node = 0;
+  while (true) {
+    hit.steps++;
+    if (node >= RL_LEAF_TAG) {  // a leaf word (isLeafWord): its range of entries
+      const uint32_t first = (node & ~RL_LEAF_TAG) >> RL_LEAF_COUNT_BITS;
+      const uint32_t count = (node & ((1u << RL_LEAF_COUNT_BITS) - 1u)) + 1u;
+      for (uint32_t e = first; e < first + count; ++e) {
+        const gpu::GpuLeafTriangle& t = entries[e];
+        hit.triangleTests++;
+        if (log) log->entries.push_back(e);
+        cpuIntersectTriangle(t.v0, t.e1, t.e2, t.triangle, origin, dir, hit, tMax);
+      }
+      if (anyHit && hit.t > 0.0f) return hit;
+      if (sp == 0) break;
+      node = stack[--sp];
+      continue;
+    }
+    hit.nodeVisits++;
+    if (log) log->nodes.push_back(node);
+    const gpu::BvhPairNode& n = nodes[node];
+    // enterPair: the slabs as bounds * invDir - origin * invDir, both children at once.
+    float enter[2], leave[2];
+    for (int c = 0; c < 2; ++c) {
+      const glm::vec3 lo(n.xBounds[2 * c], n.yBounds[2 * c], n.zBounds[2 * c]);
+      const glm::vec3 hi(n.xBounds[2 * c + 1], n.yBounds[2 * c + 1], n.zBounds[2 * c + 1]);
+      const glm::vec3 t0 = lo * invDir - originInv, t1 = hi * invDir - originInv;
+      const glm::vec3 tn = glm::min(t0, t1), tf = glm::max(t0, t1);
+      enter[c] = std::max(std::max(tn.x, tn.y), std::max(tn.z, 0.0f));
+      leave[c] = std::min(std::min(tf.x, tf.y), std::min(tf.z, tMax));
+    }
+    const bool hit0 = enter[0] <= leave[0], hit1 = enter[1] <= leave[1];
+    if (hit0 && hit1) {
+      const bool firstNearer = enter[0] <= enter[1];
+      if (sp < RL_BVH_STACK) stack[sp++] = firstNearer ? n.child[1] : n.child[0];
+      node = firstNearer ? n.child[0] : n.child[1];
+    } else if (hit0 || hit1) {
+      node = hit0 ? n.child[0] : n.child[1];
+    } else {
+      if (sp == 0) break;
+      node = stack[--sp];
+    }
   }
   return hit;
 }

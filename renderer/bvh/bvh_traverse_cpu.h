@@ -1,6 +1,8 @@
 // Plain C++ twins of the shaders' BVH traversals (shaders/bvh_traverse.glsl and bvh_traverse_wide.glsl), float
-// for float, so tests can check the wide tree against the binary one without a device. Keep them in step with
-// the GLSL: same box and triangle tests, same visit order, same step counting.
+// for float, so tests can check the trees against each other and count what a traversal reads without a device.
+// traversePairsCpu walks the pair nodes the shader reads; traverseBinaryCpu the BvhNode tree they are made from,
+// in the loop the shader had before them. Keep them in step with the GLSL: same box and triangle tests, same
+// visit order, same step counting.
 #pragma once
 
 #include <cstdint>
@@ -28,6 +30,17 @@ struct CpuHit {
 // `triangles` in BVH order (bvhOrderTriangles); anyHit stops at the first hit, as shadow rays do.
 CpuHit traverseBinaryCpu(const std::vector<gpu::BvhNode>& nodes, const std::vector<gpu::GpuTriangle>& triangles,
                          glm::vec3 origin, glm::vec3 dir, float tMax, bool anyHit);
+// What a pair-node traversal read, in order: each pair node it tested (64 bytes: both children's boxes) and each
+// leaf entry it intersected (48 bytes). The lanes of a warp that walk the same part of the tree share these reads.
+struct PairFetchLog {
+  std::vector<uint32_t> nodes, entries;
+  void clear() { nodes.clear(), entries.clear(); }
+};
+// bvh_traverse.glsl's traverseBvh over the tree the GPU reads (pairNodes and leafRecords): hit.triangle is the
+// entry's BVH-order index, steps count pair nodes and leaves visited as the shader's do, nodeVisits the pair nodes
+// and triangleTests the entries. `log`, when given, gets every fetch appended.
+CpuHit traversePairsCpu(const std::vector<gpu::BvhPairNode>& nodes, const std::vector<gpu::GpuLeafTriangle>& entries,
+                        glm::vec3 origin, glm::vec3 dir, float tMax, bool anyHit, PairFetchLog* log = nullptr);
 // Every triangle tested, no tree: the reference both trees are checked against (the binary traversal's exact
 // boxes can miss a hit on a box face that a ray parallel to it grazes; the wide tree's boxes, rounded outwards,
 // rarely have that face).

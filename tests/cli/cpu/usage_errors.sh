@@ -39,6 +39,7 @@ check "--bounce-depth" tracebench --bounce-depth 9
 check "--sort-earlier needs --sort-rays" tracebench --sort-earlier --bounce-depth 2
 check "--sort-earlier needs --bounce-depth" tracebench --sort-earlier --sort-rays two-point
 check "--export needs a folder" tracebench --export ""
+check "--fetches counts the pair-node traversal" tracebench --fetches --bvhs sbvh,wide
 check "did you mean hall?" bench --cases temple@hal --out-dir bench-out
 [ -e bench-out ] && { echo "FAIL: a refused bench sweep left bench-out behind"; fail=1; }
 check "did you mean hall?" study temple@hal --out-dir study-out

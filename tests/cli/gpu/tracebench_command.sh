@@ -103,6 +103,29 @@ assert float(carried["bounce-sorted"]["warp_efficiency"]) > float(carried["bounc
 print("ok: second bounce in the first sort's order", carried["bounce"]["warp_efficiency"], "sorted again",
       carried["bounce-sorted"]["warp_efficiency"])
 PY
+# --fetches: the CPU twin walks the same rays in the same steps as the shader (its mean steps are the GPU's),
+# a warp reads fewer distinct things than its lanes in all, and the sorted rays' warps fewer than the unsorted
+# ones' from the same reads in all; without it the columns are -1.
+"$raylab" tracebench --scene temple --view hall --size 96x64 --repeat 1 --warmup 0 --sort-rays two-point \
+  --bvhs sbvh,binary --kinds bounce,bounce-sorted,shadow --fetches --csv "$dir/f.csv" >"$dir/f.txt"
+grep -q "^reads (CPU twin" "$dir/f.txt" || { echo "FAIL: no reads table"; cat "$dir/f.txt"; exit 1; }
+python3 - "$dir/f.csv" "$dir/o.csv" <<'PY'
+import csv, sys
+rows = {(r["bvh"], r["kind"]): r for r in csv.DictReader(open(sys.argv[1]))}
+for (bvh, kind), r in rows.items():
+    f = {k: float(r[k]) for k in ("cpu_mean_steps", "mean_steps", "nodes_per_ray", "warp_nodes_per_ray",
+                                  "entries_per_ray", "warp_entries_per_ray", "window_megabytes")}
+    assert abs(f["cpu_mean_steps"] - f["mean_steps"]) <= 1e-3 * f["mean_steps"], (bvh, kind, f)
+    assert 0 < f["warp_nodes_per_ray"] < f["nodes_per_ray"] and 0 < f["warp_entries_per_ray"] < f["entries_per_ray"], f
+    assert f["window_megabytes"] > 0, f
+for bvh in ("sbvh", "binary"):
+    b, s = rows[(bvh, "bounce")], rows[(bvh, "bounce-sorted")]
+    assert b["nodes_per_ray"] == s["nodes_per_ray"] and b["window_megabytes"] == s["window_megabytes"], (b, s)
+    assert float(s["warp_nodes_per_ray"]) < float(b["warp_nodes_per_ray"]), (b["warp_nodes_per_ray"], s["warp_nodes_per_ray"])
+plain = next(csv.DictReader(open(sys.argv[2])))
+assert all(plain[k] == "-1.0000" for k in ("cpu_mean_steps", "warp_nodes_per_ray")), plain
+print("ok: fetches", {k: rows[k]["warp_nodes_per_ray"] for k in rows})
+PY
 # --export: each kind's rays (32 bytes a ray, as many as the table says) and the cornell box's triangles (48
 # bytes each), the camera rays unit length and unbounded; a folder that cannot be made: exit 1.
 "$raylab" tracebench --scene cornell --size 32x16 --kinds camera,shadow --repeat 1 --warmup 0 --csv "$dir/e.csv" \

@@ -17,12 +17,14 @@
 #include <filesystem>
 #include <random>
 
+#include "renderer/bvh/bvh_traverse_cpu.h"
 #include "renderer/bvh/embree_scene.h"
 #include "renderer/gpu_scene.h"
 #include "renderer/vk/compute_pipeline.h"
 #include "scenes/procedural.h"
 #include "scenes/scene_library.h"
 #include "shaders/hit_query_types.h"
+#include "shaders/spec_ids.h"
 #include "app/tracebench/trace_rays.h"
 #include "tests/gpu_test.h"
 #include "tests/scene_checks.h"
@@ -36,16 +38,17 @@ struct GpuHit {
   float t;
   uint32_t triangle;  // scene index
   bool occluded;
+  uint32_t steps;  // the closest hit's traversal steps; with `query` RL_HIT_QUERY_OCCLUDED alone, the shadow ray's
 };
 
 std::vector<GpuHit> traceOnGpu(const VulkanContext& ctx, const GpuSceneData& scene, BvhLayout layout,
-                               const RaySet& rays) {
+                               const RaySet& rays, uint32_t query = RL_HIT_QUERY_CLOSEST | RL_HIT_QUERY_OCCLUDED) {
   const uint32_t n = static_cast<uint32_t>(rays.size());
   GpuBuffer block = makeBufferFrom(ctx, std::vector<gpu::GpuScene>{scene.block(layout)});
   GpuBuffer origins = makeBufferFrom(ctx, rays.origins);
   GpuBuffer directions = makeBufferFrom(ctx, rays.directions);
   GpuBuffer results = makeBufferFrom(ctx, std::vector<glm::uvec4>(n, glm::uvec4(0xDEADu)));
-  ComputePipeline pipeline(ctx, "hit_query", sizeof(gpu::HitQueryPush));
+  ComputePipeline pipeline(ctx, "hit_query", sizeof(gpu::HitQueryPush), 64, {{RL_SPEC_HIT_QUERIES, query}});
   gpu::HitQueryPush push{block.address(), origins.address(), directions.address(), results.address(), n, 0};
   ctx.submitAndWait([&](VkCommandBuffer cmd) {
     pipeline.dispatchThreads(cmd, push, n);
@@ -55,7 +58,7 @@ std::vector<GpuHit> traceOnGpu(const VulkanContext& ctx, const GpuSceneData& sce
   for (const glm::uvec4& r : results.downloadVector<glm::uvec4>(n)) {
     float t;
     std::memcpy(&t, &r.x, sizeof t);
-    hits.push_back({t, r.y, r.z != 0u});
+    hits.push_back({t, r.y, r.z != 0u, r.w});
   }
   return hits;
 }
@@ -247,6 +250,54 @@ TEST_F(EmbreeHits, SponzaRaysAgreeWithEmbree) {
   std::string path = sharedScene("Sponza/Sponza.gltf");
   if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not present";
   checkScene(ctx(), loadSceneByName(path), 8192);
+}
+
+// The CPU twin of the pair-node traversal (traversePairsCpu, which `raylab tracebench --fetches` walks to count
+// what a warp reads) against the shader itself, ray by ray on both binary trees: the same steps, the same hit
+// distance, the same shadow answer after the same steps. A ray whose box tests round differently on the two sides
+// could differ; none does on these scenes (lavapipe, Debian 12), and a few in a thousand are allowed.
+TEST_F(EmbreeHits, PairTraversalTwinTakesTheShadersSteps) {
+  for (const Scene& scene : {makeTemple(), loadSceneByName("temple-detail:200000")}) {
+    const GpuSceneData data(ctx(), scene, Settings{}.wideCollapse, 0, 0.0f, true);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::normal_distribution<float> gauss;
+    const Bounds b = scene.bounds();
+    RaySet rays;
+    for (const Viewpoint& v : scene.viewpoints)
+      for (const glm::vec3& d : cameraRays(v, 64, 32)) rays.add(v.position, d, 1e30f);
+    for (uint32_t i = 0; i < 4096; ++i)
+      rays.add(b.min + glm::vec3(unit(rng), unit(rng), unit(rng)) * b.extent(),
+               glm::normalize(glm::vec3(gauss(rng), gauss(rng), gauss(rng))),
+               i % 2 ? unit(rng) * glm::length(b.extent()) : 1e30f);
+    for (BvhLayout layout : {BvhLayout::Binary, BvhLayout::Sbvh}) {
+      SCOPED_TRACE(scene.name + ", " + toString(layout));
+      const HostPairTree& tree = data.hostTree(layout);
+      const std::vector<GpuHit> closest = traceOnGpu(ctx(), data, layout, rays, RL_HIT_QUERY_CLOSEST);
+      const std::vector<GpuHit> shadow = traceOnGpu(ctx(), data, layout, rays, RL_HIT_QUERY_OCCLUDED);
+      uint32_t differ = 0, hits = 0;
+      uint64_t gpuSteps = 0, cpuSteps = 0;
+      for (uint32_t i = 0; i < rays.size(); ++i) {
+        const glm::vec3 o(rays.origins[i]), d(rays.directions[i]);
+        const float tMax = rays.directions[i].w;
+        const CpuHit c = traversePairsCpu(tree.nodes, tree.entries, o, d, tMax, false);
+        const CpuHit a = traversePairsCpu(tree.nodes, tree.entries, o, d, tMax, true);
+        const bool same = c.steps == closest[i].steps && (c.t > 0.0f) == (closest[i].t > 0.0f) &&
+                          (c.t <= 0.0f || std::abs(c.t - closest[i].t) <= 1e-6f * c.t) &&
+                          a.steps == shadow[i].steps && (a.t > 0.0f) == shadow[i].occluded;
+        differ += !same;
+        if (!same && differ <= 5)
+          std::printf("ray %u: steps %u / %u, t %g / %g, shadow steps %u / %u (CPU / GPU)\n", i, c.steps,
+                      closest[i].steps, c.t, closest[i].t, a.steps, shadow[i].steps);
+        hits += c.t > 0.0f;
+        gpuSteps += closest[i].steps, cpuSteps += c.steps;
+      }
+      EXPECT_LE(differ, rays.size() / 500) << "of " << rays.size();
+      EXPECT_GT(hits, rays.size() / 3) << "too few hits: the test proves little";
+      EXPECT_NEAR(double(cpuSteps) / double(gpuSteps), 1.0, 1e-3);
+    }
+  }
+  EXPECT_THROW(GpuSceneData(ctx(), makeTemple(), Settings{}.wideCollapse).hostTree(BvhLayout::Sbvh), std::logic_error);
 }
 
 // A scene without triangles (the app refuses one, a library caller may not): every layout's traversal ends

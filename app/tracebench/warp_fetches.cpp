@@ -1,0 +1,93 @@
+#include "app/tracebench/warp_fetches.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "renderer/bvh/bvh_traverse_cpu.h"
+#include "renderer/parallel.h"
+
+namespace raylab {
+namespace {
+
+// A set of node or entry indices seen since the last mark: each index remembers the mark it was last seen under,
+// so a new warp or window starts empty without clearing anything.
+class SeenSince {
+ public:
+  explicit SeenSince(size_t size) : mark_(size, kNever) {}
+  // True the first time `index` is seen under `mark`.
+  bool first(uint32_t index, uint32_t mark) {
+    if (mark_[index] == mark) return false;
+    mark_[index] = mark;
+    return true;
+  }
+
+ private:
+  static constexpr uint32_t kNever = std::numeric_limits<uint32_t>::max();
+  std::vector<uint32_t> mark_;
+};
+
+// One window's sums (the rays [begin, end)), in task order.
+struct WindowSums {
+  uint64_t steps = 0, nodes = 0, entries = 0, warpNodes = 0, warpEntries = 0, windowBytes = 0;
+};
+
+WindowSums countWindow(const HostPairTree& tree, const RaySet& rays, bool anyHit, uint32_t begin, uint32_t end) {
+  WindowSums sums;
+  SeenSince warpNodes(tree.nodes.size()), warpEntries(tree.entries.size());
+  SeenSince windowNodes(tree.nodes.size()), windowEntries(tree.entries.size());
+  PairFetchLog log;
+  for (uint32_t i = begin; i < end; ++i) {
+    const uint32_t warp = i / kWarpSize;
+    log.clear();
+    const CpuHit hit = traversePairsCpu(tree.nodes, tree.entries, glm::vec3(rays.origins[i]),
+                                        glm::vec3(rays.directions[i]), rays.directions[i].w, anyHit, &log);
+    sums.steps += hit.steps;
+    sums.nodes += log.nodes.size();
+    sums.entries += log.entries.size();
+    for (uint32_t n : log.nodes) {
+      sums.warpNodes += warpNodes.first(n, warp);
+      sums.windowBytes += windowNodes.first(n, 0) ? kPairNodeBytes : 0;
+    }
+    for (uint32_t e : log.entries) {
+      sums.warpEntries += warpEntries.first(e, warp);
+      sums.windowBytes += windowEntries.first(e, 0) ? kLeafEntryBytes : 0;
+    }
+  }
+  return sums;
+}
+
+}  // namespace
+
+FetchCounts countFetches(const HostPairTree& tree, const RaySet& rays, bool anyHit, uint32_t window) {
+  if (window == 0) throw std::invalid_argument("countFetches: a window of 0 rays");
+  FetchCounts c;
+  const uint32_t n = rays.size();
+  if (n == 0) return c;
+  // Windows start on a warp (so no warp is split between two tasks); the tail beyond the last whole window is
+  // counted in the per-ray figures but not in the windows' bytes.
+  const uint32_t windowRays = std::max(kWarpSize, window / kWarpSize * kWarpSize);
+  const uint32_t whole = n / windowRays;
+  const uint32_t tasks = whole + (n % windowRays != 0);
+  std::vector<WindowSums> sums(tasks);
+  parallelFor(workerThreads(0, tasks, 1), tasks, [&](size_t t) {
+    const uint32_t begin = static_cast<uint32_t>(t) * windowRays;
+    sums[t] = countWindow(tree, rays, anyHit, begin, std::min(n, begin + windowRays));
+  });
+  WindowSums total;
+  for (uint32_t t = 0; t < tasks; ++t) {
+    total.steps += sums[t].steps, total.nodes += sums[t].nodes, total.entries += sums[t].entries;
+    total.warpNodes += sums[t].warpNodes, total.warpEntries += sums[t].warpEntries;
+    if (t < std::max(whole, 1u)) total.windowBytes += sums[t].windowBytes;
+  }
+  c.meanSteps = double(total.steps) / n;
+  c.nodesPerRay = double(total.nodes) / n;
+  c.entriesPerRay = double(total.entries) / n;
+  c.warpNodesPerRay = double(total.warpNodes) / n;
+  c.warpEntriesPerRay = double(total.warpEntries) / n;
+  c.windowMegabytes = double(total.windowBytes) / std::max(whole, 1u) * 1e-6;
+  return c;
+}
+
+}  // namespace raylab
