@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""The tables of README.md from this folder's CSVs (tracebench --fetches on lavapipe) and the H200's timings of
+the same ray sets (../h200-tree-variants/tracebench.csv, ba3d351: 2048x1024, sbvh, bounce rays unsorted and
+sorted by two-point keys). Bytes a ray a warp: each warp's distinct pair nodes (64 B) and leaf entries (48 B)
+over its 32 rays, what its lanes' reads come to once shared."""
+import csv
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCENES = [("hall", "temple", "hall"), ("openings", "temple", "openings"), ("sponza", "Sponza", "CameraMain"),
+          ("clutter", "clutter:1000000", "overview"), ("detail", "temple-detail:1000000", "hall")]
+
+
+def rows(path):
+    with open(path) as f:
+        return {r["kind"]: r for r in csv.DictReader(f)}
+
+
+def warp_bytes(r):
+    return float(r["warp_nodes_per_ray"]) * 64 + float(r["warp_entries_per_ray"]) * 48
+
+
+def lane_bytes(r):
+    return float(r["nodes_per_ray"]) * 64 + float(r["entries_per_ray"]) * 48
+
+
+def h200_rates():
+    rates = {}
+    with open(os.path.join(HERE, "..", "h200-tree-variants", "tracebench.csv")) as f:
+        for r in csv.DictReader(f):
+            key = (r["scene"], r["view"], r["kind"])
+            if r["bvh"] == "sbvh" and r["width"] == "2048" and r["sort_rays"] == "two-point" and key not in rates:
+                rates[key] = (float(r["rays_per_second"]), float(r["warp_efficiency"]))
+    return rates
+
+
+def oracle(name):
+    """The same bounce rays in the oracle key's order (the true hit point), where counted."""
+    path = os.path.join(HERE, f"oracle-{name}.csv")
+    if not os.path.exists(path):
+        return "-"
+    o = rows(path)["bounce-sorted"]
+    return f"{float(o['warp_efficiency']):.3f}, {warp_bytes(o):.0f}"
+
+
+def main():
+    h200 = h200_rates()
+    print("2048x1024 bounce rays, unsorted -> sorted by two-point keys")
+    print("| scene | H200 G rays/s | H200 gain | warp efficiency | slots a ray | bytes a ray, lanes | "
+          "bytes a ray a warp | warp bytes | MB a window | oracle: warp efficiency, bytes a ray a warp |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for name, scene, view in SCENES:
+        path = os.path.join(HERE, f"2k-{name}.csv")
+        if not os.path.exists(path):
+            continue
+        t = rows(path)
+        u, s = t["bounce"], t["bounce-sorted"]
+        (ru, eu), (rs, es) = h200[(scene, view, "bounce")], h200[(scene, view, "bounce-sorted")]
+        # The counts are of the same rays the H200 traced: their warp efficiency is the H200's (to the 4th place).
+        assert abs(float(u["warp_efficiency"]) - eu) < 2e-3 and abs(float(s["warp_efficiency"]) - es) < 2e-3, name
+        print(f"| {name} | {ru * 1e-9:.2f} -> {rs * 1e-9:.2f} | {rs / ru:.3f}x | {eu:.3f} -> {es:.3f} | "
+              f"{100 * (eu / es - 1):+.1f}% | {lane_bytes(u):.0f} | {warp_bytes(u):.0f} -> {warp_bytes(s):.0f} | "
+              f"{100 * (warp_bytes(s) / warp_bytes(u) - 1):+.1f}% | {float(u['window_megabytes']):.1f} -> "
+              f"{float(s['window_megabytes']):.1f} | {oracle(name)} |")
+    print()
+    print("1280x720, unsorted -> sorted by two-point keys (bounce), and shadow rays (unsorted)")
+    print("| scene | warp efficiency | bytes a ray a warp | warp bytes | MB a window | shadow: bytes a ray a warp, "
+          "MB a window |")
+    print("|---|---|---|---|---|---|")
+    for name, _, _ in SCENES:
+        path = os.path.join(HERE, f"720p-{name}.csv")
+        if not os.path.exists(path):
+            continue
+        t = rows(path)
+        u, s, sh = t["bounce"], t["bounce-sorted"], t["shadow"]
+        print(f"| {name} | {float(u['warp_efficiency']):.3f} -> {float(s['warp_efficiency']):.3f} | "
+              f"{warp_bytes(u):.0f} -> {warp_bytes(s):.0f} | {100 * (warp_bytes(s) / warp_bytes(u) - 1):+.1f}% | "
+              f"{float(u['window_megabytes']):.1f} -> {float(s['window_megabytes']):.1f} | "
+              f"{warp_bytes(sh):.0f}, {float(sh['window_megabytes']):.1f} |")
+
+
+if __name__ == "__main__":
+    main()
