@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# For a session with the device (about 2 minutes): do the counts predict the time beyond the two-point order?
+# The H200 traces the same 2048x1024 bounce rays unsorted, in two-point's order and in the oracle's
+# (tracebench, sbvh, 10 rounds after 3 warm-up, interleaved in one submission), on the five scenes of
+# README.md; two runs a scene. The counts say the oracle's order merges 32% more of a warp's reads than
+# two-point's on the clutter room and 8% on Sponza: if the reads rank the time, the clutter room gains most.
+# Reads out: $OUT/tracebench.csv (a `run` column), then analyse.py's tables with the H200's rates of both orders.
+source docs/results/device-unpack.sh
+B=build-device/raylab
+for run in 1 2; do
+  while read -r name scene view; do
+    [ $name = sponza ] && scene=$S
+    for key in two-point oracle; do
+      $B tracebench --scene "$scene" ${view:+--view $view} --size 2048x1024 --bvhs sbvh --kinds bounce,bounce-sorted \
+        --sort-rays $key --check 1024 --csv /tmp/t.csv > /tmp/t.log 2>&1 || echo "failed: $name $key" >> $OUT/errors.txt
+      appendRows /tmp/t.csv $OUT/tracebench.csv run $run
+    done
+  done <<'SCENES'
+hall temple hall
+openings temple openings
+sponza Sponza CameraMain
+detail temple-detail:1000000 hall
+clutter clutter:1000000
+SCENES
+done
