@@ -16,6 +16,14 @@ def rows(path):
         return {r["kind"]: r for r in csv.DictReader(f)}
 
 
+def counted(prefix):
+    """Each scene of SCENES with its rows of PREFIX-SCENE.csv, where it was counted."""
+    for name, scene, view in SCENES:
+        path = os.path.join(HERE, f"{prefix}-{name}.csv")
+        if os.path.exists(path):
+            yield name, scene, view, rows(path)
+
+
 def warp_bytes(r):
     return float(r["warp_nodes_per_ray"]) * 64 + float(r["warp_entries_per_ray"]) * 48
 
@@ -49,11 +57,7 @@ def main():
     print("| scene | H200 G rays/s | H200 gain | warp efficiency | slots a ray | bytes a ray, lanes | "
           "bytes a ray a warp | warp bytes | MB a window | oracle: warp efficiency, bytes a ray a warp |")
     print("|---|---|---|---|---|---|---|---|---|---|")
-    for name, scene, view in SCENES:
-        path = os.path.join(HERE, f"2k-{name}.csv")
-        if not os.path.exists(path):
-            continue
-        t = rows(path)
+    for name, scene, view, t in counted("2k"):
         u, s = t["bounce"], t["bounce-sorted"]
         (ru, eu), (rs, es) = h200[(scene, view, "bounce")], h200[(scene, view, "bounce-sorted")]
         # The counts are of the same rays the H200 traced: their warp efficiency is the H200's (to the 4th place).
@@ -67,11 +71,7 @@ def main():
     print("| scene | warp efficiency | bytes a ray a warp | warp bytes | MB a window | shadow: bytes a ray a warp, "
           "MB a window |")
     print("|---|---|---|---|---|---|")
-    for name, _, _ in SCENES:
-        path = os.path.join(HERE, f"720p-{name}.csv")
-        if not os.path.exists(path):
-            continue
-        t = rows(path)
+    for name, _, _, t in counted("720p"):
         u, s, sh = t["bounce"], t["bounce-sorted"], t["shadow"]
         print(f"| {name} | {float(u['warp_efficiency']):.3f} -> {float(s['warp_efficiency']):.3f} | "
               f"{warp_bytes(u):.0f} -> {warp_bytes(s):.0f} | {100 * (warp_bytes(s) / warp_bytes(u) - 1):+.1f}% | "

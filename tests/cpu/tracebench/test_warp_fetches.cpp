@@ -32,10 +32,11 @@ RaySet randomRays(const Scene& scene, uint32_t count, uint32_t seed) {
   std::normal_distribution<float> gauss;
   const Bounds b = scene.bounds();
   RaySet rays;
-  for (uint32_t i = 0; i < count; ++i)
-    rays.add(b.min + glm::vec3(unit(rng), unit(rng), unit(rng)) * b.extent(),
-             glm::normalize(glm::vec3(gauss(rng), gauss(rng), gauss(rng))),
-             i % 2 ? unit(rng) * glm::length(b.extent()) : 1e30f);
+  for (uint32_t i = 0; i < count; ++i) {
+    const glm::vec3 o = b.min + glm::vec3(unit(rng), unit(rng), unit(rng)) * b.extent();
+    const glm::vec3 d = glm::normalize(glm::vec3(gauss(rng), gauss(rng), gauss(rng)));
+    rays.add(o, d, i % 2 ? unit(rng) * glm::length(b.extent()) : 1e30f);
+  }
   return rays;
 }
 

@@ -157,10 +157,9 @@ void compareBatchWithEmbree(const Scene& scene, const EmbreeScene& embree, const
   }
 }
 
-// Camera rays of every viewpoint and random rays, then two bounces, through the tree `layout`.
-void checkLayout(const VulkanContext& ctx, const Scene& scene, const GpuSceneData& data, const EmbreeScene& embree,
-                 BvhLayout layout, uint32_t randomRays) {
-  std::mt19937 rng(20);
+// Camera rays of every viewpoint (64x32 each), then `randomRays` rays from random points of the scene's box in
+// random directions, every other one ending at a random distance.
+RaySet viewAndRandomRays(const Scene& scene, uint32_t randomRays, std::mt19937& rng) {
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::normal_distribution<float> gauss;
   const Bounds b = scene.bounds();
@@ -172,6 +171,14 @@ void checkLayout(const VulkanContext& ctx, const Scene& scene, const GpuSceneDat
     glm::vec3 d = glm::normalize(glm::vec3(gauss(rng), gauss(rng), gauss(rng)));
     rays.add(o, d, i % 2 ? unit(rng) * glm::length(b.extent()) : 1e30f);
   }
+  return rays;
+}
+
+// Camera rays of every viewpoint and random rays, then two bounces, through the tree `layout`.
+void checkLayout(const VulkanContext& ctx, const Scene& scene, const GpuSceneData& data, const EmbreeScene& embree,
+                 BvhLayout layout, uint32_t randomRays) {
+  std::mt19937 rng(20);
+  RaySet rays = viewAndRandomRays(scene, randomRays, rng);
   Tally tally;
   for (int bounce = 0; bounce < 3 && rays.size() > 0; ++bounce) {
     RaySet next;
@@ -260,16 +267,7 @@ TEST_F(EmbreeHits, PairTraversalTwinTakesTheShadersSteps) {
   for (const Scene& scene : {makeTemple(), loadSceneByName("temple-detail:200000")}) {
     const GpuSceneData data(ctx(), scene, Settings{}.wideCollapse, 0, 0.0f, true);
     std::mt19937 rng(7);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    std::normal_distribution<float> gauss;
-    const Bounds b = scene.bounds();
-    RaySet rays;
-    for (const Viewpoint& v : scene.viewpoints)
-      for (const glm::vec3& d : cameraRays(v, 64, 32)) rays.add(v.position, d, 1e30f);
-    for (uint32_t i = 0; i < 4096; ++i)
-      rays.add(b.min + glm::vec3(unit(rng), unit(rng), unit(rng)) * b.extent(),
-               glm::normalize(glm::vec3(gauss(rng), gauss(rng), gauss(rng))),
-               i % 2 ? unit(rng) * glm::length(b.extent()) : 1e30f);
+    const RaySet rays = viewAndRandomRays(scene, 4096, rng);
     for (BvhLayout layout : {BvhLayout::Binary, BvhLayout::Sbvh}) {
       SCOPED_TRACE(scene.name + ", " + toString(layout));
       const HostPairTree& tree = data.hostTree(layout);
