@@ -225,25 +225,28 @@ Figures figuresOf(const Cell& c) {
 
 // --fetches' columns of a row: the CPU twin's counts (warp_fetches.h), -1 each where not counted.
 std::string fetchColumns(const std::optional<FetchCounts>& f) {
-  const FetchCounts none{-1, -1, -1, -1, -1, -1};
+  const FetchCounts none{-1, -1, -1, -1, -1, -1, -1, -1};
   const FetchCounts& c = f ? *f : none;
   char text[256];
-  std::snprintf(text, sizeof text, ",%.4f,%.4f,%.4f,%.4f,%.4f,%.3f", c.meanSteps, c.nodesPerRay, c.warpNodesPerRay,
-                c.entriesPerRay, c.warpEntriesPerRay, c.windowMegabytes);
+  std::snprintf(text, sizeof text, ",%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.4f,%.4f", c.meanSteps, c.nodesPerRay,
+                c.warpNodesPerRay, c.entriesPerRay, c.warpEntriesPerRay, c.windowMegabytes, c.requestNodesPerRay,
+                c.requestEntriesPerRay);
   return text;
 }
 
 // --fetches' table: what each cell's traversal reads, lane by lane and warp by warp, and what the rays an H200
 // holds at once touch.
 void reportFetches(const std::vector<Cell>& cells) {
-  std::printf("reads (CPU twin of the traversal; a ray; warp: the distinct reads of 32 consecutive rays; window: "
-              "distinct MB of %u rays)\n", kH200ResidentThreads);
-  std::printf("%-7s %-13s %7s %9s %10s %9s %10s %10s %10s\n", "bvh", "kind", "steps", "nodes", "warp_nodes", "entries",
-              "warp_entr", "node_share", "window_MB");
+  std::printf("reads (CPU twin of the traversal), a ray: each lane's; warp: the distinct reads of 32 consecutive "
+              "rays; req: the distinct reads of each lockstep iteration (loads); window: distinct MB of %u rays\n",
+              kH200ResidentThreads);
+  std::printf("%-7s %-13s %7s %9s %10s %9s %9s %10s %9s %10s %10s\n", "bvh", "kind", "steps", "nodes", "warp_nodes",
+              "req_nodes", "entries", "warp_entr", "req_entr", "node_share", "window_MB");
   for (const Cell& c : cells) {
     const FetchCounts& f = *c.fetches;
-    std::printf("%-7s %-13s %7.2f %9.2f %10.2f %9.2f %10.2f %10.2f %10.2f\n", toString(c.bvh).c_str(), c.kind->name,
-                f.meanSteps, f.nodesPerRay, f.warpNodesPerRay, f.entriesPerRay, f.warpEntriesPerRay,
+    std::printf("%-7s %-13s %7.2f %9.2f %10.2f %9.2f %9.2f %10.2f %9.2f %10.2f %10.2f\n", toString(c.bvh).c_str(),
+                c.kind->name, f.meanSteps, f.nodesPerRay, f.warpNodesPerRay, f.requestNodesPerRay, f.entriesPerRay,
+                f.warpEntriesPerRay, f.requestEntriesPerRay,
                 f.warpNodesPerRay > 0 ? f.nodesPerRay / f.warpNodesPerRay : 0.0, f.windowMegabytes);
   }
 }
@@ -262,7 +265,8 @@ void report(const std::vector<Cell>& cells, const TraceBenchOptions& o, const Lo
   std::string csv = "bvh,kind,rays,median_ms,min_ms,max_ms,rays_per_second,spread_percent,hit_fraction,"
                     "mean_steps,warp_efficiency,checked,disagreements,scene,view,width,height,order,sort_rays,sort_bits,"
                     "bounce_depth,sort_earlier,repeat,warmup,seed,device,driver,revision,cpu_mean_steps,nodes_per_ray,"
-                    "warp_nodes_per_ray,entries_per_ray,warp_entries_per_ray,window_megabytes\n";
+                    "warp_nodes_per_ray,entries_per_ray,warp_entries_per_ray,window_megabytes,node_requests_per_ray,"
+                    "entry_requests_per_ray\n";
   const std::string context = csvText(loaded.scene.name) + "," + csvText(loaded.view.name) + "," +
                               std::to_string(s.width) + "," + std::to_string(s.height) + "," +
                               (o.order == CameraRayOrder::Tiles ? "tiles" : "scanline") + "," +

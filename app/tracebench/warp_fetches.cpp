@@ -31,29 +31,71 @@ class SeenSince {
 // One window's sums (the rays [begin, end)), in task order.
 struct WindowSums {
   uint64_t steps = 0, nodes = 0, entries = 0, warpNodes = 0, warpEntries = 0, windowBytes = 0;
+  uint64_t requestNodes = 0, requestEntries = 0;
 };
+
+// The distinct values of a few (at most a warp's).
+uint32_t distinctCount(std::vector<uint32_t>& values) {
+  std::sort(values.begin(), values.end());
+  return static_cast<uint32_t>(std::unique(values.begin(), values.end()) - values.begin());
+}
+
+uint32_t leafFirst(uint32_t word) { return (word & ~RL_LEAF_TAG) >> RL_LEAF_COUNT_BITS; }
+uint32_t leafCount(uint32_t word) { return (word & ((1u << RL_LEAF_COUNT_BITS) - 1u)) + 1u; }
+
+// The loads of one warp's lanes in lockstep (FetchCounts::requestNodesPerRay): at each step, the distinct pair
+// nodes of the lanes visiting one, then for each entry j of a leaf the distinct entries of the lanes in a leaf.
+void countRequests(const std::vector<PairFetchLog>& lanes, uint32_t laneCount, WindowSums& sums) {
+  size_t longest = 0;
+  for (uint32_t l = 0; l < laneCount; ++l) longest = std::max(longest, lanes[l].steps.size());
+  std::vector<uint32_t> nodes, entries;
+  for (size_t k = 0; k < longest; ++k) {
+    nodes.clear();
+    uint32_t mostEntries = 0;
+    for (uint32_t l = 0; l < laneCount; ++l) {
+      if (k >= lanes[l].steps.size()) continue;
+      const uint32_t word = lanes[l].steps[k];
+      if (word < RL_LEAF_TAG) nodes.push_back(word);
+      else mostEntries = std::max(mostEntries, leafCount(word));
+    }
+    sums.requestNodes += distinctCount(nodes);
+    for (uint32_t j = 0; j < mostEntries; ++j) {
+      entries.clear();
+      for (uint32_t l = 0; l < laneCount; ++l)
+        if (k < lanes[l].steps.size() && lanes[l].steps[k] >= RL_LEAF_TAG && j < leafCount(lanes[l].steps[k]))
+          entries.push_back(leafFirst(lanes[l].steps[k]) + j);
+      sums.requestEntries += distinctCount(entries);
+    }
+  }
+}
 
 WindowSums countWindow(const HostPairTree& tree, const RaySet& rays, bool anyHit, uint32_t begin, uint32_t end) {
   WindowSums sums;
   SeenSince warpNodes(tree.nodes.size()), warpEntries(tree.entries.size());
   SeenSince windowNodes(tree.nodes.size()), windowEntries(tree.entries.size());
-  PairFetchLog log;
-  for (uint32_t i = begin; i < end; ++i) {
-    const uint32_t warp = i / kWarpSize;
-    log.clear();
-    const CpuHit hit = traversePairsCpu(tree.nodes, tree.entries, glm::vec3(rays.origins[i]),
-                                        glm::vec3(rays.directions[i]), rays.directions[i].w, anyHit, &log);
-    sums.steps += hit.steps;
-    sums.nodes += log.nodes.size();
-    sums.entries += log.entries.size();
-    for (uint32_t n : log.nodes) {
-      sums.warpNodes += warpNodes.first(n, warp);
-      sums.windowBytes += windowNodes.first(n, 0) ? kPairNodeBytes : 0;
+  std::vector<PairFetchLog> lanes(kWarpSize);
+  for (uint32_t warpBegin = begin; warpBegin < end; warpBegin += kWarpSize) {
+    const uint32_t warp = warpBegin / kWarpSize;
+    const uint32_t laneCount = std::min(kWarpSize, end - warpBegin);
+    for (uint32_t l = 0; l < laneCount; ++l) {
+      const uint32_t i = warpBegin + l;
+      PairFetchLog& log = lanes[l];
+      log.clear();
+      const CpuHit hit = traversePairsCpu(tree.nodes, tree.entries, glm::vec3(rays.origins[i]),
+                                          glm::vec3(rays.directions[i]), rays.directions[i].w, anyHit, &log);
+      sums.steps += hit.steps;
+      sums.nodes += log.nodes.size();
+      sums.entries += log.entries.size();
+      for (uint32_t n : log.nodes) {
+        sums.warpNodes += warpNodes.first(n, warp);
+        sums.windowBytes += windowNodes.first(n, 0) ? kPairNodeBytes : 0;
+      }
+      for (uint32_t e : log.entries) {
+        sums.warpEntries += warpEntries.first(e, warp);
+        sums.windowBytes += windowEntries.first(e, 0) ? kLeafEntryBytes : 0;
+      }
     }
-    for (uint32_t e : log.entries) {
-      sums.warpEntries += warpEntries.first(e, warp);
-      sums.windowBytes += windowEntries.first(e, 0) ? kLeafEntryBytes : 0;
-    }
+    countRequests(lanes, laneCount, sums);
   }
   return sums;
 }
@@ -79,6 +121,7 @@ FetchCounts countFetches(const HostPairTree& tree, const RaySet& rays, bool anyH
   for (uint32_t t = 0; t < tasks; ++t) {
     total.steps += sums[t].steps, total.nodes += sums[t].nodes, total.entries += sums[t].entries;
     total.warpNodes += sums[t].warpNodes, total.warpEntries += sums[t].warpEntries;
+    total.requestNodes += sums[t].requestNodes, total.requestEntries += sums[t].requestEntries;
     if (t < std::max(whole, 1u)) total.windowBytes += sums[t].windowBytes;
   }
   c.meanSteps = double(total.steps) / n;
@@ -86,6 +129,8 @@ FetchCounts countFetches(const HostPairTree& tree, const RaySet& rays, bool anyH
   c.entriesPerRay = double(total.entries) / n;
   c.warpNodesPerRay = double(total.warpNodes) / n;
   c.warpEntriesPerRay = double(total.warpEntries) / n;
+  c.requestNodesPerRay = double(total.requestNodes) / n;
+  c.requestEntriesPerRay = double(total.requestEntries) / n;
   c.windowMegabytes = double(total.windowBytes) / std::max(whole, 1u) * 1e-6;
   return c;
 }

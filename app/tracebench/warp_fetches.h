@@ -23,6 +23,11 @@ struct FetchCounts {
   double meanSteps = 0;                               // the twin's steps a ray (the GPU's mean_steps)
   double nodesPerRay = 0, entriesPerRay = 0;          // each lane's own reads: pair nodes and leaf entries
   double warpNodesPerRay = 0, warpEntriesPerRay = 0;  // distinct reads of each warp (32 consecutive rays), a ray
+  // The loads a warp issues when its lanes run the loop in lockstep (iteration k of the warp is every active
+  // lane's step k, and a leaf's entry j every lane's entry j in that leaf): the distinct reads of each such
+  // iteration, a ray. Lanes reading the same thing in the same iteration share a load; a read shared only across
+  // iterations is a load each time (which the L1 may serve).
+  double requestNodesPerRay = 0, requestEntriesPerRay = 0;
   // Distinct bytes the rays of a window of `window` consecutive rays read, megabytes, averaged over the set's
   // whole windows (the set itself when it is smaller than one window).
   double windowMegabytes = 0;

@@ -99,6 +99,7 @@ CpuHit traversePairsCpu(const std::vector<gpu::BvhPairNode>& nodes, const std::v
   uint32_t sp = 0, node = 0;
   while (true) {
     hit.steps++;
+    if (log) log->steps.push_back(node);
     if (node >= RL_LEAF_TAG) {  // a leaf word (isLeafWord): its range of entries
       const uint32_t first = (node & ~RL_LEAF_TAG) >> RL_LEAF_COUNT_BITS;
       const uint32_t count = (node & ((1u << RL_LEAF_COUNT_BITS) - 1u)) + 1u;

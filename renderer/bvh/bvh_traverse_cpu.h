@@ -34,7 +34,8 @@ CpuHit traverseBinaryCpu(const std::vector<gpu::BvhNode>& nodes, const std::vect
 // leaf entry it intersected (48 bytes). The lanes of a warp that walk the same part of the tree share these reads.
 struct PairFetchLog {
   std::vector<uint32_t> nodes, entries;
-  void clear() { nodes.clear(), entries.clear(); }
+  std::vector<uint32_t> steps;  // each step's word: a pair-node index, or a leaf's word (RL_LEAF_WORD)
+  void clear() { nodes.clear(), entries.clear(), steps.clear(); }
 };
 // bvh_traverse.glsl's traverseBvh over the tree the GPU reads (pairNodes and leafRecords): hit.triangle is the
 // entry's BVH-order index, steps count pair nodes and leaves visited as the shader's do, nodeVisits the pair nodes

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -59,6 +60,9 @@ TEST(WarpFetches, TheLogHoldsEveryReadTheCountsName) {
       const PairFetchLog log = logOf(tree, rays, i, anyHit, &hit);
       EXPECT_EQ(log.nodes.size(), hit.nodeVisits);
       EXPECT_EQ(log.entries.size(), hit.triangleTests);
+      EXPECT_EQ(log.steps.size(), hit.steps);
+      EXPECT_EQ(std::count_if(log.steps.begin(), log.steps.end(), [](uint32_t w) { return w < RL_LEAF_TAG; }),
+                hit.nodeVisits);
       EXPECT_GE(hit.steps, hit.nodeVisits);  // the rest are leaves
       leaves += hit.steps - hit.nodeVisits;
       for (uint32_t n : log.nodes) EXPECT_LT(n, tree.nodes.size());
@@ -99,7 +103,8 @@ TEST(WarpFetches, PairTwinFindsWhatTheBinaryTwinFinds) {
 }
 
 // countFetches against sets of the logged reads: each lane's reads, each warp's distinct ones, each window's
-// distinct bytes, on a set of several windows with a tail.
+// distinct bytes, on a set of several windows with a tail; and the lockstep loads: a set for each iteration k of
+// a warp (its lanes' step k) and each entry j of the leaves met there.
 TEST(WarpFetches, CountsAreThoseOfPlainSets) {
   const Scene scene = makeTemple();
   const HostPairTree tree = pairTreeOf(scene);
@@ -122,8 +127,34 @@ TEST(WarpFetches, CountsAreThoseOfPlainSets) {
       we.insert(log.entries.begin(), log.entries.end()), ge.insert(log.entries.begin(), log.entries.end());
     }
     warpNodes += wn.size(), warpEntries += we.size();  // the last warp; the tail's window is left out
+    uint64_t requestNodes = 0, requestEntries = 0;
+    for (uint32_t w = 0; w * kWarpSize < rays.size(); ++w) {
+      std::vector<PairFetchLog> lanes;
+      for (uint32_t i = w * kWarpSize; i < std::min<uint32_t>(rays.size(), (w + 1) * kWarpSize); ++i)
+        lanes.push_back(logOf(tree, rays, i, anyHit));
+      std::map<uint32_t, std::set<uint32_t>> nodesAt;
+      std::map<std::pair<uint32_t, uint32_t>, std::set<uint32_t>> entriesAt;
+      for (const PairFetchLog& lane : lanes)
+        for (uint32_t k = 0; k < lane.steps.size(); ++k) {
+          const uint32_t word = lane.steps[k];
+          if (word < RL_LEAF_TAG) {
+            nodesAt[k].insert(word);
+            continue;
+          }
+          const uint32_t first = (word & ~RL_LEAF_TAG) >> RL_LEAF_COUNT_BITS;
+          const uint32_t count = (word & ((1u << RL_LEAF_COUNT_BITS) - 1u)) + 1u;
+          for (uint32_t j = 0; j < count; ++j) entriesAt[{k, j}].insert(first + j);
+        }
+      for (const auto& [k, set] : nodesAt) requestNodes += set.size();
+      for (const auto& [kj, set] : entriesAt) requestEntries += set.size();
+    }
     const double n = rays.size();
     const FetchCounts c = countFetches(tree, rays, anyHit, window);
+    EXPECT_DOUBLE_EQ(c.requestNodesPerRay, requestNodes / n);
+    EXPECT_DOUBLE_EQ(c.requestEntriesPerRay, requestEntries / n);
+    // A warp's loads lie between its distinct reads (each loaded once) and its lanes' reads (none shared).
+    EXPECT_GT(c.requestNodesPerRay, c.warpNodesPerRay);
+    EXPECT_LT(c.requestNodesPerRay, c.nodesPerRay);
     EXPECT_DOUBLE_EQ(c.meanSteps, steps / n);
     EXPECT_DOUBLE_EQ(c.nodesPerRay, nodes / n);
     EXPECT_DOUBLE_EQ(c.entriesPerRay, entries / n);
@@ -148,6 +179,8 @@ TEST(WarpFetches, AWarpOfOneRayReadsEachThingOnce) {
   EXPECT_GT(c.nodesPerRay, 1.0);
   EXPECT_DOUBLE_EQ(c.warpNodesPerRay * kWarpSize, c.nodesPerRay);
   EXPECT_DOUBLE_EQ(c.warpEntriesPerRay * kWarpSize, c.entriesPerRay);
+  EXPECT_DOUBLE_EQ(c.requestNodesPerRay, c.warpNodesPerRay);  // the lanes walk in step: one load a read
+  EXPECT_DOUBLE_EQ(c.requestEntriesPerRay, c.warpEntriesPerRay);
   // Windows of one warp (1 is rounded up to a warp): a window's bytes are its warp's distinct reads.
   EXPECT_NEAR(c.windowMegabytes * 1e6,
               (c.warpNodesPerRay * kPairNodeBytes + c.warpEntriesPerRay * kLeafEntryBytes) * kWarpSize, 1e-6);
