@@ -16,6 +16,11 @@ def rows(path):
         return {r["kind"]: r for r in csv.DictReader(f)}
 
 
+def reread(r):
+    """The share of a warp's load bytes that read what the warp had read before: the most its L1 could serve."""
+    return 100 * (1 - warp_bytes(r) / load_bytes(r))
+
+
 def counted(prefix):
     """Each scene of SCENES with its rows of PREFIX-SCENE.csv, where it was counted."""
     for name, scene, view in SCENES:
@@ -26,6 +31,11 @@ def counted(prefix):
 
 def warp_bytes(r):
     return float(r["warp_nodes_per_ray"]) * 64 + float(r["warp_entries_per_ray"]) * 48
+
+
+def load_bytes(r):
+    """The bytes of the loads a warp issues in lockstep (each iteration's distinct reads), a ray."""
+    return float(r["node_requests_per_ray"]) * 64 + float(r["entry_requests_per_ray"]) * 48
 
 
 def lane_bytes(r):
@@ -48,15 +58,16 @@ def oracle(name):
     if not os.path.exists(path):
         return "-"
     o = rows(path)["bounce-sorted"]
-    return f"{float(o['warp_efficiency']):.3f}, {warp_bytes(o):.0f}"
+    return f"{float(o['warp_efficiency']):.3f}, {warp_bytes(o):.0f}, {load_bytes(o):.0f}"
 
 
 def main():
     h200 = h200_rates()
     print("2048x1024 bounce rays, unsorted -> sorted by two-point keys")
     print("| scene | H200 G rays/s | H200 gain | warp efficiency | slots a ray | bytes a ray, lanes | "
-          "bytes a ray a warp | warp bytes | MB a window | oracle: warp efficiency, bytes a ray a warp |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+          "bytes a ray a warp | warp bytes | MB a window | oracle: warp efficiency, bytes a ray a warp, loads a ray | "
+          "loads a ray (bytes) | loads unsorted / sorted | loads the warp read before |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name, scene, view, t in counted("2k"):
         u, s = t["bounce"], t["bounce-sorted"]
         (ru, eu), (rs, es) = h200[(scene, view, "bounce")], h200[(scene, view, "bounce-sorted")]
@@ -65,18 +76,21 @@ def main():
         print(f"| {name} | {ru * 1e-9:.2f} -> {rs * 1e-9:.2f} | {rs / ru:.3f}x | {eu:.3f} -> {es:.3f} | "
               f"{100 * (eu / es - 1):+.1f}% | {lane_bytes(u):.0f} | {warp_bytes(u):.0f} -> {warp_bytes(s):.0f} | "
               f"{100 * (warp_bytes(s) / warp_bytes(u) - 1):+.1f}% | {float(u['window_megabytes']):.1f} -> "
-              f"{float(s['window_megabytes']):.1f} | {oracle(name)} |")
+              f"{float(s['window_megabytes']):.1f} | {oracle(name)} | {load_bytes(u):.0f} -> {load_bytes(s):.0f} | "
+              f"{load_bytes(u) / load_bytes(s):.3f}x | "
+              f"{reread(u):.0f}% -> {reread(s):.0f}% |")
     print()
     print("1280x720, unsorted -> sorted by two-point keys (bounce), and shadow rays (unsorted)")
-    print("| scene | warp efficiency | bytes a ray a warp | warp bytes | MB a window | shadow: bytes a ray a warp, "
-          "MB a window |")
-    print("|---|---|---|---|---|---|")
+    print("| scene | warp efficiency | bytes a ray a warp | warp bytes | loads a ray (bytes) | MB a window | "
+          "shadow: bytes a ray a warp, loads a ray, MB a window |")
+    print("|---|---|---|---|---|---|---|")
     for name, _, _, t in counted("720p"):
         u, s, sh = t["bounce"], t["bounce-sorted"], t["shadow"]
         print(f"| {name} | {float(u['warp_efficiency']):.3f} -> {float(s['warp_efficiency']):.3f} | "
               f"{warp_bytes(u):.0f} -> {warp_bytes(s):.0f} | {100 * (warp_bytes(s) / warp_bytes(u) - 1):+.1f}% | "
+              f"{load_bytes(u):.0f} -> {load_bytes(s):.0f} ({100 * (load_bytes(s) / load_bytes(u) - 1):+.1f}%) | "
               f"{float(u['window_megabytes']):.1f} -> {float(s['window_megabytes']):.1f} | "
-              f"{warp_bytes(sh):.0f}, {float(sh['window_megabytes']):.1f} |")
+              f"{warp_bytes(sh):.0f}, {load_bytes(sh):.0f}, {float(sh['window_megabytes']):.1f} |")
 
 
 if __name__ == "__main__":
