@@ -5,6 +5,7 @@ sorted by two-point keys). Bytes a ray a warp: each warp's distinct pair nodes (
 over its 32 rays, what its lanes' reads come to once shared."""
 import csv
 import os
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENES = [("hall", "temple", "hall"), ("openings", "temple", "openings"), ("sponza", "Sponza", "CameraMain"),
@@ -93,5 +94,29 @@ def main():
               f"{warp_bytes(sh):.0f}, {load_bytes(sh):.0f}, {float(sh['window_megabytes']):.1f} |")
 
 
+def device_run(path):
+    """run-h200.sh's CSV: each scene's rates of both orders (medians over its runs) against the loads' ratio."""
+    import statistics
+    rates = {}
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            rates.setdefault((r["scene"], r["view"], r["sort_rays"], r["kind"]), []).append(float(r["rays_per_second"]))
+    print("| scene | order | G rays/s unsorted -> sorted (median of runs) | gain | loads, unsorted / sorted |")
+    print("|---|---|---|---|---|")
+    for name, scene, view, t in counted("2k"):
+        scene_key = "Sponza" if name == "sponza" else scene
+        for order, csv_rows in (("two-point", t), ("oracle", rows(os.path.join(HERE, f"oracle-{name}.csv")))):
+            u = rates.get((scene_key, view, order, "bounce"))
+            s = rates.get((scene_key, view, order, "bounce-sorted"))
+            if not u or not s:
+                continue
+            mu, ms = statistics.median(u), statistics.median(s)
+            print(f"| {name} | {order} | {mu * 1e-9:.2f} -> {ms * 1e-9:.2f} | {ms / mu:.3f}x | "
+                  f"{load_bytes(t['bounce']) / load_bytes(csv_rows['bounce-sorted']):.3f}x |")
+
+
 if __name__ == "__main__":
-    main()
+    if len(sys.argv) > 1:
+        device_run(sys.argv[1])
+    else:
+        main()
