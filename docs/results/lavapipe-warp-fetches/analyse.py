@@ -92,6 +92,9 @@ def main():
         print(f"| {name} | {rs / ru:.3f}x | {100 * (eu / es - 1):+.1f}% | {warp_bytes(u):.0f} -> {warp_bytes(s):.0f} | "
               f"{load_bytes(u):.0f} -> {load_bytes(s):.0f} | {load_bytes(u) / load_bytes(s):.3f}x |")
     print()
+    print("Loads a ray (bytes) of the same 2048x1024 bounce rays (sbvh) in each order")
+    loads_by_key()
+    print()
     print("1280x720, unsorted -> sorted by two-point keys (bounce), and shadow rays (unsorted)")
     print("| scene | warp efficiency | bytes a ray a warp | warp bytes | loads a ray (bytes) | MB a window | "
           "shadow: bytes a ray a warp, loads a ray, MB a window |")
@@ -103,6 +106,20 @@ def main():
               f"{load_bytes(u):.0f} -> {load_bytes(s):.0f} ({100 * (load_bytes(s) / load_bytes(u) - 1):+.1f}%) | "
               f"{float(u['window_megabytes']):.1f} -> {float(s['window_megabytes']):.1f} | "
               f"{warp_bytes(sh):.0f}, {load_bytes(sh):.0f}, {float(sh['window_megabytes']):.1f} |")
+
+
+def loads_by_key():
+    """The loads a ray of the 2048x1024 bounce rays in every order counted: pixel tiles (unsorted), each key."""
+    keys = ["two-point", "oracle", "origin-direction", "origin", "fixed", "direction"]
+    print("| scene | unsorted (pixel tiles) | " + " | ".join(keys) + " |")
+    print("|---" * (len(keys) + 2) + "|")
+    for name, _, _, t in counted("2k"):
+        cells = [f"{load_bytes(t['bounce']):.0f}"]
+        for key in keys:
+            path = {"two-point": f"2k-{name}.csv", "oracle": f"oracle-{name}.csv"}.get(key, f"key-{key}-{name}.csv")
+            path = os.path.join(HERE, path)
+            cells.append(f"{load_bytes(rows(path)['bounce-sorted']):.0f}" if os.path.exists(path) else "-")
+        print(f"| {name} | " + " | ".join(cells) + " |")
 
 
 def device_run(path):

@@ -5,8 +5,8 @@
 # in h200-tree-variants (ba3d351; analyse.py joins them): through the sbvh tree (2k-SCENE.csv), in the oracle's
 # order (the true hit point: the bound of what a landing-point key can order; oracle-SCENE.csv), and through the
 # plain binary tree, also timed there (binary-SCENE.csv). At 1280x720 with shadow rays: the real-time size
-# (720p-SCENE.csv). Lavapipe's times in them mean nothing: read the counts. Then prints analyse.py's tables.
-# About 10 minutes on 2 cores.
+# (720p-SCENE.csv). Then the 2048x1024 rays in every other key's order (key-STRATEGY-SCENE.csv). Lavapipe's times in them mean nothing: read the counts. Then prints analyse.py's tables.
+# About 15 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 B=${B:-build/raylab}
@@ -27,5 +27,16 @@ openings temple openings
 sponza ../shared/scenes/Sponza/Sponza.gltf CameraMain
 detail temple-detail:1000000 hall
 clutter clutter:1000000
+SCENES
+# The same 2048x1024 rays in the order of each other key that learns nothing (key-STRATEGY-SCENE.csv).
+while read -r name scene view; do
+  for key in origin direction origin-direction fixed; do
+    run 2048x1024 bounce-sorted $key sbvh key-$key-$name --scene "$scene" ${view:+--view $view}
+  done
+done <<'SCENES'
+sponza ../shared/scenes/Sponza/Sponza.gltf CameraMain
+clutter clutter:1000000
+detail temple-detail:1000000 hall
+hall temple hall
 SCENES
 python3 $out/analyse.py
