@@ -238,8 +238,8 @@ std::string fetchColumns(const std::optional<FetchCounts>& f) {
 // holds at once touch.
 void reportFetches(const std::vector<Cell>& cells) {
   std::printf("reads (CPU twin of the traversal), a ray: each lane's; warp: the distinct reads of 32 consecutive "
-              "rays; req: the distinct reads of each lockstep iteration (loads); window: distinct MB of %u rays\n",
-              kH200ResidentThreads);
+              "rays; req: the distinct reads of each lockstep iteration (loads); node_share: lanes a distinct node "
+              "read; window: distinct MB of %u rays\n", kH200ResidentThreads);
   std::printf("%-7s %-13s %7s %9s %10s %9s %9s %10s %9s %10s %10s\n", "bvh", "kind", "steps", "nodes", "warp_nodes",
               "req_nodes", "entries", "warp_entr", "req_entr", "node_share", "window_MB");
   for (const Cell& c : cells) {
