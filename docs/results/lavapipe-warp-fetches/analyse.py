@@ -4,6 +4,7 @@ the same ray sets (../h200-tree-variants/tracebench.csv, ba3d351: 2048x1024, sbv
 sorted by two-point keys). Bytes a ray a warp: each warp's distinct pair nodes (64 B) and leaf entries (48 B)
 over its 32 rays, what its lanes' reads come to once shared."""
 import csv
+import math
 import os
 import sys
 
@@ -92,6 +93,9 @@ def main():
         print(f"| {name} | {rs / ru:.3f}x | {100 * (eu / es - 1):+.1f}% | {warp_bytes(u):.0f} -> {warp_bytes(s):.0f} | "
               f"{load_bytes(u):.0f} -> {load_bytes(s):.0f} | {load_bytes(u) / load_bytes(s):.3f}x |")
     print()
+    print("The H200's gain fitted as a power of one count (or two), over both trees' rows")
+    fits()
+    print()
     print("Loads a ray (bytes) of the same 2048x1024 bounce rays (sbvh) in each order")
     loads_by_key()
     print()
@@ -120,6 +124,42 @@ def loads_by_key():
             path = os.path.join(HERE, path)
             cells.append(f"{load_bytes(rows(path)['bounce-sorted']):.0f}" if os.path.exists(path) else "-")
         print(f"| {name} | " + " | ".join(cells) + " |")
+
+
+def gain_points():
+    """(H200 gain, loads ratio, distinct-bytes ratio, warp efficiency ratio) of each scene and tree, unsorted over
+    sorted by two-point keys: the ten points the fits below are made over."""
+    h200 = h200_rates()
+    points = []
+    for prefix, bvh in (("2k", "sbvh"), ("binary", "binary")):
+        for _, scene, view, t in counted(prefix):
+            u, s = t["bounce"], t["bounce-sorted"]
+            (ru, eu), (rs, es) = h200[(bvh, scene, view, "bounce")], h200[(bvh, scene, view, "bounce-sorted")]
+            points.append((rs / ru, load_bytes(u) / load_bytes(s), warp_bytes(u) / warp_bytes(s), es / eu))
+    return points
+
+
+def fits():
+    """Least squares of log(gain) on the logs of one count (one exponent, no intercept), and of two; the error of
+    each point is exp(residual) - 1."""
+    points = gain_points()
+    names = {1: "loads", 2: "distinct bytes", 3: "warp efficiency"}
+    y = [math.log(p[0]) for p in points]
+    print(f"| counts | exponents | rms error | largest error |  ({len(points)} points)")
+    print("|---|---|---|---|")
+    for cols in ((1,), (2,), (3,), (1, 2), (1, 3)):
+        x = [[math.log(p[c]) for c in cols] for p in points]
+        a = [[sum(r[i] * r[j] for r in x) for j in range(len(cols))] for i in range(len(cols))]
+        b = [sum(r[i] * yi for r, yi in zip(x, y)) for i in range(len(cols))]
+        if len(cols) == 1:
+            coef = [b[0] / a[0][0]]
+        else:
+            det = a[0][0] * a[1][1] - a[0][1] * a[1][0]
+            coef = [(b[0] * a[1][1] - a[0][1] * b[1]) / det, (a[0][0] * b[1] - a[1][0] * b[0]) / det]
+        errors = [math.exp(yi - sum(c * v for c, v in zip(coef, r))) - 1 for r, yi in zip(x, y)]
+        rms = math.sqrt(sum(e * e for e in errors) / len(errors))
+        print(f"| {' + '.join(names[c] for c in cols)} | {', '.join(f'{c:.2f}' for c in coef)} | {100 * rms:.1f}% | "
+              f"{100 * max(abs(e) for e in errors):.1f}% |")
 
 
 def device_run(path):
