@@ -99,9 +99,7 @@ bool isLeafWord(uint word) { return word >= RL_LEAF_TAG; }
 // One leaf (its word) against the ray; true when anyHit may stop.
 bool intersectLeafWord(TriangleQuads tris, uint word, vec3 origin, vec3 dir, inout HitRecord hit, inout float tMax,
                        bool anyHit) {
-  const uint first = (word & ~RL_LEAF_TAG) >> RL_LEAF_COUNT_BITS;
-  const uint count = (word & ((1u << RL_LEAF_COUNT_BITS) - 1u)) + 1u;
-  return intersectLeaf(tris, first, count, origin, dir, hit, tMax, anyHit);
+  return intersectLeaf(tris, RL_LEAF_FIRST(word), RL_LEAF_COUNT(word), origin, dir, hit, tMax, anyHit);
 }
 
 // A binary tree as pair nodes (BvhPairNode), with or without spatial splits (GpuScene::nodes and leafTriangles

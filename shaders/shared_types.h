@@ -101,6 +101,9 @@ struct BvhPairNode {
 #define RL_LEAF_COUNT_BITS 5u
 #define RL_LEAF_ENTRY_LIMIT (1u << (31u - RL_LEAF_COUNT_BITS))
 #define RL_LEAF_WORD(first, count) (RL_LEAF_TAG | ((first) << RL_LEAF_COUNT_BITS) | ((count) - 1u))
+// A leaf word's first entry and entry count (the traversals and their CPU twin read them back).
+#define RL_LEAF_FIRST(word) (((word) & ~RL_LEAF_TAG) >> RL_LEAF_COUNT_BITS)
+#define RL_LEAF_COUNT(word) (((word) & ((1u << RL_LEAF_COUNT_BITS) - 1u)) + 1u)
 
 // Compressed 8-wide BVH node (renderer/bvh/bvh_wide.h collapses the binary tree into these; traversal in
 // shaders/bvh_traverse_wide.glsl), after Ylitie, Karras and Laine (HPG 2017): up to 8 children whose boxes are

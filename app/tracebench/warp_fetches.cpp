@@ -40,9 +40,6 @@ uint32_t distinctCount(std::vector<uint32_t>& values) {
   return static_cast<uint32_t>(std::unique(values.begin(), values.end()) - values.begin());
 }
 
-uint32_t leafFirst(uint32_t word) { return (word & ~RL_LEAF_TAG) >> RL_LEAF_COUNT_BITS; }
-uint32_t leafCount(uint32_t word) { return (word & ((1u << RL_LEAF_COUNT_BITS) - 1u)) + 1u; }
-
 // The loads of one warp's lanes in lockstep (FetchCounts::requestNodesPerRay): at each step, the distinct pair
 // nodes of the lanes visiting one, then for each entry j of a leaf the distinct entries of the lanes in a leaf.
 void countRequests(const std::vector<PairFetchLog>& lanes, uint32_t laneCount, WindowSums& sums) {
@@ -56,14 +53,14 @@ void countRequests(const std::vector<PairFetchLog>& lanes, uint32_t laneCount, W
       if (k >= lanes[l].steps.size()) continue;
       const uint32_t word = lanes[l].steps[k];
       if (word < RL_LEAF_TAG) nodes.push_back(word);
-      else mostEntries = std::max(mostEntries, leafCount(word));
+      else mostEntries = std::max(mostEntries, RL_LEAF_COUNT(word));
     }
     sums.requestNodes += distinctCount(nodes);
     for (uint32_t j = 0; j < mostEntries; ++j) {
       entries.clear();
       for (uint32_t l = 0; l < laneCount; ++l)
-        if (k < lanes[l].steps.size() && lanes[l].steps[k] >= RL_LEAF_TAG && j < leafCount(lanes[l].steps[k]))
-          entries.push_back(leafFirst(lanes[l].steps[k]) + j);
+        if (k < lanes[l].steps.size() && lanes[l].steps[k] >= RL_LEAF_TAG && j < RL_LEAF_COUNT(lanes[l].steps[k]))
+          entries.push_back(RL_LEAF_FIRST(lanes[l].steps[k]) + j);
       sums.requestEntries += distinctCount(entries);
     }
   }

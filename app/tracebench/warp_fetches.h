@@ -9,13 +9,14 @@
 
 #include "app/tracebench/trace_rays.h"
 #include "renderer/gpu_scene.h"
+#include "shaders/detail_types.h"
 
 namespace raylab {
 
 // The threads an H200 holds at once (132 multiprocessors, 2,048 threads each): the rays whose reads meet in
 // its L2 (50 MB) while they trace.
 constexpr uint32_t kH200ResidentThreads = 132u * 2048u;
-constexpr uint32_t kWarpSize = 32;
+constexpr uint32_t kWarpSize = RL_VIRTUAL_WARP;  // the warps the detailed figures count
 // Bytes a read: a pair node (BvhPairNode) and a leaf entry (GpuLeafTriangle).
 constexpr uint32_t kPairNodeBytes = 64, kLeafEntryBytes = 48;
 

@@ -101,8 +101,7 @@ CpuHit traversePairsCpu(const std::vector<gpu::BvhPairNode>& nodes, const std::v
     hit.steps++;
     if (log) log->steps.push_back(node);
     if (node >= RL_LEAF_TAG) {  // a leaf word (isLeafWord): its range of entries
-      const uint32_t first = (node & ~RL_LEAF_TAG) >> RL_LEAF_COUNT_BITS;
-      const uint32_t count = (node & ((1u << RL_LEAF_COUNT_BITS) - 1u)) + 1u;
+      const uint32_t first = RL_LEAF_FIRST(node), count = RL_LEAF_COUNT(node);
       for (uint32_t e = first; e < first + count; ++e) {
         const gpu::GpuLeafTriangle& t = entries[e];
         hit.triangleTests++;

@@ -141,9 +141,7 @@ TEST(WarpFetches, CountsAreThoseOfPlainSets) {
             nodesAt[k].insert(word);
             continue;
           }
-          const uint32_t first = (word & ~RL_LEAF_TAG) >> RL_LEAF_COUNT_BITS;
-          const uint32_t count = (word & ((1u << RL_LEAF_COUNT_BITS) - 1u)) + 1u;
-          for (uint32_t j = 0; j < count; ++j) entriesAt[{k, j}].insert(first + j);
+          for (uint32_t j = 0; j < RL_LEAF_COUNT(word); ++j) entriesAt[{k, j}].insert(RL_LEAF_FIRST(word) + j);
         }
       for (const auto& [k, set] : nodesAt) requestNodes += set.size();
       for (const auto& [kj, set] : entriesAt) requestEntries += set.size();
