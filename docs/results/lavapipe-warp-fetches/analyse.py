@@ -63,18 +63,25 @@ def oracle(name):
     return f"{float(o['warp_efficiency']):.3f}, {warp_bytes(o):.0f}, {load_bytes(o):.0f}"
 
 
-def main():
+def timed(prefix, bvh):
+    """Each scene's unsorted and sorted rows of PREFIX-SCENE.csv with the H200's (rays/s, warp efficiency) of the
+    same rays through the tree `bvh`. The counts are of the rays the H200 traced: their warp efficiencies are the
+    H200's (to the 4th place)."""
     h200 = h200_rates()
+    for name, scene, view, t in counted(prefix):
+        u, s = t["bounce"], t["bounce-sorted"]
+        (ru, eu), (rs, es) = h200[(bvh, scene, view, "bounce")], h200[(bvh, scene, view, "bounce-sorted")]
+        assert abs(float(u["warp_efficiency"]) - eu) < 2e-3 and abs(float(s["warp_efficiency"]) - es) < 2e-3, name
+        yield name, u, s, (ru, eu), (rs, es)
+
+
+def main():
     print("2048x1024 bounce rays, unsorted -> sorted by two-point keys")
     print("| scene | H200 G rays/s | H200 gain | warp efficiency | slots a ray | bytes a ray, lanes | "
           "bytes a ray a warp | warp bytes | MB a window | oracle: warp efficiency, bytes a ray a warp, loads a ray | "
           "loads a ray (bytes) | loads unsorted / sorted | loads the warp read before |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-    for name, scene, view, t in counted("2k"):
-        u, s = t["bounce"], t["bounce-sorted"]
-        (ru, eu), (rs, es) = h200[("sbvh", scene, view, "bounce")], h200[("sbvh", scene, view, "bounce-sorted")]
-        # The counts are of the same rays the H200 traced: their warp efficiency is the H200's (to the 4th place).
-        assert abs(float(u["warp_efficiency"]) - eu) < 2e-3 and abs(float(s["warp_efficiency"]) - es) < 2e-3, name
+    for name, u, s, (ru, eu), (rs, es) in timed("2k", "sbvh"):
         print(f"| {name} | {ru * 1e-9:.2f} -> {rs * 1e-9:.2f} | {rs / ru:.3f}x | {eu:.3f} -> {es:.3f} | "
               f"{100 * (eu / es - 1):+.1f}% | {lane_bytes(u):.0f} | {warp_bytes(u):.0f} -> {warp_bytes(s):.0f} | "
               f"{100 * (warp_bytes(s) / warp_bytes(u) - 1):+.1f}% | {float(u['window_megabytes']):.1f} -> "
@@ -86,10 +93,7 @@ def main():
           "sbvh rows)")
     print("| scene | H200 gain | warp slots a ray | distinct bytes a ray | loads a ray (bytes) | loads, unsorted / sorted |")
     print("|---|---|---|---|---|---|")
-    for name, scene, view, t in counted("binary"):
-        u, s = t["bounce"], t["bounce-sorted"]
-        (ru, eu), (rs, es) = h200[("binary", scene, view, "bounce")], h200[("binary", scene, view, "bounce-sorted")]
-        assert abs(float(u["warp_efficiency"]) - eu) < 2e-3 and abs(float(s["warp_efficiency"]) - es) < 2e-3, name
+    for name, u, s, (ru, eu), (rs, es) in timed("binary", "binary"):
         print(f"| {name} | {rs / ru:.3f}x | {100 * (eu / es - 1):+.1f}% | {warp_bytes(u):.0f} -> {warp_bytes(s):.0f} | "
               f"{load_bytes(u):.0f} -> {load_bytes(s):.0f} | {load_bytes(u) / load_bytes(s):.3f}x |")
     print()
@@ -129,12 +133,9 @@ def loads_by_key():
 def gain_points():
     """(H200 gain, loads ratio, distinct-bytes ratio, warp efficiency ratio) of each scene and tree, unsorted over
     sorted by two-point keys: the ten points the fits below are made over."""
-    h200 = h200_rates()
     points = []
     for prefix, bvh in (("2k", "sbvh"), ("binary", "binary")):
-        for _, scene, view, t in counted(prefix):
-            u, s = t["bounce"], t["bounce-sorted"]
-            (ru, eu), (rs, es) = h200[(bvh, scene, view, "bounce")], h200[(bvh, scene, view, "bounce-sorted")]
+        for _, u, s, (ru, eu), (rs, es) in timed(prefix, bvh):
             points.append((rs / ru, load_bytes(u) / load_bytes(s), warp_bytes(u) / warp_bytes(s), es / eu))
     return points
 
