@@ -226,11 +226,11 @@ struct Settings {
   // clutter room's megakernel 4% longer (docs/results/h200-tree-variants; steps: lavapipe-tree-steps).
   uint32_t bvhReinsert = 0;
   // Cuts before the spatial-split tree's build (renderer/bvh/bvh_presplit.h), a fraction of the triangle count;
-  // 0: none. Another tree is another scene. An option: on the H200 0.001 made Sponza's trace 10-13% faster
-  // and the temple hall's 4-8% slower (docs/results/h200-tree-variants), the hall's loss all from cutting its
-  // ground, which axis-aligned triangles now never are; the default waits on the H200's figures for that rule
-  // (docs/results/lavapipe-presplit-rules/run-h200.sh).
-  float bvhPresplit = 0.0f;
+  // 0: none. Another tree is another scene. The default since the rule that never cuts an axis-aligned
+  // triangle (the hall's ground, whose cuts had made it 4-8% slower: docs/results/h200-tree-variants): on an H100
+  // 0.001 made Sponza's frame trace 11-17% faster on camera rays and 13% on bounce rays, the study's other scenes
+  // within 1%, the Cornell box's bounce rays 1.8% slower (docs/results/h100-presplit-warp-orders).
+  float bvhPresplit = 0.001f;
   Ser ser = Ser::Off;  // rt tracer's megakernel only
 
   // Reordering

@@ -78,9 +78,9 @@ std::vector<SettingRow> tracerRows() {
       RAYLAB_FIELD(bvhPresplit, "bvh-presplit").range(0, SettingLimits::kMaxBvhPresplit)
           .json("bvh_presplit", keepDefault).csv("bvh_presplit").effects(kEffectScene | kAccumulation | kCache)
           .help("F", "cuts of the triangle boxes with the most empty space (never an axis-aligned triangle's)\n"
-                "before the sbvh tree's build, as a fraction of the triangle count, {range} (default {default}:\n"
-                "none); the scene is built again")
-          .sample("0.001"),
+                "before the sbvh tree's build, as a fraction of the triangle count, {range} (default {default};\n"
+                "0: none); the scene is built again")
+          .sample("0"),
       RAYLAB_FIELD(ser, "ser").jsonAbsent("ser", "off").jsonError("unknown ser").csv("ser").effects(kSortCosts)
           .help("off|on|hint", "rt megakernel: Shader Execution Reordering by hit, or by hit with the\n"
                 "top bits of --strategy's key as coherence hint (needs a strategy)").sample("hint"),
