@@ -125,7 +125,8 @@ struct RtSerPush {
 struct KeyPush {
   RL_REF(FrameBuf) frame;
   RL_REF(KeyParamsBuf) params;
-  RL_REF(UintBuf) keys;    // out: sort key per path (the sort makes the payload, the slot: SortValues::Indices)
+  RL_REF(UintBuf) keys;    // out: sort key per path
+  RL_REF(UintBuf) values;  // out: path index (the sort's payload)
   uint stateSet;
   uint bounce;
   uint count;
@@ -144,7 +145,7 @@ struct KeyLearnPush {
 
 #ifdef __cplusplus
 static_assert(sizeof(RtSerPush) == 24);
-static_assert(sizeof(KeyPush) == 40);
+static_assert(sizeof(KeyPush) == 48);
 static_assert(sizeof(KeyLearnPush) == 32);
 }  // namespace raylab::gpu
 #endif

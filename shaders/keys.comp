@@ -1,5 +1,5 @@
 #version 460
-// Sort keys of the current path set: key and the predicted ray length (the sort makes the payload), one
+// Sort keys of the current path set: key, payload (the path's index) and the predicted ray length, one
 // thread per path. The strategy is specialization constant 1 (RL_KEY_*), so each variant compiles to
 // only its own key function (keys.glsl, twin of renderer/reorder/key_functions.cpp).
 #extension GL_GOOGLE_include_directive : require
@@ -25,6 +25,7 @@ void main() {
   // this pass over the live prefix only, where the sort already left dead keys behind it.)
   if (i >= frame.f.live.v[RL_LIVE_COUNT]) {
     UintBuf(pc.keys).v[i] = RL_DEAD_KEY;
+    UintBuf(pc.values).v[i] = i;
     return;
   }
   GpuPathState state = frame.f.state[pc.stateSet];
@@ -39,5 +40,6 @@ void main() {
   float len;
   uint key = computeKey(kStrategy, params, env, path, alive, len);
   UintBuf(pc.keys).v[i] = key;
+  UintBuf(pc.values).v[i] = i;
   setPathPredictedLength(state, i, len);
 }

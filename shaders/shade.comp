@@ -39,7 +39,7 @@ layout(constant_id = RL_SPEC_COMPACT) const bool kCompact = false;
 layout(constant_id = RL_SPEC_FUSES_TRACE_SHADE) const bool kFusesTraceShade = false;
 layout(constant_id = RL_SPEC_LOOPS_BOUNCES) const bool kLoopsBounces = false;
 
-// keys.comp's output for slot i: the key and the predicted length (the sort makes the payload, the slot).
+// keys.comp's output for slot i: the key and the slot as the sort's payload; the predicted length.
 void storeKey(GpuFrame f, uint i, PathVars p, uint id, out float len) {
   KeyPath path;
   path.origin = p.origin;
@@ -51,6 +51,7 @@ void storeKey(GpuFrame f, uint i, PathVars p, uint id, out float len) {
   env.bounce = pc.bounce;
   env.seed = f.seed;
   f.sortKeys.v[i] = computeKey(kKeyStrategy, KeyParamsBuf(f.keyParams).p, env, path, p.alive ? 1u : 0u, len);
+  f.sortValues.v[i] = i;
 }
 
 // Compaction: path `id` (alive or not) of this lane joins the live prefix of the other state set, in the
@@ -101,11 +102,13 @@ void main() {
   if (i >= f.live.v[RL_LIVE_COUNT]) return;
   if (kCompact && uint64_t(f.keyParams) != 0ul) {  // key parameters are set only when the frame sorts
     f.sortKeys.v[i] = RL_DEAD_KEY;
+    f.sortValues.v[i] = i;
   }
   GpuPathState s = f.state[pc.stateSet];
   if (!pathAlive(s, i)) {  // one 16-byte load; loadPath reads the same element again
     if (kKeyStrategy != RL_KEY_NONE) {
       f.sortKeys.v[i] = RL_DEAD_KEY;
+      f.sortValues.v[i] = i;
     }
     return;
   }

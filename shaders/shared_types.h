@@ -277,9 +277,8 @@ struct GpuFrame {
   // RL_LIVE_* slots: the paths a stage must visit (all until a sort moved the finished ones behind the live
   // ones) and their indirect dispatch size.
   RL_REF(UintBuf) live;
-  // The sort's pairs (key, path slot; sorted in place; the sort makes the slots, SortValues::Indices) and the
-  // key parameters (a KeyParamsBuf, zero when not sorting): read by the stages Settings::fusion folds the key and
-  // reorder passes into.
+  // The sort's pairs (key, path slot; sorted in place) and the key parameters (a KeyParamsBuf, zero when not
+  // sorting): read by the stages Settings::fusion folds the key and reorder passes into.
   RL_REF(UintBuf) sortKeys;
   RL_REF(UintBuf) sortValues;
   RL_REF(UintBuf) keyParams;

@@ -50,7 +50,7 @@ void main() {
   for (uint j = gl_LocalInvocationID.x; j < TILE; j += gl_WorkGroupSize.x) {
     if (tileBegin + j < pc.count) {
       sKeys[j] = pc.keys.v[tileBegin + j];
-      sValues[j] = pc.valuesAreIndices != 0u ? tileBegin + j : pc.values.v[tileBegin + j];
+      sValues[j] = pc.values.v[tileBegin + j];
     }
   }
   barrier();

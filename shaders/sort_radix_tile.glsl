@@ -8,7 +8,7 @@
 // sorted by digit; the tile is reordered in shared memory first so that the global writes of each digit's run
 // are contiguous (coalesced). Values are loaded only after ranking, which keeps register pressure down.
 //
-// The includer declares the push block `pc` (keysIn, valuesIn, keysOut, valuesOut, shift, keyBits, valuesAreIndices),
+// The includer declares the push block `pc` (keysIn, valuesIn, keysOut, valuesOut, shift, keyBits),
 // the specialization constants SG_SIZE (id 1) and KPT (id 2), and includes sort_scan.glsl.
 #ifndef RAYLAB_SORT_RADIX_TILE_GLSL
 #define RAYLAB_SORT_RADIX_TILE_GLSL
@@ -117,8 +117,7 @@ void tileScatter() {
   uint values[KPT];
   for (uint k = 0; k < KPT; ++k) {
     if (slotValid(k)) {
-      uint source = sliceBegin + k * SG_SIZE + lane;
-      values[k] = pc.valuesAreIndices != 0u ? source : pc.valuesIn.v[source];
+      values[k] = pc.valuesIn.v[sliceBegin + k * SG_SIZE + lane];
       uint d = digitOf(tileKeys[k]);
       tilePlace[k] += sLocalStart[d] + sMem[histBase + d];
     }

@@ -42,7 +42,7 @@ void main() {
   n = sortLimitedCount(min(pc.count, SORT_SMALL_MAX), pc.hasCountLimit, pc.countLimit);
   for (uint j = gl_LocalInvocationID.x; j < n; j += gl_WorkGroupSize.x) {
     sKeys[j] = pc.keys.v[j];
-    sValues[j] = pc.valuesAreIndices != 0u ? j : pc.values.v[j];
+    sValues[j] = pc.values.v[j];
     sIndex[j] = j;
   }
   barrier();

@@ -44,9 +44,6 @@ struct SortRadixPush {
   uint groupOffset;  // first tile of this dispatch (dispatches are split at the device's group limit)
   uint hasCountLimit;  // 1: sort only min(count, countLimit.v[0]) pairs (GpuSorter::record's countLimit)
   SORT_REF(SortUintBuf) countLimit;
-  // 1: the input values are not read; each pair's value is its input index (SortValues::Indices).
-  uint valuesAreIndices;
-  uint pad0;
 };
 
 // sort_radix_scan: each work group scans `rowsPerGroup` digits' rows of `hist` in place (1 on GPUs; more on
@@ -72,8 +69,6 @@ struct SortBitonicPush {
   uint tileOffset;   // local: first tile of this dispatch (dispatches are split at the group limit)
   uint hasCountLimit;  // local mode 0 (the tile sort): 1: tiles at or past countLimit.v[0] return at once
   SORT_REF(SortUintBuf) countLimit;
-  uint valuesAreIndices;  // as SortRadixPush's; only the first local dispatch (mode 0) reads it
-  uint pad0;
 };
 
 // sort_copy: copies `count` keys and values (used when the radix pass count is odd).
@@ -102,8 +97,6 @@ struct SortSmallPush {
   uint keyBits;
   uint ignoredLowBits;  // as the radix sort's, already clamped below the sorted bits
   uint hasCountLimit;   // as SortRadixPush: sort only min(count, countLimit.v[0]) pairs
-  uint valuesAreIndices;  // as SortRadixPush's
-  uint pad0;
 };
 
 // OneSweep variant (decoupled look-back; only on devices with forward progress between work groups): one
@@ -136,7 +129,7 @@ struct SortOneSweepPush {
   uint pass;
   uint passes;
   uint hasCountLimit;  // as SortRadixPush: sort only min(count, countLimit.v[0]) pairs
-  uint valuesAreIndices;  // as SortRadixPush's; only pass 0 reads it
+  uint unused;
   SORT_REF(SortUintBuf) countLimit;
 };
 

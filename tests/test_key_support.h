@@ -120,6 +120,7 @@ class FakeFrame {
     throughput_ = GpuBuffer(ctx, capacity * sizeof(glm::vec4));
     hitT_ = GpuBuffer(ctx, capacity * sizeof(float));
     keys = GpuBuffer(ctx, capacity * sizeof(uint32_t));
+    values = GpuBuffer(ctx, capacity * sizeof(uint32_t));
     frameBlock_ = GpuBuffer(ctx, sizeof(gpu::GpuFrame));
     live_ = GpuBuffer(ctx, RL_LIVE_WORDS * sizeof(uint32_t));
     counters_ = GpuBuffer(ctx, RL_MAX_BOUNCES * RL_COUNTER_STRIDE * sizeof(uint32_t));
@@ -180,7 +181,7 @@ class FakeFrame {
     return out;
   }
 
-  GpuBuffer keys;
+  GpuBuffer keys, values;
 
  private:
   const VulkanContext* ctx_;
@@ -190,16 +191,17 @@ class FakeFrame {
 };
 
 struct KeyOutput {
-  std::vector<uint32_t> keys;
+  std::vector<uint32_t> keys, values;
   std::vector<float> predicted;
 };
 
 inline KeyOutput runKeys(const VulkanContext& ctx, KeyStage& stage, FakeFrame& frame, uint32_t n,
                          uint32_t bounce = 1, uint32_t stateSet = 0) {
   ctx.submitAndWait([&](VkCommandBuffer cmd) {
-    stage.recordKeys(cmd, frame.address(), stateSet, bounce, frame.keys.address(), n, nullptr);
+    stage.recordKeys(cmd, frame.address(), stateSet, bounce, frame.keys.address(), frame.values.address(), n,
+                     nullptr);
   });
-  return {frame.keys.downloadVector<uint32_t>(n), frame.predicted(n)};
+  return {frame.keys.downloadVector<uint32_t>(n), frame.values.downloadVector<uint32_t>(n), frame.predicted(n)};
 }
 
 inline void runLearn(const VulkanContext& ctx, KeyStage& stage, FakeFrame& frame, uint32_t n, uint32_t bounce = 1) {
@@ -241,6 +243,7 @@ inline uint32_t compareWithTwin(const KeyStage& stage, const FakeFrame& frame, c
     if (!same && ++mismatches <= 5)
       ADD_FAILURE() << toString(stage.strategy()) << " path " << i << ": gpu key " << out.keys[i] << " len "
                     << out.predicted[i] << ", twin key " << key << " len " << len;
+    EXPECT_EQ(out.values[i], i);
     EXPECT_TRUE(std::isfinite(out.predicted[i])) << "path " << i;
     if (p.alive[i] == 0) {
       EXPECT_EQ(out.keys[i], RL_DEAD_KEY);

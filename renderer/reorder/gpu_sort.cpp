@@ -119,26 +119,24 @@ bool GpuSorter::oneSweepSupported(const VulkanContext& ctx) {
 uint32_t GpuSorter::radixPasses(uint32_t keyBits) { return radixPasses(keyBits, 0).passes; }
 
 void GpuSorter::record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                       uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits, SortValues valuesIn) {
+                       uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) {
   if (algorithm_ == SortAlgorithm::None) return;
   if (count > maxCount_)
     throw VulkanError("sort of " + std::to_string(count) + " pairs exceeds the sorter's capacity of " +
                       std::to_string(maxCount_));
   if (keyBits < 1 || keyBits > 32) throw VulkanError("sort: keyBits must be 1..32, got " + std::to_string(keyBits));
   const bool radix = algorithm_ == SortAlgorithm::Radix || algorithm_ == SortAlgorithm::OneSweep;
-  const bool indices = valuesIn == SortValues::Indices;
-  // A single pair is already sorted, but its value is still to be made when it is its index.
-  if (count > 1 || (count == 1 && indices)) {
+  if (count > 1) {
     if (radix && count <= smallSortMax_)
-      recordSmall(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits, indices);
+      recordSmall(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits);
     else if (oneSweep_)
-      recordOneSweep(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits, indices);
+      recordOneSweep(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits);
     else if (radix)
-      recordRadix(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits, indices);
+      recordRadix(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits);
     else if (algorithm_ == SortAlgorithm::Tile)
-      recordTiles(cmd, keys, values, count, keyBits, countLimit, indices);
+      recordTiles(cmd, keys, values, count, keyBits, countLimit);
     else
-      recordBitonic(cmd, keys, values, count, keyBits, indices);
+      recordBitonic(cmd, keys, values, count, keyBits);
   }
   computeBarrier(cmd);
 }
@@ -150,7 +148,7 @@ GpuSorter::RadixPasses GpuSorter::radixPasses(uint32_t keyBits, uint32_t ignored
 }
 
 void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                            uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits, bool indices) {
+                            uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) {
   const auto [lowBit, passes] = radixPasses(keyBits, ignoredLowBits);
   const uint32_t numGroups = ceilDiv(count, radixTile_);
   const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
@@ -167,7 +165,6 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
     push.numGroups = numGroups;
     push.hasCountLimit = countLimit != 0 ? 1 : 0;
     push.countLimit = countLimit;
-    push.valuesAreIndices = indices && pass == 0 ? 1 : 0;
     dispatchSplit(histogram_, cmd, push, numGroups, maxGroups);
     computeBarrier(cmd);
     // CPU devices pay per work group; 4 rows a group still spreads over the cores and keeps each invocation
@@ -193,10 +190,10 @@ std::pair<VkDeviceAddress, VkDeviceAddress> GpuSorter::passOutput(uint32_t pass,
 }
 
 void GpuSorter::recordSmall(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                            uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits, bool indices) const {
+                            uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) const {
   // The bits the radix passes would order: the same clamp as recordRadix's.
   gpu::SortSmallPush push{keys, values, countLimit, count, keyBits, radixPasses(keyBits, ignoredLowBits).lowBit,
-                          countLimit != 0 ? 1u : 0u, indices ? 1u : 0u};
+                          countLimit != 0 ? 1u : 0u};
   smallSort_.dispatchGroups(cmd, push, 1);
 }
 
@@ -210,7 +207,7 @@ void GpuSorter::recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
 }
 
 void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                               uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits, bool indices) {
+                               uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) {
   const auto [lowBit, passes] = radixPasses(keyBits, ignoredLowBits);
   // Tiles cover `count`; with a device-side bound, the tiles past it return at once (after taking their
   // number, so every tile inside the bound still finds its predecessors' counts).
@@ -240,7 +237,6 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
     std::tie(push.keysOut, push.valuesOut) = passOutput(pass, passes, keys, values);
     push.shift = lowBit + pass * SORT_RADIX_BITS;
     push.pass = pass;
-    push.valuesAreIndices = indices && pass == 0 ? 1 : 0;
     // Tiles come from the pass's counter, not the group id, so a split dispatch needs no offset.
     if (oneSweepSerial_) {
       for (uint32_t tile = 0; tile < numTiles; ++tile) {
@@ -259,11 +255,10 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
 
 // Each tile of SORT_BITONIC_TILE pairs sorted alone in shared memory: bitonic's first dispatch, no merges.
 void GpuSorter::recordTiles(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                            uint32_t keyBits, VkDeviceAddress countLimit, bool indices) {
+                            uint32_t keyBits, VkDeviceAddress countLimit) {
   gpu::SortBitonicPush push{keys, values, count, keyBits};
   push.hasCountLimit = countLimit != 0 ? 1 : 0;
   push.countLimit = countLimit;
-  push.valuesAreIndices = indices ? 1 : 0;
   recordLocal(cmd, push, 0);
 }
 
@@ -279,13 +274,11 @@ void GpuSorter::recordLocal(VkCommandBuffer cmd, gpu::SortBitonicPush push, uint
 }
 
 void GpuSorter::recordBitonic(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                              uint32_t keyBits, bool indices) {
+                              uint32_t keyBits) {
   const uint32_t paddedLog = static_cast<uint32_t>(std::bit_width(count - 1u));  // 2^paddedLog >= count
   const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
   gpu::SortBitonicPush push{keys, values, count, keyBits};
-  push.valuesAreIndices = indices ? 1 : 0;
   recordLocal(cmd, push, 0);
-  push.valuesAreIndices = 0;  // made by the first dispatch
   // Merges of blocks larger than a tile: the steps that cross tiles one dispatch each, then the rest in
   // shared memory.
   for (uint32_t blockLog = SORT_BITONIC_TILE_LOG + 1; blockLog <= paddedLog; ++blockLog) {

@@ -43,11 +43,6 @@ namespace raylab {
 
 class VulkanContext;
 
-// What the sorted values are. Given: the caller's values travel with their keys. Indices: the input values are
-// never read; each pair's value is its index in the input, made by the sort's first dispatch. A path sorter's
-// payload is always the slot, so neither the keys stage writes it nor the first pass reads it: 8 bytes a pair.
-enum class SortValues { Given, Indices };
-
 class GpuSorter {
  public:
   // Radix scatter shape; 0 picks the device default. For tuning runs (sortbench --radix-group/--radix-kpt).
@@ -75,10 +70,8 @@ class GpuSorter {
   // the same keys when the pairs past the bound are dead; Tile honours it too (whole tiles past it).
   // `ignoredLowBits` (the radix sorts): the lowest bits of the compared key are not ordered (pairs that
   // differ only there keep their input order), one pass less for each 8 bits: a coarser, cheaper order.
-  // `valuesIn` Indices: `values` is output only (SortValues); with a count limit, the values past it are left as
-  // they were, like their keys, and a single pair (count 1) is written too.
   void record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count, uint32_t keyBits,
-              VkDeviceAddress countLimit = 0, uint32_t ignoredLowBits = 0, SortValues valuesIn = SortValues::Given);
+              VkDeviceAddress countLimit = 0, uint32_t ignoredLowBits = 0);
 
   SortAlgorithm algorithm() const { return algorithm_; }
   uint64_t scratchBytes() const;  // memory the sorter owns (for the stats)
@@ -104,9 +97,8 @@ class GpuSorter {
   uint32_t smallSortMax() const { return smallSortMax_; }
 
  private:
-  // `indices`: the first dispatch makes the values (SortValues::Indices).
   void recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                   uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits, bool indices);
+                   uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits);
   // Where radix pass `pass` of `passes` writes (keys, values): an even count ping-pongs caller -> scratch ->
   // caller; three passes go caller -> scratch -> second -> caller; one pass ends in scratch (recordCopyBack).
   std::pair<VkDeviceAddress, VkDeviceAddress> passOutput(uint32_t pass, uint32_t passes, VkDeviceAddress keys,
@@ -115,14 +107,14 @@ class GpuSorter {
   void recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                       VkDeviceAddress countLimit);
   void recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                      uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits, bool indices);
+                      uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits);
   void recordBitonic(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                     uint32_t keyBits, bool indices);
+                     uint32_t keyBits);
   void recordTiles(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                   uint32_t keyBits, VkDeviceAddress countLimit, bool indices);
+                   uint32_t keyBits, VkDeviceAddress countLimit);
   void recordLocal(VkCommandBuffer cmd, gpu::SortBitonicPush push, uint32_t mode) const;
   void recordSmall(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
-                   uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits, bool indices) const;
+                   uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) const;
 
   const VulkanContext* ctx_ = nullptr;
   SortAlgorithm algorithm_ = SortAlgorithm::None;

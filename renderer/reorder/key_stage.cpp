@@ -108,12 +108,12 @@ const ComputePipeline& KeyStage::pipeline(const char* shader, KeyStrategy strate
 }
 
 void KeyStage::recordKeys(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint32_t stateSet, uint32_t bounce,
-                          VkDeviceAddress keysOut, uint32_t count, StageTimer* timer,
+                          VkDeviceAddress keysOut, VkDeviceAddress valuesOut, uint32_t count, StageTimer* timer,
                           VkBuffer liveArgs, VkDeviceSize liveArgsOffset) {
   KeyStrategy s = settings_.strategy;
   if (s == KeyStrategy::None || count == 0) return;
   if (count > maxPaths_) throw std::invalid_argument("KeyStage::recordKeys: more paths than maxPaths");
-  gpu::KeyPush push{frameBlock, paramsBuffer_.address(), keysOut, stateSet, bounce, count, 0};
+  gpu::KeyPush push{frameBlock, paramsBuffer_.address(), keysOut, valuesOut, stateSet, bounce, count, 0};
   if (s == KeyStrategy::Oracle) {
     const ComputePipeline& trace = pipeline("key_oracle", s, sizeof(gpu::KeyPush));
     recordStage(cmd, timer, "oracle-trace", [&] { trace.dispatchThreads(cmd, push, count); });

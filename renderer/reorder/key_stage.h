@@ -60,15 +60,14 @@ class KeyStage {
   uint32_t keyBits() const;
   const KeyGrid& grid() const { return grid_; }
 
-  // Writes keysOut[i] and state[stateSet].predictedLength[i] for i < count (the sort makes the payload, the
-  // slot: SortValues::Indices). None records nothing; oracle first records its trace, timed as "oracle-trace";
-  // the keys are timed as "keys".
+  // Writes keysOut[i], valuesOut[i] = i and state[stateSet].predictedLength[i] for i < count. None records
+  // nothing; oracle first records its trace, timed as "oracle-trace"; the keys are timed as "keys".
   // With `liveArgs` (the live prefix's indirect dispatch size, GpuFrame::live) the keys pass runs over the
   // live prefix only: the caller guarantees that keysOut past it holds dead keys (the last sort left them
   // there, in place). Where most paths have finished this is most of the pass (openings, 8 bounces: 0.029
   // ms a sorted bounce over every slot).
   void recordKeys(VkCommandBuffer cmd, VkDeviceAddress frameBlock, uint32_t stateSet, uint32_t bounce,
-                  VkDeviceAddress keysOut, uint32_t count, StageTimer* timer,
+                  VkDeviceAddress keysOut, VkDeviceAddress valuesOut, uint32_t count, StageTimer* timer,
                   VkBuffer liveArgs = VK_NULL_HANDLE, VkDeviceSize liveArgsOffset = 0);
   // After the trace of bounce >= 1 (hits in the current set's order, before shading overwrites the rays):
   // folds each live path's hit distance into its ray's cache entry. Only average, ema and gaussian record

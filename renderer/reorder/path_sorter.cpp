@@ -48,8 +48,8 @@ void PathSorter::recordKeys(VkCommandBuffer cmd, const PathBuffers& buffers, uin
   // Over the live prefix only: past it, buffers.keys holds the dead keys the last sort moved there (every
   // slot is live until a frame's first sort, and the keys pass then covers them all).
   if (!madeInShade)
-    keys_.recordKeys(cmd, buffers.frameBlock.address(), stateSet, bounce, buffers.keys.address(), n, timer,
-                     buffers.live.handle(), PathBuffers::kLiveDispatchOffset);
+    keys_.recordKeys(cmd, buffers.frameBlock.address(), stateSet, bounce, buffers.keys.address(),
+                     buffers.values.address(), n, timer, buffers.live.handle(), PathBuffers::kLiveDispatchOffset);
 }
 
 void PathSorter::recordSort(VkCommandBuffer cmd, const PathBuffers& buffers, uint32_t n, StageTimer* timer) {
@@ -63,11 +63,8 @@ void PathSorter::recordSort(VkCommandBuffer cmd, const PathBuffers& buffers, uin
     // Settings::sortBits keeps only the top bits of what the sort compares (keyBits - 1 live bits and the
     // dead bit): the bits below are ignored, a radix pass less for each 8.
     const uint32_t bits = std::max(1u, keys_.keyBits() - 1);
-    // The payload is the slot, made by the sort's first pass (SortValues::Indices): the gather reads it for
-    // the live prefix only, where the sort wrote it.
     sorter_->record(cmd, buffers.keys.address(), buffers.values.address(), n, bits,
-                    buffers.live.address() + RL_LIVE_COUNT * sizeof(uint32_t), ignoredKeyBits(bits, sortBits_),
-                    SortValues::Indices);
+                    buffers.live.address() + RL_LIVE_COUNT * sizeof(uint32_t), ignoredKeyBits(bits, sortBits_));
   }
 }
 

@@ -25,7 +25,7 @@ static_assert(sizeof(GpuLengthCache) == 5 * 8 + 10 * 4);
 static_assert(offsetof(GpuKeyParams, cache) == 80);
 static_assert(offsetof(GpuKeyParams, oracleT) == 160);
 static_assert(sizeof(GpuKeyParams) == 176);
-static_assert(sizeof(KeyPush) == 40);
+static_assert(sizeof(KeyPush) == 48);
 static_assert(sizeof(KeyLearnPush) == 32);
 
 TEST(KeyFunctions, DeterministicMathMatchesCmath) {

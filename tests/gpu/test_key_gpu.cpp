@@ -93,6 +93,7 @@ TEST_F(KeyGpu, SlotsPastTheLivePrefixGetTheDeadKey) {
   const KeyOutput prefix = runKeys(ctx(), stage, frame, n);
   uint32_t liveBehind = 0;
   for (uint32_t i = 0; i < n; ++i) {
+    EXPECT_EQ(prefix.values[i], i);
     if (i < live) {
       EXPECT_EQ(prefix.keys[i], all.keys[i]) << i;
       EXPECT_EQ(prefix.predicted[i], all.predicted[i]) << i;
