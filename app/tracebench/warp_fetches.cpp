@@ -77,19 +77,22 @@ WindowSums countWindow(const HostPairTree& tree, const RaySet& rays, bool anyHit
     for (uint32_t l = 0; l < laneCount; ++l) {
       const uint32_t i = warpBegin + l;
       PairFetchLog& log = lanes[l];
-      log.clear();
+      log.steps.clear();
       const CpuHit hit = traversePairsCpu(tree.nodes, tree.entries, glm::vec3(rays.origins[i]),
                                           glm::vec3(rays.directions[i]), rays.directions[i].w, anyHit, &log);
       sums.steps += hit.steps;
-      sums.nodes += log.nodes.size();
-      sums.entries += log.entries.size();
-      for (uint32_t n : log.nodes) {
-        sums.warpNodes += warpNodes.first(n, warp);
-        sums.windowBytes += windowNodes.first(n, 0) ? kPairNodeBytes : 0;
-      }
-      for (uint32_t e : log.entries) {
-        sums.warpEntries += warpEntries.first(e, warp);
-        sums.windowBytes += windowEntries.first(e, 0) ? kLeafEntryBytes : 0;
+      sums.nodes += hit.nodeVisits;
+      sums.entries += hit.triangleTests;
+      for (uint32_t word : log.steps) {
+        if (word < RL_LEAF_TAG) {
+          sums.warpNodes += warpNodes.first(word, warp);
+          sums.windowBytes += windowNodes.first(word, 0) ? kPairNodeBytes : 0;
+          continue;
+        }
+        for (uint32_t e = RL_LEAF_FIRST(word); e < RL_LEAF_FIRST(word) + RL_LEAF_COUNT(word); ++e) {
+          sums.warpEntries += warpEntries.first(e, warp);
+          sums.windowBytes += windowEntries.first(e, 0) ? kLeafEntryBytes : 0;
+        }
       }
     }
     countRequests(lanes, laneCount, sums);

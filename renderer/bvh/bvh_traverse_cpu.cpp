@@ -89,6 +89,21 @@ CpuHit traverseBinaryCpu(const std::vector<gpu::BvhNode>& nodes, const std::vect
   return hit;
 }
 
+std::vector<uint32_t> PairFetchLog::nodes() const {
+  std::vector<uint32_t> read;
+  for (uint32_t word : steps)
+    if (word < RL_LEAF_TAG) read.push_back(word);
+  return read;
+}
+
+std::vector<uint32_t> PairFetchLog::entries() const {
+  std::vector<uint32_t> read;
+  for (uint32_t word : steps)
+    if (word >= RL_LEAF_TAG)
+      for (uint32_t e = RL_LEAF_FIRST(word); e < RL_LEAF_FIRST(word) + RL_LEAF_COUNT(word); ++e) read.push_back(e);
+  return read;
+}
+
 CpuHit traversePairsCpu(const std::vector<gpu::BvhPairNode>& nodes, const std::vector<gpu::GpuLeafTriangle>& entries,
                         glm::vec3 origin, glm::vec3 dir, float tMax, bool anyHit, PairFetchLog* log) {
   CpuHit hit;
@@ -105,7 +120,6 @@ CpuHit traversePairsCpu(const std::vector<gpu::BvhPairNode>& nodes, const std::v
       for (uint32_t e = first; e < first + count; ++e) {
         const gpu::GpuLeafTriangle& t = entries[e];
         hit.triangleTests++;
-        if (log) log->entries.push_back(e);
         cpuIntersectTriangle(t.v0, t.e1, t.e2, t.triangle, origin, dir, hit, tMax);
       }
       if (anyHit && hit.t > 0.0f) return hit;
@@ -114,7 +128,6 @@ CpuHit traversePairsCpu(const std::vector<gpu::BvhPairNode>& nodes, const std::v
       continue;
     }
     hit.nodeVisits++;
-    if (log) log->nodes.push_back(node);
     const gpu::BvhPairNode& n = nodes[node];
     // enterPair: the slabs as bounds * invDir - origin * invDir, both children at once.
     float enter[2], leave[2];

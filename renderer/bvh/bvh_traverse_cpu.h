@@ -33,9 +33,11 @@ CpuHit traverseBinaryCpu(const std::vector<gpu::BvhNode>& nodes, const std::vect
 // What a pair-node traversal read, in order: each pair node it tested (64 bytes: both children's boxes) and each
 // leaf entry it intersected (48 bytes). The lanes of a warp that walk the same part of the tree share these reads.
 struct PairFetchLog {
-  std::vector<uint32_t> nodes, entries;
   std::vector<uint32_t> steps;  // each step's word: a pair-node index, or a leaf's word (RL_LEAF_WORD)
-  void clear() { nodes.clear(), entries.clear(), steps.clear(); }
+  // What the steps read, in order: the pair nodes (the steps that are not leaf words), and the leaf entries
+  // (every entry of each leaf step's range: the shader tests a leaf's triangles all, any-hit rays too).
+  std::vector<uint32_t> nodes() const;
+  std::vector<uint32_t> entries() const;
 };
 // bvh_traverse.glsl's traverseBvh over the tree the GPU reads (pairNodes and leafRecords): hit.triangle is the
 // entry's BVH-order index, steps count pair nodes and leaves visited as the shader's do, nodeVisits the pair nodes

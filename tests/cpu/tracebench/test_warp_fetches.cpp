@@ -58,15 +58,15 @@ TEST(WarpFetches, TheLogHoldsEveryReadTheCountsName) {
     for (bool anyHit : {false, true}) {
       CpuHit hit;
       const PairFetchLog log = logOf(tree, rays, i, anyHit, &hit);
-      EXPECT_EQ(log.nodes.size(), hit.nodeVisits);
-      EXPECT_EQ(log.entries.size(), hit.triangleTests);
+      EXPECT_EQ(log.nodes().size(), hit.nodeVisits);
+      EXPECT_EQ(log.entries().size(), hit.triangleTests);
       EXPECT_EQ(log.steps.size(), hit.steps);
       EXPECT_EQ(std::count_if(log.steps.begin(), log.steps.end(), [](uint32_t w) { return w < RL_LEAF_TAG; }),
                 hit.nodeVisits);
       EXPECT_GE(hit.steps, hit.nodeVisits);  // the rest are leaves
       leaves += hit.steps - hit.nodeVisits;
-      for (uint32_t n : log.nodes) EXPECT_LT(n, tree.nodes.size());
-      for (uint32_t e : log.entries) EXPECT_LT(e, tree.entries.size());
+      for (uint32_t n : log.nodes()) EXPECT_LT(n, tree.nodes.size());
+      for (uint32_t e : log.entries()) EXPECT_LT(e, tree.entries.size());
     }
   EXPECT_GT(leaves, rays.size()) << "the rays reached too few leaves to prove anything";
 }
@@ -122,9 +122,10 @@ TEST(WarpFetches, CountsAreThoseOfPlainSets) {
       }
       CpuHit hit;
       const PairFetchLog log = logOf(tree, rays, i, anyHit, &hit);
-      steps += hit.steps, nodes += log.nodes.size(), entries += log.entries.size();
-      wn.insert(log.nodes.begin(), log.nodes.end()), gn.insert(log.nodes.begin(), log.nodes.end());
-      we.insert(log.entries.begin(), log.entries.end()), ge.insert(log.entries.begin(), log.entries.end());
+      const std::vector<uint32_t> laneNodes = log.nodes(), laneEntries = log.entries();
+      steps += hit.steps, nodes += laneNodes.size(), entries += laneEntries.size();
+      wn.insert(laneNodes.begin(), laneNodes.end()), gn.insert(laneNodes.begin(), laneNodes.end());
+      we.insert(laneEntries.begin(), laneEntries.end()), ge.insert(laneEntries.begin(), laneEntries.end());
     }
     warpNodes += wn.size(), warpEntries += we.size();  // the last warp; the tail's window is left out
     uint64_t requestNodes = 0, requestEntries = 0;
