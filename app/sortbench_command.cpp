@@ -15,6 +15,7 @@
 #include "app/bench/bench_spread.h"
 #include "app/cli_options.h"
 #include "app/scene_setup.h"
+#include "app/sortbench_steps.h"
 #include "renderer/checked_write.h"
 #include "renderer/reorder/gpu_sort.h"
 #include "renderer/vk/gpu_buffer.h"
@@ -42,6 +43,8 @@ const char* kUsage =
     "  --validate[=sync|gpu-av]  enable the Khronos validation layer with synchronization (default)\n"
     "                      or GPU-assisted checks (exit 1 on any error)\n"
     "  --csv FILE          also write the results as CSV\n"
+    "  --steps FILE        time each dispatch of the radix sorts too (histogram, scan and scatter of every\n"
+    "                      pass; OneSweep's; the small sort; the copy): medians under each row, and as CSV\n"
     "  --radix-group G     radix scatter work-group size (tuning; default: device's)\n"
     "  --radix-kpt K       radix keys per invocation (tuning; default 8)\n";
 
@@ -57,6 +60,7 @@ struct BenchOptions {
   std::string device;
   ValidationMode validation = ValidationMode::Off;
   std::string csv;
+  std::string steps;  // --steps FILE: the per-dispatch CSV
   GpuSorter::Tuning tuning;
 };
 
@@ -108,6 +112,8 @@ BenchOptions parseOptions(const std::vector<std::string>& args) {
       o.device = value;
     } else if (flag == "--csv") {
       o.csv = value;
+    } else if (flag == "--steps") {
+      o.steps = value;
     } else if (flag == "--radix-group") {
       o.tuning.radixGroupSize = parseUint(flag, value, 1, 256);
     } else if (flag == "--radix-kpt") {
@@ -117,6 +123,8 @@ BenchOptions parseOptions(const std::vector<std::string>& args) {
     }
   }
   if (o.counts.empty()) o.counts.push_back(1u << 21);
+  if (!o.steps.empty() && std::count(o.sorts.begin(), o.sorts.end(), SortAlgorithm::Bitonic))
+    throw UsageError("--steps times the radix sorts' dispatches, not bitonic's: pass --sort radix or onesweep");
   return o;
 }
 
@@ -172,8 +180,8 @@ struct Row {
 };
 
 // Times one sort of a fresh copy of the input with the renderer's named timer scopes; the copy is outside
-// the scope.
-double timeOnce(const VulkanContext& ctx, GpuTimer& timer, GpuSorter& sorter, const GpuBuffer& srcKeys,
+// the scope. Returns the scopes in the order they began: the sort's, then its steps' (with --steps).
+std::vector<StageTime> timeOnce(const VulkanContext& ctx, GpuTimer& timer, GpuSorter& sorter, const GpuBuffer& srcKeys,
                 const GpuBuffer& srcValues, const GpuBuffer& keys, const GpuBuffer& values, uint32_t n, uint32_t bits) {
   ctx.submitAndWait([&](VkCommandBuffer cmd) {
     timer.reset(cmd);
@@ -184,8 +192,7 @@ double timeOnce(const VulkanContext& ctx, GpuTimer& timer, GpuSorter& sorter, co
     ScopedStage scope(&timer, cmd, "sort");
     sorter.record(cmd, keys.address(), values.address(), n, bits);
   });
-  std::vector<StageTime> times = timer.collect();
-  return times.empty() ? 0.0 : times.front().ms;
+  return timer.collect();
 }
 
 // One row: the table's line on the terminal, or a CSV line (with `extra` columns) for --csv.
@@ -218,10 +225,15 @@ int runBench(const BenchOptions& o) {
 
   std::vector<Row> rows;
   bool allOk = true;
-  GpuTimer timer(ctx, 2);
+  GpuTimer timer(ctx, 64);  // the sort and, with --steps, each of its dispatches
+  // The columns every CSV line ends with (both files).
+  const std::string csvExtra = "," + std::to_string(o.bits) + "," + o.dist + "," + std::to_string(o.repeat) + "," +
+                                 csvText(dev.name) + "," + csvText(dev.driver);
+  std::string stepsCsv;
   GpuBuffer keys(ctx, VkDeviceSize(maxN) * 4), values(ctx, VkDeviceSize(maxN) * 4);
   for (SortAlgorithm sort : o.sorts) {
     GpuSorter sorter(ctx, sort, maxN, o.tuning);
+    if (!o.steps.empty()) sorter.timeSteps(&timer);
     if (sorter.oneSweepSerial()) {  // one work group a dispatch: a correctness fallback, not a speed to report
       std::fprintf(stderr, "raylab sortbench: onesweep skipped: %s is not known to give forward progress between "
                    "work groups\n", dev.name.c_str());
@@ -234,8 +246,10 @@ int runBench(const BenchOptions& o) {
       GpuBuffer srcKeys = makeBufferFrom(ctx, hostKeys), srcValues = makeBufferFrom(ctx, hostValues);
       Row row{toString(sort), n};
       std::vector<double> ms;
+      SortSteps steps;
       for (uint32_t run = 0; run < o.repeat + kWarmups; ++run) {
-        const double t = timeOnce(ctx, timer, sorter, srcKeys, srcValues, keys, values, n, o.bits);
+        const std::vector<StageTime> scopes = timeOnce(ctx, timer, sorter, srcKeys, srcValues, keys, values, n, o.bits);
+        const double t = scopes.empty() ? 0.0 : scopes.front().ms;
         if (run == 0) {  // check the first result: every later run sorts the same input the same way
           const std::string err = checkResult(sort, hostKeys, o.bits, keys.downloadVector<uint32_t>(n),
                                               values.downloadVector<uint32_t>(n));
@@ -244,24 +258,30 @@ int runBench(const BenchOptions& o) {
             row.ok = allOk = false;
           }
         }
-        if (run >= uint32_t(kWarmups)) ms.push_back(t);
+        if (run < uint32_t(kWarmups)) continue;
+        ms.push_back(t);
+        if (!o.steps.empty() && !scopes.empty()) steps.addRun(scopes, "sort");
       }
       std::sort(ms.begin(), ms.end());
       row.minMs = ms.front();
       row.maxMs = ms.back();
       row.medianMs = ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
       std::fputs(formatRow(row, false).c_str(), stdout);
+      if (!steps.empty()) {
+        std::fputs(steps.table(row.medianMs).c_str(), stdout);
+        stepsCsv += steps.csv(row.sort, n, row.medianMs, csvExtra);
+      }
       std::fflush(stdout);
       rows.push_back(row);
     }
   }
   if (!o.csv.empty()) {
     std::string csv = "sort,n,median_ms,min_ms,max_ms,pairs_per_s,check,bits,dist,repeat,device,driver\n";
-    const std::string extra = "," + std::to_string(o.bits) + "," + o.dist + "," + std::to_string(o.repeat) + "," +
-                              csvText(dev.name) + "," + csvText(dev.driver);
-    for (const Row& r : rows) csv += formatRow(r, true, extra);
+    for (const Row& r : rows) csv += formatRow(r, true, csvExtra);
     writeFileChecked(o.csv, csv);  // a WriteError is reported by runSortBenchCommand: exit 1
   }
+  if (!o.steps.empty())
+    writeFileChecked(o.steps, std::string(SortSteps::kCsvHeader) + ",bits,dist,repeat,device,driver\n" + stepsCsv);
   if (o.validation != ValidationMode::Off && ctx.validationErrors() > 0) {
     std::fprintf(stderr, "raylab sortbench: the validation layer reported %u errors\n", ctx.validationErrors());
     return kExitFailure;

@@ -5,6 +5,7 @@
 #include <string>
 #include <tuple>
 
+#include "renderer/vk/stage_timer.h"
 #include "renderer/vk/vk_check.h"
 #include "renderer/vk/vk_context.h"
 #include "shaders/sort_types.h"
@@ -118,6 +119,13 @@ bool GpuSorter::oneSweepSupported(const VulkanContext& ctx) {
 
 uint32_t GpuSorter::radixPasses(uint32_t keyBits) { return radixPasses(keyBits, 0).passes; }
 
+template <class Record>
+void GpuSorter::step(VkCommandBuffer cmd, const char* name, int pass, Record&& record) const {
+  if (stepTimer_) stepTimer_->begin(cmd, pass < 0 ? std::string(name) : name + ("/" + std::to_string(pass)));
+  record();
+  if (stepTimer_) stepTimer_->end(cmd);
+}
+
 void GpuSorter::record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                        uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) {
   if (algorithm_ == SortAlgorithm::None) return;
@@ -128,7 +136,7 @@ void GpuSorter::record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddres
   const bool radix = algorithm_ == SortAlgorithm::Radix || algorithm_ == SortAlgorithm::OneSweep;
   if (count > 1) {
     if (radix && count <= smallSortMax_)
-      recordSmall(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits);
+      step(cmd, "small", -1, [&] { recordSmall(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits); });
     else if (oneSweep_)
       recordOneSweep(cmd, keys, values, count, keyBits, countLimit, ignoredLowBits);
     else if (radix)
@@ -165,15 +173,16 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
     push.numGroups = numGroups;
     push.hasCountLimit = countLimit != 0 ? 1 : 0;
     push.countLimit = countLimit;
-    dispatchSplit(histogram_, cmd, push, numGroups, maxGroups);
+    const int p = static_cast<int>(pass);
+    step(cmd, "histogram", p, [&] { dispatchSplit(histogram_, cmd, push, numGroups, maxGroups); });
     computeBarrier(cmd);
     // CPU devices pay per work group; 4 rows a group still spreads over the cores and keeps each invocation
     // far below lavapipe's cap of 65535 loop iterations per shader invocation.
     const uint32_t rows = ctx_->info().isCpu ? 4 : 1;
     gpu::SortScanPush scanPush{hist_.address(), numGroups, rows};
-    scan_.dispatchGroups(cmd, scanPush, SORT_RADIX / rows);
+    step(cmd, "scan", p, [&] { scan_.dispatchGroups(cmd, scanPush, SORT_RADIX / rows); });
     computeBarrier(cmd);
-    dispatchSplit(scatter_, cmd, push, numGroups, maxGroups);
+    step(cmd, "scatter", p, [&] { dispatchSplit(scatter_, cmd, push, numGroups, maxGroups); });
     if (pass + 1 < passes) computeBarrier(cmd);
     srcKeys = push.keysOut;
     srcValues = push.valuesOut;
@@ -203,7 +212,7 @@ void GpuSorter::recordCopyBack(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
   gpu::SortCopyPush push{scratchKeys_.address(), scratchValues_.address(), keys, values, count,
                          countLimit != 0 ? 1u : 0u, countLimit};
   const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
-  copy_.dispatchGroups(cmd, push, std::min(maxGroups, ceilDiv(count, kCopyGroup * 4ull)));
+  step(cmd, "copy", -1, [&] { copy_.dispatchGroups(cmd, push, std::min(maxGroups, ceilDiv(count, kCopyGroup * 4ull))); });
 }
 
 void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
@@ -228,7 +237,8 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
   push.hasCountLimit = countLimit != 0 ? 1 : 0;
   push.countLimit = countLimit;
   const uint32_t histChunk = kOneSweepHistogramGroup * SORT_ONESWEEP_HIST_KPT;
-  oneSweepHistogram_.dispatchGroups(cmd, push, std::min(maxGroups, ceilDiv(count, histChunk)));
+  step(cmd, "onesweep-histogram", -1,
+       [&] { oneSweepHistogram_.dispatchGroups(cmd, push, std::min(maxGroups, ceilDiv(count, histChunk))); });
   VkDeviceAddress srcKeys = keys, srcValues = values;
   for (uint32_t pass = 0; pass < passes; ++pass) {
     computeBarrier(cmd);
@@ -238,15 +248,17 @@ void GpuSorter::recordOneSweep(VkCommandBuffer cmd, VkDeviceAddress keys, VkDevi
     push.shift = lowBit + pass * SORT_RADIX_BITS;
     push.pass = pass;
     // Tiles come from the pass's counter, not the group id, so a split dispatch needs no offset.
-    if (oneSweepSerial_) {
-      for (uint32_t tile = 0; tile < numTiles; ++tile) {
-        if (tile) computeBarrier(cmd);
-        oneSweepPass_.dispatchGroups(cmd, push, 1);
+    step(cmd, "onesweep", static_cast<int>(pass), [&] {
+      if (oneSweepSerial_) {
+        for (uint32_t tile = 0; tile < numTiles; ++tile) {
+          if (tile) computeBarrier(cmd);
+          oneSweepPass_.dispatchGroups(cmd, push, 1);
+        }
+      } else {
+        for (uint32_t first = 0; first < numTiles; first += maxGroups)
+          oneSweepPass_.dispatchGroups(cmd, push, std::min(maxGroups, numTiles - first));
       }
-    } else {
-      for (uint32_t first = 0; first < numTiles; first += maxGroups)
-        oneSweepPass_.dispatchGroups(cmd, push, std::min(maxGroups, numTiles - first));
-    }
+    });
     srcKeys = push.keysOut;
     srcValues = push.valuesOut;
   }

@@ -41,6 +41,7 @@
 
 namespace raylab {
 
+class StageTimer;
 class VulkanContext;
 
 class GpuSorter {
@@ -73,6 +74,10 @@ class GpuSorter {
   void record(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count, uint32_t keyBits,
               VkDeviceAddress countLimit = 0, uint32_t ignoredLowBits = 0);
 
+  // Times each dispatch record() records as a scope of `timer`, named by its step: "histogram/P", "scan/P" and
+  // "scatter/P" for radix pass P, "onesweep-histogram" and "onesweep/P", "small", "copy" (sortbench --steps,
+  // which finds where a sort's time goes). nullptr, the default, records no scopes.
+  void timeSteps(StageTimer* timer) { stepTimer_ = timer; }
   SortAlgorithm algorithm() const { return algorithm_; }
   uint64_t scratchBytes() const;  // memory the sorter owns (for the stats)
   uint32_t maxCount() const { return maxCount_; }
@@ -115,6 +120,9 @@ class GpuSorter {
   void recordLocal(VkCommandBuffer cmd, gpu::SortBitonicPush push, uint32_t mode) const;
   void recordSmall(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                    uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) const;
+  // record() inside a step scope of stepTimer_ (when set); `pass` < 0: a step of no pass.
+  template <class Record>
+  void step(VkCommandBuffer cmd, const char* name, int pass, Record&& record) const;
 
   const VulkanContext* ctx_ = nullptr;
   SortAlgorithm algorithm_ = SortAlgorithm::None;
@@ -123,6 +131,7 @@ class GpuSorter {
   bool oneSweep_ = false;
   bool oneSweepSerial_ = false;
   uint32_t smallSortMax_ = 0;
+  StageTimer* stepTimer_ = nullptr;
 
   // Radix
   ComputePipeline histogram_;
