@@ -46,7 +46,8 @@ const char* kUsage =
     "  --steps FILE        time each dispatch of the radix sorts too (histogram, scan and scatter of every\n"
     "                      pass; OneSweep's; the small sort; the copy): medians under each row, and as CSV\n"
     "  --radix-group G     radix scatter work-group size (tuning; default: device's)\n"
-    "  --radix-kpt K       radix keys per invocation (tuning; default 8)\n";
+    "  --radix-kpt K       radix keys per invocation (tuning; default 8)\n"
+    "  --radix-tiles T     consecutive tiles a radix work group counts and scatters, 1..64 (tuning; default 1)\n";
 
 // --help: not an error, but it ends the parse the same way.
 struct HelpRequested {};
@@ -118,6 +119,8 @@ BenchOptions parseOptions(const std::vector<std::string>& args) {
       o.tuning.radixGroupSize = parseUint(flag, value, 1, 256);
     } else if (flag == "--radix-kpt") {
       o.tuning.radixKeysPerThread = parseUint(flag, value, 1, 32);
+    } else if (flag == "--radix-tiles") {
+      o.tuning.radixTilesPerGroup = parseUint(flag, value, 1, 64);
     } else {
       throw UsageError("unknown flag '" + flag + "'");
     }

@@ -1,7 +1,8 @@
 #version 460
-// Radix sort, step (a) of a pass: the digit histogram of one tile, written to the tile's column of the
-// digit-major count table (hist[digit * numGroups + tile]). Same group size, keys per invocation and tiles
-// as the scatter; all of an invocation's keys are loaded before any is counted, so the loads overlap.
+// Radix sort, step (a) of a pass: the digit histogram of one work group's tiles (pc.tilesPerGroup consecutive
+// ones, usually 1), written to the group's column of the digit-major count table (hist[digit * numGroups +
+// group]). Same group size, keys per invocation and tiles as the scatter; all of an invocation's keys of a tile
+// are loaded before any is counted, so the loads overlap.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
@@ -24,24 +25,27 @@ void main() {
 
   // Tiles past a device-side count limit count nothing: their column of the table is zero.
   uint count = sortLimitedCount(pc.count, pc.hasCountLimit, pc.countLimit);
-  uint begin = group * gl_WorkGroupSize.x * KPT + t;
-  uint digits[KPT];
-  for (uint k = 0; k < KPT; ++k) {
-    uint i = begin + k * gl_WorkGroupSize.x;
-    digits[k] = i < count ? (sortEffectiveKey(pc.keysIn.v[i], pc.keyBits) >> pc.shift) & SORT_RADIX_MASK
-                             : 0xFFFFFFFFu;
-  }
   barrier();  // histogram cleared
-  for (uint k = 0; k < KPT; ++k) {
-    uint d = digits[k];
-    if (d == 0xFFFFFFFFu) continue;
-    // Runs of equal digits (sorted or nearly constant keys, the high digits of small keys) would
-    // serialise on one shared counter; a subgroup that agrees adds once.
-    if (subgroupAllEqual(d)) {
-      uint n = subgroupBallotBitCount(subgroupBallot(true));
-      if (subgroupElect()) atomicAdd(sHist[d], n);
-    } else {
-      atomicAdd(sHist[d], 1u);
+  for (uint tile = group * pc.tilesPerGroup; tile < (group + 1) * pc.tilesPerGroup; ++tile) {
+    uint begin = tile * gl_WorkGroupSize.x * KPT + t;
+    if (tile * gl_WorkGroupSize.x * KPT >= count) break;  // uniform: the group's tiles past the count
+    uint digits[KPT];
+    for (uint k = 0; k < KPT; ++k) {
+      uint i = begin + k * gl_WorkGroupSize.x;
+      digits[k] = i < count ? (sortEffectiveKey(pc.keysIn.v[i], pc.keyBits) >> pc.shift) & SORT_RADIX_MASK
+                               : 0xFFFFFFFFu;
+    }
+    for (uint k = 0; k < KPT; ++k) {
+      uint d = digits[k];
+      if (d == 0xFFFFFFFFu) continue;
+      // Runs of equal digits (sorted or nearly constant keys, the high digits of small keys) would
+      // serialise on one shared counter; a subgroup that agrees adds once.
+      if (subgroupAllEqual(d)) {
+        uint n = subgroupBallotBitCount(subgroupBallot(true));
+        if (subgroupElect()) atomicAdd(sHist[d], n);
+      } else {
+        atomicAdd(sHist[d], 1u);
+      }
     }
   }
   barrier();

@@ -1,8 +1,9 @@
 #version 460
-// Radix sort, step (c) of a pass (reduce-then-scan): ranks the keys of one tile stably by digit and writes
-// keys and values to their global places (sort_radix_tile.glsl). Where this tile's run of a digit starts
-// comes from the scanned count table: digits before it (scan of the digit totals) plus the same digit in
-// earlier tiles. No work group waits on another.
+// Radix sort, step (c) of a pass (reduce-then-scan): ranks the keys of each of its tiles (pc.tilesPerGroup
+// consecutive ones, in order) stably by digit and writes keys and values to their global places
+// (sort_radix_tile.glsl). Where a tile's run of a digit starts comes from the scanned count table (digits
+// before it, the scan of the digit totals, plus the same digit in earlier work groups) and the group's earlier
+// tiles. No work group waits on another.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_scalar_block_layout : require
@@ -22,17 +23,27 @@ layout(push_constant, scalar) uniform Push { SortRadixPush pc; };
 #include "sort_radix_tile.glsl"
 
 void main() {
-  uint tile = gl_WorkGroupID.x + pc.groupOffset;
-  // Tiles past a device-side count limit have nothing to place (their histogram column is zero).
-  if (!tileRank(tile, sortLimitedCount(pc.count, pc.hasCountLimit, pc.countLimit))) return;
+  uint group = gl_WorkGroupID.x + pc.groupOffset;
+  uint limit = sortLimitedCount(pc.count, pc.hasCountLimit, pc.countLimit);
+  // Groups whose tiles are all past a device-side count limit have nothing to place (their column is zero).
+  if (group * pc.tilesPerGroup * TILE >= limit) return;
   uint totalsBase = SORT_RADIX * pc.numGroups;
   uint totals[DIGITS_PER_THREAD];
   for (uint k = 0; k < DIGITS_PER_THREAD; ++k) totals[k] = pc.hist.v[totalsBase + firstOwnedDigit() + k];
   uint starts[DIGITS_PER_THREAD];
   digitStarts(totals, starts);
-  for (uint k = 0; k < DIGITS_PER_THREAD; ++k) {
-    uint d = firstOwnedDigit() + k;
-    sGlobalShift[d] = starts[k] + pc.hist.v[d * pc.numGroups + tile] - sLocalStart[d];
+  // Where the group's next tile's run of each owned digit starts: after the digits before it, the same digit
+  // in earlier groups, and in this group's earlier tiles.
+  uint next[DIGITS_PER_THREAD];
+  for (uint k = 0; k < DIGITS_PER_THREAD; ++k) next[k] = starts[k] + pc.hist.v[(firstOwnedDigit() + k) * pc.numGroups + group];
+  for (uint tile = group * pc.tilesPerGroup; tile < (group + 1) * pc.tilesPerGroup; ++tile) {
+    if (!tileRank(tile, limit)) break;  // uniform; tileRank ends with a barrier
+    for (uint k = 0; k < DIGITS_PER_THREAD; ++k) {
+      uint d = firstOwnedDigit() + k;
+      sGlobalShift[d] = next[k] - sLocalStart[d];
+      next[k] += tileDigitCount[k];
+    }
+    tileScatter();
+    barrier();  // the tile's shared memory read before the next tile's ranking clears it
   }
-  tileScatter();
 }

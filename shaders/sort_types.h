@@ -40,10 +40,14 @@ struct SortRadixPush {
   uint count;        // elements to sort
   uint shift;        // lowest key bit of this pass's digit
   uint keyBits;      // 1..32; keys >= 2^keyBits sort as 2^keyBits (after every real key)
-  uint numGroups;    // tiles of the whole sort (the width of a hist row)
-  uint groupOffset;  // first tile of this dispatch (dispatches are split at the device's group limit)
+  uint numGroups;    // work groups of the whole sort (the width of a hist row): tiles / tilesPerGroup, rounded up
+  uint groupOffset;  // first work group of this dispatch (dispatches are split at the device's group limit)
   uint hasCountLimit;  // 1: sort only min(count, countLimit.v[0]) pairs (GpuSorter::record's countLimit)
   SORT_REF(SortUintBuf) countLimit;
+  // Consecutive tiles one work group counts and scatters, in order (GpuSorter::Tuning::radixTilesPerGroup):
+  // numGroups is then the number of such groups, and a hist column counts all of a group's tiles.
+  uint tilesPerGroup;
+  uint pad0;
 };
 
 // sort_radix_scan: each work group scans `rowsPerGroup` digits' rows of `hist` in place (1 on GPUs; more on

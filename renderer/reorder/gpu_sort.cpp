@@ -58,6 +58,9 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
     const uint32_t subgroup = std::max(1u, ctx.info().subgroupSize);
     const uint32_t kpt = tuning.radixKeysPerThread ? tuning.radixKeysPerThread : kDefaultKeysPerThread;
     if (kpt < 1 || kpt > 32) throw VulkanError("radix sort: keys per thread must be 1..32");
+    if (tuning.radixTilesPerGroup < 1 || tuning.radixTilesPerGroup > 64)
+      throw VulkanError("radix sort: tiles per work group must be 1..64");
+    tilesPerGroup_ = tuning.radixTilesPerGroup;
     // The scatter keeps one 256-bin histogram per subgroup; with small subgroups (lavapipe: 8) a 256-wide
     // group would need 32 KiB for them alone, so the group shrinks until everything fits.
     uint32_t group = tuning.radixGroupSize ? tuning.radixGroupSize : SORT_RADIX;
@@ -158,7 +161,7 @@ GpuSorter::RadixPasses GpuSorter::radixPasses(uint32_t keyBits, uint32_t ignored
 void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceAddress values, uint32_t count,
                             uint32_t keyBits, VkDeviceAddress countLimit, uint32_t ignoredLowBits) {
   const auto [lowBit, passes] = radixPasses(keyBits, ignoredLowBits);
-  const uint32_t numGroups = ceilDiv(count, radixTile_);
+  const uint32_t numGroups = ceilDiv(ceilDiv(count, radixTile_), tilesPerGroup_);
   const uint32_t maxGroups = std::max(1u, ctx_->info().maxGroupCountX);
   VkDeviceAddress srcKeys = keys, srcValues = values;
   for (uint32_t pass = 0; pass < passes; ++pass) {
@@ -173,6 +176,7 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
     push.numGroups = numGroups;
     push.hasCountLimit = countLimit != 0 ? 1 : 0;
     push.countLimit = countLimit;
+    push.tilesPerGroup = tilesPerGroup_;
     const int p = static_cast<int>(pass);
     step(cmd, "histogram", p, [&] { dispatchSplit(histogram_, cmd, push, numGroups, maxGroups); });
     computeBarrier(cmd);

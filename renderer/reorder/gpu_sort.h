@@ -50,6 +50,9 @@ class GpuSorter {
   struct Tuning {
     uint32_t radixGroupSize = 0;      // power of two, 16..256, a multiple of the subgroup size
     uint32_t radixKeysPerThread = 0;  // 1..32
+    // Consecutive tiles one work group of the portable radix passes counts and scatters (1..64): fewer
+    // columns in the count table and fewer scattered reads and writes of it, fewer groups in flight.
+    uint32_t radixTilesPerGroup = 1;
     // Radix counts up to this many pairs take the single-dispatch small sort; 0: never (the passes always run).
     uint32_t smallSortMax = SORT_SMALL_MAX;
   };
@@ -128,6 +131,7 @@ class GpuSorter {
   SortAlgorithm algorithm_ = SortAlgorithm::None;
   uint32_t maxCount_ = 0;
   uint32_t radixTile_ = 0;
+  uint32_t tilesPerGroup_ = 1;
   bool oneSweep_ = false;
   bool oneSweepSerial_ = false;
   uint32_t smallSortMax_ = 0;

@@ -18,7 +18,7 @@
 namespace raylab {
 namespace {
 
-static_assert(sizeof(gpu::SortRadixPush) == 72);
+static_assert(sizeof(gpu::SortRadixPush) == 80);
 static_assert(sizeof(gpu::SortScanPush) == 16);
 static_assert(sizeof(gpu::SortBitonicPush) == 56);
 static_assert(sizeof(gpu::SortCopyPush) == 48);
@@ -83,22 +83,32 @@ std::vector<uint32_t> stableOrder(const std::vector<uint32_t>& keys, uint32_t ke
   return order;
 }
 
-// What is sorted with: the portable radix sort's passes, the OneSweep radix variant, the bitonic sort, and the
-// radix sorter as the lab makes it (the small sort up to SORT_SMALL_MAX pairs, its passes above).
-enum class Variant { Radix, OneSweep, Bitonic, Small };
+// What is sorted with: the portable radix sort's passes, the OneSweep radix variant, the bitonic sort, the
+// radix sorter as the lab makes it (the small sort up to SORT_SMALL_MAX pairs, its passes above), and the
+// portable passes with three tiles a work group (Tuning::radixTilesPerGroup: a group's later tiles start where
+// its earlier ones left each digit).
+enum class Variant { Radix, OneSweep, Bitonic, Small, RadixGrouped };
+constexpr uint32_t kGroupedTiles = 3;
 
 SortAlgorithm algorithmOf(Variant v) {
   return v == Variant::Bitonic ? SortAlgorithm::Bitonic : v == Variant::OneSweep ? SortAlgorithm::OneSweep : SortAlgorithm::Radix;
 }
 
 std::string variantName(Variant v) {
-  return v == Variant::Radix ? "radix" : v == Variant::OneSweep ? "onesweep" : v == Variant::Bitonic ? "bitonic" : "small";
+  switch (v) {
+    case Variant::Radix: return "radix";
+    case Variant::OneSweep: return "onesweep";
+    case Variant::Bitonic: return "bitonic";
+    case Variant::Small: return "small";
+    case Variant::RadixGrouped: return "radix_grouped";
+  }
+  return "?";
 }
 
 class GpuSortTest : public test::GpuTest {
  protected:
   static GpuSorter& sorter(Variant variant) {
-    static std::unique_ptr<GpuSorter> sorters[4];
+    static std::unique_ptr<GpuSorter> sorters[5];
     auto& slot = sorters[static_cast<int>(variant)];
     if (!slot) {
       GpuSorter::Tuning tuning;
@@ -106,6 +116,7 @@ class GpuSortTest : public test::GpuTest {
       // (OneSweep's look-back needs forward progress between work groups; where the device does not promise
       // it, lavapipe, the sorter runs one work group per dispatch, so the same shaders are checked.)
       if (variant != Variant::Small) tuning.smallSortMax = 0;
+      if (variant == Variant::RadixGrouped) tuning.radixTilesPerGroup = kGroupedTiles;
       slot = std::make_unique<GpuSorter>(ctx(), algorithmOf(variant), kMaxCount, tuning);
       EXPECT_EQ(slot->usesOneSweep(), variant == Variant::OneSweep);
     }
@@ -166,12 +177,14 @@ std::vector<SortCase> allCases() {
   const Dist dists[] = {Dist::Uniform, Dist::Sorted, Dist::Reversed, Dist::Equal,
                         Dist::Few,     Dist::Full32, Dist::Dead12};
   std::vector<SortCase> cases;
-  for (Variant v : {Variant::Radix, Variant::OneSweep, Variant::Bitonic})
+  for (Variant v : {Variant::Radix, Variant::OneSweep, Variant::Bitonic, Variant::RadixGrouped})
     for (uint32_t n : counts)
       for (Dist d : dists)
-        // Bitonic at 2^20+3 takes seconds on a CPU device: four distributions are enough there.
-        if (v != Variant::Bitonic || n < kMaxCount || d == Dist::Uniform || d == Dist::Reversed ||
-            d == Dist::Few || d == Dist::Dead12)
+        // Bitonic at 2^20+3 takes seconds on a CPU device: four distributions are enough there, and two for
+        // the grouped passes (the plain passes check the rest at that count).
+        if (n < kMaxCount || (v == Variant::Radix || v == Variant::OneSweep) ||
+            (v == Variant::Bitonic && (d == Dist::Uniform || d == Dist::Reversed || d == Dist::Few || d == Dist::Dead12)) ||
+            (v == Variant::RadixGrouped && (d == Dist::Uniform || d == Dist::Dead12)))
           cases.push_back({v, n, d});
   // The small sort at its sizes, its largest, and the first count past it (the passes again).
   for (uint32_t n : {1u, 2u, 19u, 2001u, uint32_t(SORT_SMALL_MAX), uint32_t(SORT_SMALL_MAX) + 1})
@@ -280,15 +293,15 @@ struct LimitedSort {
 
 // A device-side count limit (the live prefix): the radix sorts' passes (portable and OneSweep) order only
 // the first min(count, limit) pairs, stably, and leave every pair past it untouched; odd and even pass counts
-// (16 and 12 bits: 3 passes through both scratch sets, 2 passes), limits inside a tile, on a tile edge, 0, 1 and
-// past count.
+// (16 and 12 bits: 3 passes through both scratch sets, 2 passes), limits inside a tile, on a tile edge, on the
+// grouped variant's group edge, 0, 1 and past count.
 class GpuSortPasses : public GpuSortTest, public ::testing::WithParamInterface<Variant> {};
 
 TEST_P(GpuSortPasses, SortOnlyUpToDeviceCountLimit) {
   const uint32_t n = 70001;
   const uint32_t tile = sorter(GetParam()).radixTile();
   for (uint32_t bits : {12u, 16u}) {
-    for (uint32_t limit : {0u, 1u, 777u, 2 * tile, 2 * tile + 1, 50000u, n, n + 5}) {
+    for (uint32_t limit : {0u, 1u, 777u, 2 * tile, 2 * tile + 1, kGroupedTiles * tile, 50000u, n, n + 5}) {
       const std::vector<uint32_t> keys = makeKeys(Dist::Dead12, n, limit + bits);
       LimitedSort in(ctx(), keys, limit);
       std::vector<uint32_t>& values = in.values;
@@ -374,7 +387,7 @@ TEST_P(GpuSortPasses, IgnoreTheLowBitsTheyAreTold) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Sort, GpuSortPasses, ::testing::Values(Variant::Radix, Variant::OneSweep),
+INSTANTIATE_TEST_SUITE_P(Sort, GpuSortPasses, ::testing::Values(Variant::Radix, Variant::OneSweep, Variant::RadixGrouped),
                          [](const auto& info) { return variantName(info.param); });
 
 // OneSweep runs its work groups together only where the device promises forward progress between them; on

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# For the next device session (about 2 minutes; a binary with `sortbench --steps`, 2026-12-05 or later): where does
+# For the next device session (about 3 minutes; a binary with `sortbench --steps` and `--radix-tiles`, 2026-12-05
+# or later). Part 1: where does
 # the radix sort of uniform keys fall off (README: 0.22 ms at 2^21 pairs, 2.82 ms at 8.4M, 13x for 4x), and which
 # dispatch takes the time? sortbench over counts from 1M to 8.4M, 23-bit keys (three passes, as the frame's
 # two-point keys), uniform and few-valued, with 64-, 128- and 256-invocation groups (8 keys each: tiles of 512,
@@ -16,6 +17,19 @@ for dist in uniform few; do
       || echo "sortbench $dist $group exit $?" >> $OUT/errors.txt
     appendRows /tmp/sb.csv $OUT/knee.csv dist,group $dist,$group
     appendRows /tmp/st.csv $OUT/steps.csv dist,group $dist,$group
+  done
+done
+# Part 2: several tiles a work group (--radix-tiles T: T consecutive tiles counted and scattered by one group, so
+# the count table has 1/T the columns, and the histogram and the scatter read and write it 1/T as often). Does it
+# take the scan and the table's scattered reads off the sort at the frame's sizes? If it pays there, it becomes
+# the default (the invariant tests then render with it).
+for dist in uniform few; do
+  for tiles in 1 2 4 8 16; do
+    timeout 60 $B sortbench --n 921600,2097152,8388608 --bits 23 --dist $dist --sort radix --radix-tiles $tiles \
+      --repeat 10 --csv /tmp/sb.csv --steps /tmp/st.csv > /dev/null 2>&1 \
+      || echo "sortbench tiles $dist $tiles exit $?" >> $OUT/errors.txt
+    appendRows /tmp/sb.csv $OUT/tiles.csv dist,tiles $dist,$tiles
+    appendRows /tmp/st.csv $OUT/tiles-steps.csv dist,tiles $dist,$tiles
   done
 done
 echo done
