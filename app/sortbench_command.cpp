@@ -126,6 +126,8 @@ BenchOptions parseOptions(const std::vector<std::string>& args) {
     }
   }
   if (o.counts.empty()) o.counts.push_back(1u << 21);
+  if (o.tuning.radixTilesPerGroup > 1 && (o.sorts.size() != 1 || o.sorts.front() != SortAlgorithm::Radix))
+    throw UsageError("--radix-tiles shapes the portable radix passes only: pass --sort radix");
   if (!o.steps.empty() && std::count(o.sorts.begin(), o.sorts.end(), SortAlgorithm::Bitonic))
     throw UsageError("--steps times the radix sorts' dispatches, not bitonic's: pass --sort radix or onesweep");
   return o;

@@ -27,6 +27,8 @@ check "must be one of" render --strategy fastest
 check "needs a value" render --frames
 check "unknown option" bench --frobnicate 1
 check "unknown flag" sortbench --frobnicate 1
+check "--sort radix" sortbench --radix-tiles 4 --sort onesweep
+check "not bitonic" sortbench --steps steps.csv
 check "did you mean --kinds?" tracebench --kind camera
 check "unknown kind 'camra'" tracebench --kinds camra
 check "unknown option '--bounces'" tracebench --bounces 3
