@@ -14,13 +14,12 @@ void SortSteps::addRun(const std::vector<StageTime>& scopes, const std::string& 
   if (!steps_.empty() && steps_.size() != count)
     throw std::logic_error("sortbench --steps: a run recorded " + std::to_string(count) + " steps, another " +
                            std::to_string(steps_.size()));
-  for (size_t i = 0; i < count; ++i) {
-    const StageTime& scope = scopes[i + 1];
-    if (steps_.size() <= i) steps_.push_back({scope.stage, {}});
-    if (steps_[i].name != scope.stage)
-      throw std::logic_error("sortbench --steps: step " + scope.stage + " where a run had " + steps_[i].name);
-    steps_[i].ms.push_back(scope.ms);
-  }
+  for (size_t i = 0; i < steps_.size(); ++i)  // checked whole before anything is kept
+    if (steps_[i].name != scopes[i + 1].stage)
+      throw std::logic_error("sortbench --steps: step " + scopes[i + 1].stage + " where a run had " + steps_[i].name);
+  if (steps_.empty())
+    for (size_t i = 0; i < count; ++i) steps_.push_back({scopes[i + 1].stage, {}});
+  for (size_t i = 0; i < count; ++i) steps_[i].ms.push_back(scopes[i + 1].ms);
 }
 
 SortSteps::Summary SortSteps::summarize(std::vector<double> ms) {
