@@ -1,5 +1,5 @@
 #version 460
-// Radix sort, step (a) of a pass: the digit histogram of one work group's tiles (pc.tilesPerGroup consecutive
+// Radix sort, step (a) of a pass: the digit histogram of one work group's tiles (TILES_PER_GROUP consecutive
 // ones, usually 1), written to the group's column of the digit-major count table (hist[digit * numGroups +
 // group]). Same group size, keys per invocation and tiles as the scatter; all of an invocation's keys of a tile
 // are loaded before any is counted, so the loads overlap.
@@ -14,6 +14,7 @@
 
 layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 layout(constant_id = RL_SPEC_KEYS_PER_THREAD) const uint KPT = 15;  // keys per invocation
+layout(constant_id = RL_SPEC_TILES_PER_GROUP) const uint TILES_PER_GROUP = 1;
 layout(push_constant, scalar) uniform Push { SortRadixPush pc; };
 
 shared uint sHist[SORT_RADIX];
@@ -26,7 +27,7 @@ void main() {
   // Tiles past a device-side count limit count nothing: their column of the table is zero.
   uint count = sortLimitedCount(pc.count, pc.hasCountLimit, pc.countLimit);
   barrier();  // histogram cleared
-  for (uint tile = group * pc.tilesPerGroup; tile < (group + 1) * pc.tilesPerGroup; ++tile) {
+  for (uint tile = group * TILES_PER_GROUP; tile < (group + 1) * TILES_PER_GROUP; ++tile) {
     uint begin = tile * gl_WorkGroupSize.x * KPT + t;
     if (tile * gl_WorkGroupSize.x * KPT >= count) break;  // uniform: the group's tiles past the count
     uint digits[KPT];

@@ -1,5 +1,5 @@
 #version 460
-// Radix sort, step (c) of a pass (reduce-then-scan): ranks the keys of each of its tiles (pc.tilesPerGroup
+// Radix sort, step (c) of a pass (reduce-then-scan): ranks the keys of each of its tiles (TILES_PER_GROUP
 // consecutive ones, in order) stably by digit and writes keys and values to their global places
 // (sort_radix_tile.glsl). Where a tile's run of a digit starts comes from the scanned count table (digits
 // before it, the scan of the digit totals, plus the same digit in earlier work groups) and the group's earlier
@@ -17,6 +17,7 @@ layout(local_size_x_id = RL_SPEC_GROUP_SIZE) in;
 // The device's subgroup size as the host sees it: sizes the per-subgroup histograms and the slices.
 layout(constant_id = RL_SPEC_SUBGROUP_SIZE) const uint SG_SIZE = 32;
 layout(constant_id = RL_SPEC_KEYS_PER_THREAD) const uint KPT = 15;  // keys per invocation
+layout(constant_id = RL_SPEC_TILES_PER_GROUP) const uint TILES_PER_GROUP = 1;
 layout(push_constant, scalar) uniform Push { SortRadixPush pc; };
 
 #include "sort_scan.glsl"
@@ -26,7 +27,7 @@ void main() {
   uint group = gl_WorkGroupID.x + pc.groupOffset;
   uint limit = sortLimitedCount(pc.count, pc.hasCountLimit, pc.countLimit);
   // Groups whose tiles are all past a device-side count limit have nothing to place (their column is zero).
-  if (group * pc.tilesPerGroup * TILE >= limit) return;
+  if (group * TILES_PER_GROUP * TILE >= limit) return;
   uint totalsBase = SORT_RADIX * pc.numGroups;
   uint totals[DIGITS_PER_THREAD];
   for (uint k = 0; k < DIGITS_PER_THREAD; ++k) totals[k] = pc.hist.v[totalsBase + firstOwnedDigit() + k];
@@ -36,7 +37,7 @@ void main() {
   // in earlier groups, and in this group's earlier tiles.
   uint next[DIGITS_PER_THREAD];
   for (uint k = 0; k < DIGITS_PER_THREAD; ++k) next[k] = starts[k] + pc.hist.v[(firstOwnedDigit() + k) * pc.numGroups + group];
-  for (uint tile = group * pc.tilesPerGroup; tile < (group + 1) * pc.tilesPerGroup; ++tile) {
+  for (uint tile = group * TILES_PER_GROUP; tile < (group + 1) * TILES_PER_GROUP; ++tile) {
     if (!tileRank(tile, limit)) break;  // uniform; tileRank ends with a barrier
     for (uint k = 0; k < DIGITS_PER_THREAD; ++k) {
       uint d = firstOwnedDigit() + k;
@@ -44,6 +45,8 @@ void main() {
       next[k] += tileDigitCount[k];
     }
     tileScatter();
-    barrier();  // the tile's shared memory read before the next tile's ranking clears it
+    // The tile's shared memory read before the next tile's ranking clears it; none after the group's last
+    // tile (the condition is the same for the whole group), so one tile a group runs as before.
+    if (tile + 1 < (group + 1) * TILES_PER_GROUP) barrier();
   }
 }

@@ -28,7 +28,8 @@ layout(buffer_reference, scalar) coherent volatile buffer SortStateBuf { uint v[
 #define SORT_BITONIC_GROUP 256
 
 // sort_radix_histogram and sort_radix_scatter (both tile the keys by their group size times keys per
-// invocation, specialization constants). `hist` holds SORT_RADIX * numGroups per-group digit counts,
+// invocation, specialization constants; a work group takes TILES_PER_GROUP consecutive tiles, in order,
+// GpuSorter::Tuning::radixTilesPerGroup, so a hist column counts all of a group's tiles). `hist` holds SORT_RADIX * numGroups per-group digit counts,
 // digit-major (hist[digit * numGroups + group]) so that one work group scans one digit's row, followed by
 // SORT_RADIX digit totals written by sort_radix_scan.
 struct SortRadixPush {
@@ -40,14 +41,10 @@ struct SortRadixPush {
   uint count;        // elements to sort
   uint shift;        // lowest key bit of this pass's digit
   uint keyBits;      // 1..32; keys >= 2^keyBits sort as 2^keyBits (after every real key)
-  uint numGroups;    // work groups of the whole sort (the width of a hist row): tiles / tilesPerGroup, rounded up
+  uint numGroups;    // work groups of the whole sort (the width of a hist row): tiles / TILES_PER_GROUP, rounded up
   uint groupOffset;  // first work group of this dispatch (dispatches are split at the device's group limit)
   uint hasCountLimit;  // 1: sort only min(count, countLimit.v[0]) pairs (GpuSorter::record's countLimit)
   SORT_REF(SortUintBuf) countLimit;
-  // Consecutive tiles one work group counts and scatters, in order (GpuSorter::Tuning::radixTilesPerGroup):
-  // numGroups is then the number of such groups, and a hist column counts all of a group's tiles.
-  uint tilesPerGroup;
-  uint pad0;
 };
 
 // sort_radix_scan: each work group scans `rowsPerGroup` digits' rows of `hist` in place (1 on GPUs; more on

@@ -17,5 +17,6 @@
 #define RL_SPEC_COUNTS_STEPS 9        // bool: the traversal counts its loop iterations (HitRecord::steps)
 #define RL_SPEC_BVH_LAYOUT 10         // RL_BVH_*, or RL_BVH_FROM_SCENE: the tree traceSceneBvh walks
 #define RL_SPEC_HIT_QUERIES 11        // RL_HIT_QUERY_* bits: the traversals hit_query.comp runs
+#define RL_SPEC_TILES_PER_GROUP 12    // the portable radix passes' consecutive tiles a work group
 
 #endif

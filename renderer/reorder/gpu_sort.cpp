@@ -86,9 +86,12 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
       oneSweepState_ = GpuBuffer(
           ctx, (VkDeviceSize(SORT_ONESWEEP_STATUS) + VkDeviceSize(SORT_ONESWEEP_MAX_PASSES) * maxGroups * SORT_RADIX) * 4);
     } else {
-      histogram_ = ComputePipeline(ctx, "sort_radix_histogram", sizeof(gpu::SortRadixPush), group, {{RL_SPEC_KEYS_PER_THREAD, kpt}});
+      histogram_ = ComputePipeline(ctx, "sort_radix_histogram", sizeof(gpu::SortRadixPush), group,
+                                   {{RL_SPEC_KEYS_PER_THREAD, kpt}, {RL_SPEC_TILES_PER_GROUP, tilesPerGroup_}});
       scan_ = ComputePipeline(ctx, "sort_radix_scan", sizeof(gpu::SortScanPush), std::max(kScanGroup, subgroup));
-      scatter_ = ComputePipeline(ctx, "sort_radix_scatter", sizeof(gpu::SortRadixPush), group, {{RL_SPEC_SUBGROUP_SIZE, subgroup}, {RL_SPEC_KEYS_PER_THREAD, kpt}});
+      scatter_ = ComputePipeline(ctx, "sort_radix_scatter", sizeof(gpu::SortRadixPush), group,
+                                 {{RL_SPEC_SUBGROUP_SIZE, subgroup}, {RL_SPEC_KEYS_PER_THREAD, kpt},
+                                  {RL_SPEC_TILES_PER_GROUP, tilesPerGroup_}});
       hist_ = GpuBuffer(ctx, (VkDeviceSize(SORT_RADIX) * maxGroups + SORT_RADIX) * 4);
     }
     copy_ = ComputePipeline(ctx, "sort_copy", sizeof(gpu::SortCopyPush), kCopyGroup);
@@ -176,7 +179,6 @@ void GpuSorter::recordRadix(VkCommandBuffer cmd, VkDeviceAddress keys, VkDeviceA
     push.numGroups = numGroups;
     push.hasCountLimit = countLimit != 0 ? 1 : 0;
     push.countLimit = countLimit;
-    push.tilesPerGroup = tilesPerGroup_;
     const int p = static_cast<int>(pass);
     step(cmd, "histogram", p, [&] { dispatchSplit(histogram_, cmd, push, numGroups, maxGroups); });
     computeBarrier(cmd);

@@ -46,7 +46,8 @@ class VulkanContext;
 
 class GpuSorter {
  public:
-  // Radix scatter shape; 0 picks the device default. For tuning runs (sortbench --radix-group/--radix-kpt).
+  // Radix scatter shape; 0 picks the device default. For tuning runs (sortbench --radix-group/--radix-kpt/
+  // --radix-tiles).
   struct Tuning {
     uint32_t radixGroupSize = 0;      // power of two, 16..256, a multiple of the subgroup size
     uint32_t radixKeysPerThread = 0;  // 1..32

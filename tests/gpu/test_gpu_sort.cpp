@@ -18,7 +18,7 @@
 namespace raylab {
 namespace {
 
-static_assert(sizeof(gpu::SortRadixPush) == 80);
+static_assert(sizeof(gpu::SortRadixPush) == 72);
 static_assert(sizeof(gpu::SortScanPush) == 16);
 static_assert(sizeof(gpu::SortBitonicPush) == 56);
 static_assert(sizeof(gpu::SortCopyPush) == 48);
