@@ -1,8 +1,9 @@
 #include "app/sortbench_steps.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
+
+#include "app/bench/bench_spread.h"
 
 namespace raylab {
 
@@ -22,16 +23,10 @@ void SortSteps::addRun(const std::vector<StageTime>& scopes, const std::string& 
   for (size_t i = 0; i < count; ++i) steps_[i].ms.push_back(scopes[i + 1].ms);
 }
 
-SortSteps::Summary SortSteps::summarize(std::vector<double> ms) {
-  std::sort(ms.begin(), ms.end());
-  const size_t n = ms.size();
-  return {n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]), ms.front(), ms.back()};
-}
-
 std::string SortSteps::table(double sortMedianMs) const {
   std::string out;
   for (const Step& s : steps_) {
-    const Summary m = summarize(s.ms);
+    const Spread m = spreadOf(s.ms);
     char line[160];
     std::snprintf(line, sizeof(line), "    %-20s %11.4f ms  %5.1f%%\n", s.name.c_str(), m.median,
                   sortMedianMs > 0 ? 100.0 * m.median / sortMedianMs : 0.0);
@@ -43,7 +38,7 @@ std::string SortSteps::table(double sortMedianMs) const {
 std::string SortSteps::csv(const std::string& sort, uint32_t n, double sortMedianMs, const std::string& extra) const {
   std::string out;
   for (const Step& s : steps_) {
-    const Summary m = summarize(s.ms);
+    const Spread m = spreadOf(s.ms);
     char line[256];
     std::snprintf(line, sizeof(line), "%s,%u,%s,%.6f,%.6f,%.6f,%.4f", sort.c_str(), n, s.name.c_str(), m.median,
                   m.min, m.max, sortMedianMs > 0 ? m.median / sortMedianMs : 0.0);

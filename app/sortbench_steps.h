@@ -26,10 +26,6 @@ class SortSteps {
     std::string name;
     std::vector<double> ms;
   };
-  struct Summary {
-    double median, min, max;
-  };
-  static Summary summarize(std::vector<double> ms);
   std::vector<Step> steps_;  // in the order a sort records them
 };
 
