@@ -262,7 +262,11 @@ TEST_F(EmbreeHits, SponzaRaysAgreeWithEmbree) {
 // The CPU twin of the pair-node traversal (traversePairsCpu, which `raylab tracebench --fetches` walks to count
 // what a warp reads) against the shader itself, ray by ray on both binary trees: the same steps, the same hit
 // distance, the same shadow answer after the same steps. A ray whose box tests round differently on the two sides
-// could differ; none does on these scenes (lavapipe, Debian 12), and a few in a thousand are allowed.
+// could differ; none does on these scenes (lavapipe, Debian 12), and a few in a thousand are allowed. A GPU's
+// compiler contracts multiplies and adds into fused ones where lavapipe and the CPU round each (NVIDIA's does, even
+// under `precise` on the slabs), so there a ray near a box's or a triangle's edge can take other steps: on an H100
+// 0.2-5.6% of these rays did, the steps in all 0.2-0.5% apart (docs/results/sortbench-back-to-back). There the
+// bounds are 10% of the rays and 1% of the steps, which still fail a twin that walks the tree another way.
 TEST_F(EmbreeHits, PairTraversalTwinTakesTheShadersSteps) {
   for (const Scene& scene : {makeTemple(), loadSceneByName("temple-detail:200000")}) {
     const GpuSceneData data(ctx(), scene, Settings{}.wideCollapse, 0, 0.0f, true);
@@ -290,9 +294,10 @@ TEST_F(EmbreeHits, PairTraversalTwinTakesTheShadersSteps) {
         hits += c.t > 0.0f;
         gpuSteps += closest[i].steps, cpuSteps += c.steps;
       }
-      EXPECT_LE(differ, rays.size() / 500) << "of " << rays.size();
+      const bool roundsAsTheCpu = ctx().info().isCpu;
+      EXPECT_LE(differ, rays.size() / (roundsAsTheCpu ? 500 : 10)) << "of " << rays.size();
       EXPECT_GT(hits, rays.size() / 3) << "too few hits: the test proves little";
-      EXPECT_NEAR(double(cpuSteps) / double(gpuSteps), 1.0, 1e-3);
+      EXPECT_NEAR(double(cpuSteps) / double(gpuSteps), 1.0, roundsAsTheCpu ? 1e-3 : 1e-2);
     }
   }
   EXPECT_THROW(GpuSceneData(ctx(), makeTemple(), Settings{}.wideCollapse).hostTree(BvhLayout::Sbvh), std::logic_error);
