@@ -1,6 +1,7 @@
 #include "app/sortbench_command.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -28,17 +29,21 @@ namespace raylab {
 namespace {
 
 constexpr uint32_t kMaxN = 1u << 27;
-constexpr int kWarmups = 2;
+constexpr int kWarmups = 2;  // at least this many warm-up sorts, and at least kWarmUp of them
+constexpr std::chrono::milliseconds kWarmUp{500};
+constexpr uint32_t kRunsPerSubmission = 64;  // sorts recorded back to back in one command buffer
+constexpr uint32_t kMaxScopesPerRun = 32;    // the sort and its dispatches (at most 4 passes of 3, small, copy)
 
-const char* kUsage =
-    "usage: raylab sortbench [options]\n"
+const std::string kUsage =
+    std::string("usage: raylab sortbench [options]\n"
     "  --n N[,N...]        pair counts (1 .. 2^27; default 2^21)\n"
     "  --n-range A:B       powers of two 2^A .. 2^B\n"
     "  --bits B            key bits, 1..32 (default 30; keys are uniform below 2^B unless --dist says otherwise)\n"
     "  --dist D            uniform|sorted|reversed|equal|few (default uniform)\n"
     "  --sort S            bitonic|radix|both|onesweep|all (default both; onesweep: the decoupled look-back\n"
     "                      radix variant, only on GPUs with forward progress; all: the three)\n"
-    "  --repeat R          timed runs per (sort, n), after 2 warm-up runs (default 10)\n"
+    "  --repeat R          timed sorts per (sort, n), back to back (64 a submission) after at least half a\n"
+    "                      second of warm-up sorts (default 10)\n"
     "  --device NAME|N     substring of the Vulkan device name, or its number in `raylab devices`\n"
     "  --validate[=sync|gpu-av]  enable the Khronos validation layer with synchronization (default)\n"
     "                      or GPU-assisted checks (exit 1 on any error)\n"
@@ -47,7 +52,8 @@ const char* kUsage =
     "                      pass; OneSweep's; the small sort; the copy): medians under each row, and as CSV\n"
     "  --radix-group G     radix scatter work-group size (tuning; default: device's)\n"
     "  --radix-kpt K       radix keys per invocation (tuning; default 8)\n"
-    "  --radix-tiles T     consecutive tiles a radix work group counts and scatters, 1..64 (tuning; default 1)\n";
+    "  --radix-tiles T     consecutive tiles a radix work group counts and scatters, 1..64 (tuning; default ") +
+    std::to_string(kDefaultRadixTilesPerGroup) + ")\n";
 
 // --help: not an error, but it ends the parse the same way.
 struct HelpRequested {};
@@ -126,7 +132,8 @@ BenchOptions parseOptions(const std::vector<std::string>& args) {
     }
   }
   if (o.counts.empty()) o.counts.push_back(1u << 21);
-  if (o.tuning.radixTilesPerGroup > 1 && (o.sorts.size() != 1 || o.sorts.front() != SortAlgorithm::Radix))
+  if (o.tuning.radixTilesPerGroup != kDefaultRadixTilesPerGroup &&
+      (o.sorts.size() != 1 || o.sorts.front() != SortAlgorithm::Radix))
     throw UsageError("--radix-tiles shapes the portable radix passes only: pass --sort radix");
   if (!o.steps.empty() && std::count(o.sorts.begin(), o.sorts.end(), SortAlgorithm::Bitonic))
     throw UsageError("--steps times the radix sorts' dispatches, not bitonic's: pass --sort radix or onesweep");
@@ -184,20 +191,37 @@ struct Row {
   bool ok = true;
 };
 
-// Times one sort of a fresh copy of the input with the renderer's named timer scopes; the copy is outside
-// the scope. Returns the scopes in the order they began: the sort's, then its steps' (with --steps).
-std::vector<StageTime> timeOnce(const VulkanContext& ctx, GpuTimer& timer, GpuSorter& sorter, const GpuBuffer& srcKeys,
-                const GpuBuffer& srcValues, const GpuBuffer& keys, const GpuBuffer& values, uint32_t n, uint32_t bits) {
+// Sorts of fresh copies of the input, back to back in one submission (the copy of each outside its scopes), so
+// that the GPU never idles between the timed sorts: one sort a submission, with the host's checks between them,
+// let an H100 lower its clocks and made every dispatch of a sort of 5-8M pairs 4-5x slower than the same sort
+// timed back to back (docs/results/sortbench-back-to-back). Returns each run's scopes in the order they began:
+// the sort's, then its steps' (with --steps).
+std::vector<std::vector<StageTime>> sortBackToBack(const VulkanContext& ctx, GpuTimer& timer, GpuSorter& sorter,
+                                                   const GpuBuffer& srcKeys, const GpuBuffer& srcValues,
+                                                   const GpuBuffer& keys, const GpuBuffer& values, uint32_t n,
+                                                   uint32_t bits, uint32_t runs) {
   ctx.submitAndWait([&](VkCommandBuffer cmd) {
     timer.reset(cmd);
-    VkBufferCopy region{0, 0, VkDeviceSize(n) * 4};
-    vkCmdCopyBuffer(cmd, srcKeys.handle(), keys.handle(), 1, &region);
-    vkCmdCopyBuffer(cmd, srcValues.handle(), values.handle(), 1, &region);
-    computeBarrier(cmd);
-    ScopedStage scope(&timer, cmd, "sort");
-    sorter.record(cmd, keys.address(), values.address(), n, bits);
+    const VkBufferCopy region{0, 0, VkDeviceSize(n) * 4};
+    for (uint32_t run = 0; run < runs; ++run) {
+      vkCmdCopyBuffer(cmd, srcKeys.handle(), keys.handle(), 1, &region);
+      vkCmdCopyBuffer(cmd, srcValues.handle(), values.handle(), 1, &region);
+      computeBarrier(cmd);
+      {
+        ScopedStage scope(&timer, cmd, "sort");
+        sorter.record(cmd, keys.address(), values.address(), n, bits);
+      }
+      computeBarrier(cmd);  // the sort done before the next run's copy overwrites its pairs
+    }
   });
-  return timer.collect();
+  std::vector<std::vector<StageTime>> perRun;
+  for (StageTime& t : timer.collect()) {
+    if (t.stage == "sort") perRun.emplace_back();
+    if (perRun.empty()) throw std::logic_error("sortbench: a step scope before the first sort's");
+    perRun.back().push_back(std::move(t));
+  }
+  if (perRun.size() != runs) throw std::logic_error("sortbench: " + std::to_string(perRun.size()) + " sorts timed of " + std::to_string(runs));
+  return perRun;
 }
 
 // One row: the table's line on the terminal, or a CSV line (with `extra` columns) for --csv.
@@ -222,15 +246,16 @@ int runBench(const BenchOptions& o) {
   const DeviceInfo& dev = ctx.info();
   if (!deviceTimesCompute(ctx, "raylab sortbench")) return kExitFailure;
   const uint32_t maxN = *std::max_element(o.counts.begin(), o.counts.end());
-  std::printf("sortbench: device %s (driver %s), subgroup %u, %u-bit keys, %s, %u runs (+%d warm-up)\n",
-              dev.name.c_str(), dev.driver.c_str(), dev.subgroupSize, o.bits, o.dist.c_str(), o.repeat, kWarmups);
+  std::printf("sortbench: device %s (driver %s), subgroup %u, %u-bit keys, %s, %u sorts back to back (after >= %d "
+              "warm-up sorts and %lld ms)\n", dev.name.c_str(), dev.driver.c_str(), dev.subgroupSize, o.bits,
+              o.dist.c_str(), o.repeat, kWarmups, static_cast<long long>(kWarmUp.count()));
   std::printf("%-8s %10s %11s %11s %11s %12s  %s\n", "sort", "n", "median_ms", "min_ms", "max_ms", "Mpairs/s",
               "check");
   std::fflush(stdout);
 
   std::vector<Row> rows;
   bool allOk = true;
-  GpuTimer timer(ctx, 64);  // the sort and, with --steps, each of its dispatches
+  GpuTimer timer(ctx, kRunsPerSubmission * kMaxScopesPerRun);  // each sort and, with --steps, its dispatches
   // The columns every CSV line ends with (both files).
   const std::string csvExtra = "," + std::to_string(o.bits) + "," + o.dist + "," + std::to_string(o.repeat) + "," +
                                  csvText(dev.name) + "," + csvText(dev.driver);
@@ -252,20 +277,27 @@ int runBench(const BenchOptions& o) {
       Row row{toString(sort), n};
       std::vector<double> ms;
       SortSteps steps;
-      for (uint32_t run = 0; run < o.repeat + kWarmups; ++run) {
-        const std::vector<StageTime> scopes = timeOnce(ctx, timer, sorter, srcKeys, srcValues, keys, values, n, o.bits);
-        const double t = scopes.empty() ? 0.0 : scopes.front().ms;
-        if (run == 0) {  // check the first result: every later run sorts the same input the same way
-          const std::string err = checkResult(sort, hostKeys, o.bits, keys.downloadVector<uint32_t>(n),
-                                              values.downloadVector<uint32_t>(n));
-          if (!err.empty()) {
-            std::fprintf(stderr, "raylab sortbench: %s n=%u: %s\n", row.sort.c_str(), n, err.c_str());
-            row.ok = allOk = false;
-          }
+      auto sortRuns = [&](uint32_t runs) {
+        return sortBackToBack(ctx, timer, sorter, srcKeys, srcValues, keys, values, n, o.bits, runs);
+      };
+      sortRuns(1);  // checked: every later run sorts the same input the same way
+      const std::string err =
+          checkResult(sort, hostKeys, o.bits, keys.downloadVector<uint32_t>(n), values.downloadVector<uint32_t>(n));
+      if (!err.empty()) {
+        std::fprintf(stderr, "raylab sortbench: %s n=%u: %s\n", row.sort.c_str(), n, err.c_str());
+        row.ok = allOk = false;
+      }
+      // Warm-up after the host's check (the GPU idled through it): at least kWarmUp of sorts, as the frame bench
+      // warms up (bench_measure.cpp), then the timed sorts right after, kRunsPerSubmission a submission.
+      const auto warmStart = std::chrono::steady_clock::now();
+      for (uint32_t warm = 0; warm < uint32_t(kWarmups) || std::chrono::steady_clock::now() - warmStart < kWarmUp;)
+        warm += static_cast<uint32_t>(sortRuns(std::min(kRunsPerSubmission, o.repeat + kWarmups)).size());
+      for (uint32_t done = 0; done < o.repeat;) {
+        for (const std::vector<StageTime>& scopes : sortRuns(std::min(kRunsPerSubmission, o.repeat - done))) {
+          ms.push_back(scopes.front().ms);
+          if (!o.steps.empty()) steps.addRun(scopes, "sort");
+          ++done;
         }
-        if (run < uint32_t(kWarmups)) continue;
-        ms.push_back(t);
-        if (!o.steps.empty() && !scopes.empty()) steps.addRun(scopes, "sort");
       }
       std::sort(ms.begin(), ms.end());
       row.minMs = ms.front();
@@ -301,7 +333,7 @@ int runSortBenchCommand(const std::vector<std::string>& args) {
   try {
     options = parseOptions(args);
   } catch (const HelpRequested&) {
-    std::fputs(kUsage, stdout);
+    std::fputs(kUsage.c_str(), stdout);
     return kExitOk;
   } catch (const UsageError& e) {
     printUsageError("raylab sortbench", e.what());

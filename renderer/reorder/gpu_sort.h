@@ -41,6 +41,9 @@
 
 namespace raylab {
 
+// The default of GpuSorter::Tuning::radixTilesPerGroup (its comment says why 2).
+inline constexpr uint32_t kDefaultRadixTilesPerGroup = 2;
+
 class StageTimer;
 class VulkanContext;
 
@@ -52,8 +55,10 @@ class GpuSorter {
     uint32_t radixGroupSize = 0;      // power of two, 16..256, a multiple of the subgroup size
     uint32_t radixKeysPerThread = 0;  // 1..32
     // Consecutive tiles one work group of the portable radix passes counts and scatters (1..64): fewer
-    // columns in the count table and fewer scattered reads and writes of it, fewer groups in flight.
-    uint32_t radixTilesPerGroup = 1;
+    // columns in the count table and fewer scattered reads and writes of it, fewer groups in flight. 2: on an
+    // H100 the frame's three sorts took 4-12% less than with 1 (Sponza at 720p 1% more) and sortbench's
+    // 2-10% less from 0.9M to 8.4M pairs; 4 lost at 0.9M (docs/results/sortbench-back-to-back).
+    uint32_t radixTilesPerGroup = kDefaultRadixTilesPerGroup;
     // Radix counts up to this many pairs take the single-dispatch small sort; 0: never (the passes always run).
     uint32_t smallSortMax = SORT_SMALL_MAX;
   };

@@ -85,10 +85,11 @@ std::vector<uint32_t> stableOrder(const std::vector<uint32_t>& keys, uint32_t ke
 
 // What is sorted with: the portable radix sort's passes, the OneSweep radix variant, the bitonic sort, the
 // radix sorter as the lab makes it (the small sort up to SORT_SMALL_MAX pairs, its passes above), and the
-// portable passes with three tiles a work group (Tuning::radixTilesPerGroup: a group's later tiles start where
-// its earlier ones left each digit).
-enum class Variant { Radix, OneSweep, Bitonic, Small, RadixGrouped };
-constexpr uint32_t kGroupedTiles = 3;
+// portable passes with one tile a work group. The default groups kDefaultRadixTilesPerGroup (2) tiles
+// (Tuning::radixTilesPerGroup: a group's later tiles start where its earlier ones left each digit), so Radix
+// checks that; RadixOneTile the loops of one iteration, with no barrier after a group's tile.
+enum class Variant { Radix, OneSweep, Bitonic, Small, RadixOneTile };
+static_assert(kDefaultRadixTilesPerGroup > 1, "RadixOneTile stands for the shape the default does not take");
 
 SortAlgorithm algorithmOf(Variant v) {
   return v == Variant::Bitonic ? SortAlgorithm::Bitonic : v == Variant::OneSweep ? SortAlgorithm::OneSweep : SortAlgorithm::Radix;
@@ -100,7 +101,7 @@ std::string variantName(Variant v) {
     case Variant::OneSweep: return "onesweep";
     case Variant::Bitonic: return "bitonic";
     case Variant::Small: return "small";
-    case Variant::RadixGrouped: return "radix_grouped";
+    case Variant::RadixOneTile: return "radix_one_tile";
   }
   return "?";
 }
@@ -116,7 +117,7 @@ class GpuSortTest : public test::GpuTest {
       // (OneSweep's look-back needs forward progress between work groups; where the device does not promise
       // it, lavapipe, the sorter runs one work group per dispatch, so the same shaders are checked.)
       if (variant != Variant::Small) tuning.smallSortMax = 0;
-      if (variant == Variant::RadixGrouped) tuning.radixTilesPerGroup = kGroupedTiles;
+      if (variant == Variant::RadixOneTile) tuning.radixTilesPerGroup = 1;
       slot = std::make_unique<GpuSorter>(ctx(), algorithmOf(variant), kMaxCount, tuning);
       EXPECT_EQ(slot->usesOneSweep(), variant == Variant::OneSweep);
     }
@@ -177,14 +178,14 @@ std::vector<SortCase> allCases() {
   const Dist dists[] = {Dist::Uniform, Dist::Sorted, Dist::Reversed, Dist::Equal,
                         Dist::Few,     Dist::Full32, Dist::Dead12};
   std::vector<SortCase> cases;
-  for (Variant v : {Variant::Radix, Variant::OneSweep, Variant::Bitonic, Variant::RadixGrouped})
+  for (Variant v : {Variant::Radix, Variant::OneSweep, Variant::Bitonic, Variant::RadixOneTile})
     for (uint32_t n : counts)
       for (Dist d : dists)
         // Bitonic at 2^20+3 takes seconds on a CPU device: four distributions are enough there, and two for
-        // the grouped passes (the plain passes check the rest at that count).
+        // the one-tile passes (the default passes check the rest at that count).
         if (n < kMaxCount || (v == Variant::Radix || v == Variant::OneSweep) ||
             (v == Variant::Bitonic && (d == Dist::Uniform || d == Dist::Reversed || d == Dist::Few || d == Dist::Dead12)) ||
-            (v == Variant::RadixGrouped && (d == Dist::Uniform || d == Dist::Dead12)))
+            (v == Variant::RadixOneTile && (d == Dist::Uniform || d == Dist::Dead12)))
           cases.push_back({v, n, d});
   // The small sort at its sizes, its largest, and the first count past it (the passes again).
   for (uint32_t n : {1u, 2u, 19u, 2001u, uint32_t(SORT_SMALL_MAX), uint32_t(SORT_SMALL_MAX) + 1})
@@ -294,14 +295,14 @@ struct LimitedSort {
 // A device-side count limit (the live prefix): the radix sorts' passes (portable and OneSweep) order only
 // the first min(count, limit) pairs, stably, and leave every pair past it untouched; odd and even pass counts
 // (16 and 12 bits: 3 passes through both scratch sets, 2 passes), limits inside a tile, on a tile edge, on the
-// grouped variant's group edge, 0, 1 and past count.
+// default's group edges (2 and 4 tiles), 0, 1 and past count.
 class GpuSortPasses : public GpuSortTest, public ::testing::WithParamInterface<Variant> {};
 
 TEST_P(GpuSortPasses, SortOnlyUpToDeviceCountLimit) {
   const uint32_t n = 70001;
   const uint32_t tile = sorter(GetParam()).radixTile();
   for (uint32_t bits : {12u, 16u}) {
-    for (uint32_t limit : {0u, 1u, 777u, 2 * tile, 2 * tile + 1, kGroupedTiles * tile, 50000u, n, n + 5}) {
+    for (uint32_t limit : {0u, 1u, 777u, 2 * tile, 2 * tile + 1, 3 * tile, 4 * tile, 50000u, n, n + 5}) {
       const std::vector<uint32_t> keys = makeKeys(Dist::Dead12, n, limit + bits);
       LimitedSort in(ctx(), keys, limit);
       std::vector<uint32_t>& values = in.values;
@@ -387,7 +388,7 @@ TEST_P(GpuSortPasses, IgnoreTheLowBitsTheyAreTold) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Sort, GpuSortPasses, ::testing::Values(Variant::Radix, Variant::OneSweep, Variant::RadixGrouped),
+INSTANTIATE_TEST_SUITE_P(Sort, GpuSortPasses, ::testing::Values(Variant::Radix, Variant::OneSweep, Variant::RadixOneTile),
                          [](const auto& info) { return variantName(info.param); });
 
 // OneSweep runs its work groups together only where the device promises forward progress between them; on
