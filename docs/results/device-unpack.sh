@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Sourced at the start of a device call by the results scripts (h200-sbvh/run*.sh and later): unpacks what
-# travels packed (h200-true-figures/run.sh says how it is made): .dev/bins.tar.xz (build-device/raylab and any
+# travels packed (.ci/device-pack makes it: bash .ci/device-build; bash .ci/device-pack [NAME=BINARY...]): .dev/bins.tar.xz (build-device/raylab and any
 # other binaries, its tinygltf and TBB, Sponza, the Debian packages raylab needs there) and the Embree library,
 # then copies the libraries beside every other raylab packed under .dev/*/ (the binaries compared with it).
 tar -xJf .dev/bins.tar.xz
