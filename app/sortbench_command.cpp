@@ -53,7 +53,10 @@ const std::string kUsage =
     "  --radix-group G     radix scatter work-group size (tuning; default: device's)\n"
     "  --radix-kpt K       radix keys per invocation (tuning; default 8)\n"
     "  --radix-tiles T     consecutive tiles a radix work group counts and scatters, 1..64 (tuning; default ") +
-    std::to_string(kDefaultRadixTilesPerGroup) + ")\n";
+    std::to_string(kDefaultRadixTilesPerGroup) + ")\n"
+    "  --radix-rank R      ballot|partition: how the radix scatter finds a subgroup's lanes holding a digit, a\n"
+    "                      ballot per digit bit (default) or one subgroupPartitionNV (devices with\n"
+    "                      VK_NV_shader_subgroup_partitioned)\n";
 
 // --help: not an error, but it ends the parse the same way.
 struct HelpRequested {};
@@ -127,14 +130,20 @@ BenchOptions parseOptions(const std::vector<std::string>& args) {
       o.tuning.radixKeysPerThread = parseUint(flag, value, 1, 32);
     } else if (flag == "--radix-tiles") {
       o.tuning.radixTilesPerGroup = parseUint(flag, value, 1, 64);
+    } else if (flag == "--radix-rank") {
+      if (value != "ballot" && value != "partition")
+        throw UsageError("--radix-rank '" + value + "' is not ballot or partition");
+      o.tuning.radixRankPartitioned = value == "partition";
     } else {
       throw UsageError("unknown flag '" + flag + "'");
     }
   }
   if (o.counts.empty()) o.counts.push_back(1u << 21);
-  if (o.tuning.radixTilesPerGroup != kDefaultRadixTilesPerGroup &&
-      (o.sorts.size() != 1 || o.sorts.front() != SortAlgorithm::Radix))
+  const bool radixOnly = o.sorts.size() == 1 && o.sorts.front() == SortAlgorithm::Radix;
+  if (o.tuning.radixTilesPerGroup != kDefaultRadixTilesPerGroup && !radixOnly)
     throw UsageError("--radix-tiles shapes the portable radix passes only: pass --sort radix");
+  if (o.tuning.radixRankPartitioned && !radixOnly)
+    throw UsageError("--radix-rank partition ranks in the portable radix passes only: pass --sort radix");
   if (!o.steps.empty() && std::count(o.sorts.begin(), o.sorts.end(), SortAlgorithm::Bitonic))
     throw UsageError("--steps times the radix sorts' dispatches, not bitonic's: pass --sort radix or onesweep");
   return o;

@@ -3,7 +3,8 @@
 // places once the caller has said where each digit's run of this tile starts (sGlobalShift).
 //
 // Ranking is a warp-level multisplit: each subgroup walks its contiguous slice of the tile in order, finds the
-// lanes holding the same digit with one ballot per digit bit, and keeps a running count per (subgroup, digit)
+// lanes holding the same digit with one ballot per digit bit (or one subgroupPartitionNV where the includer
+// defines RL_RANK_PARTITIONED), and keeps a running count per (subgroup, digit)
 // in shared memory. A column scan over subgroups and a scan over digits give each key its place in the tile
 // sorted by digit; the tile is reordered in shared memory first so that the global writes of each digit's run
 // are contiguous (coalesced). Values are loaded only after ranking, which keeps register pressure down.
@@ -55,12 +56,18 @@ bool tileRank(uint tile, uint limit) {
   for (uint k = 0; k < KPT; ++k) {
     bool valid = slotValid(k);
     uint d = valid ? digitOf(tileKeys[k]) : 0u;
+#ifdef RL_RANK_PARTITIONED
+    // The lanes holding the same digit, in one instruction; invalid lanes are a class of their own (SORT_RADIX is
+    // no digit), as the ballots below leave them out of every valid lane's peers.
+    uvec4 peers = subgroupPartitionNV(valid ? d : uint(SORT_RADIX));
+#else
     uvec4 peers = subgroupBallot(valid);
     for (uint b = 0; b < SORT_RADIX_BITS; ++b) {
       bool bit = ((d >> b) & 1u) != 0u;
       uvec4 votes = subgroupBallot(bit);
       peers &= bit ? votes : ~votes;
     }
+#endif
     uint below = subgroupBallotExclusiveBitCount(peers);
     uint before = valid ? sMem[histBase + d] : 0u;
     // Every peer reads the running count before the lowest peer advances it.

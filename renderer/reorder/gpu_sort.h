@@ -59,6 +59,10 @@ class GpuSorter {
     // H100 the frame's three sorts took 4-12% less than with 1 (Sponza at 720p 1% more) and sortbench's
     // 2-10% less from 0.9M to 8.4M pairs; 4 lost at 0.9M (docs/results/sortbench-back-to-back).
     uint32_t radixTilesPerGroup = kDefaultRadixTilesPerGroup;
+    // The portable radix scatter ranks a tile's keys with subgroupPartitionNV (one instruction finds the lanes
+    // holding a digit) instead of a ballot per digit bit. Needs DeviceInfo::subgroupPartitioned (NVIDIA; not
+    // lavapipe); the constructor refuses it elsewhere. Not timed yet: sortbench --radix-rank partition.
+    bool radixRankPartitioned = false;
     // Radix counts up to this many pairs take the single-dispatch small sort; 0: never (the passes always run).
     uint32_t smallSortMax = SORT_SMALL_MAX;
   };

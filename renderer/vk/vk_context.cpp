@@ -139,6 +139,8 @@ void VulkanContext::pickPhysicalDevice(const ContextOptions& options) {
   setDispatchRowGroups(0);
   info_.maxMemoryAllocationSize = maintenance3.maxMemoryAllocationSize;
   info_.isCpu = props.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  info_.subgroupPartitioned = (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_PARTITIONED_BIT_NV) &&
+                              missingDeviceExtensions(physical_, {VK_NV_SHADER_SUBGROUP_PARTITIONED_EXTENSION_NAME}).empty();
   char hex[2 * VK_UUID_SIZE + 1] = {};
   for (uint32_t i = 0; i < VK_UUID_SIZE; ++i) std::snprintf(hex + 2 * i, 3, "%02x", id.deviceUUID[i]);
   info_.uuid = hex;
@@ -168,6 +170,7 @@ void VulkanContext::createDevice(const ContextOptions& options) {
   RayTracingSupport rayTracing(physical_, info_);
   std::vector<const char*> extensions = options.deviceExtensions;
   extensions.insert(extensions.end(), rayTracing.extensions().begin(), rayTracing.extensions().end());
+  if (info_.subgroupPartitioned) extensions.push_back(VK_NV_SHADER_SUBGROUP_PARTITIONED_EXTENSION_NAME);
 
   VkPhysicalDeviceVulkan12Features want12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   want12.bufferDeviceAddress = VK_TRUE;

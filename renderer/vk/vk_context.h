@@ -44,6 +44,9 @@ struct DeviceInfo {
   uint32_t dispatchRowGroups = 0;
   uint64_t maxMemoryAllocationSize = 0;  // VkPhysicalDeviceMaintenance3Properties (0: not known)
   bool isCpu = false;
+  // VK_NV_shader_subgroup_partitioned, enabled where the device has it (NVIDIA): subgroupPartitionNV, the
+  // radix scatter's one-instruction ranking (GpuSorter::Tuning::radixRankPartitioned).
+  bool subgroupPartitioned = false;
   // VK_KHR_pipeline_executable_properties enabled for RAYLAB_SHADER_STATS (pipeline_statistics.h).
   bool shaderStatistics = false;
 

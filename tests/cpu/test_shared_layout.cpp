@@ -75,6 +75,7 @@ TEST(SharedLayout, PushConstantBlocksMatchTheHostStructs) {
       {"key_learn", sizeof(KeyLearnPush)},       {"key_merge", sizeof(KeyLearnPush)},
       {"heatmap_gather", sizeof(HeatmapPush)},   {"heatmap_colorize", sizeof(HeatmapPush)},
       {"sort_radix_histogram", sizeof(SortRadixPush)}, {"sort_radix_scatter", sizeof(SortRadixPush)},
+      {"sort_radix_scatter_partitioned", sizeof(SortRadixPush)},
       {"sort_radix_scan", sizeof(SortScanPush)}, {"sort_copy", sizeof(SortCopyPush)},
       {"sort_bitonic_local", sizeof(SortBitonicPush)}, {"sort_bitonic_global", sizeof(SortBitonicPush)},
       {"sort_onesweep_histogram", sizeof(SortOneSweepPush)}, {"sort_onesweep_pass", sizeof(SortOneSweepPush)},

@@ -11,6 +11,7 @@
 
 #include "renderer/vk/command_counts.h"
 #include "renderer/vk/gpu_buffer.h"
+#include "renderer/vk/vk_check.h"
 #include "renderer/reorder/gpu_sort.h"
 #include "shaders/sort_types.h"
 #include "tests/gpu_test.h"
@@ -88,7 +89,7 @@ std::vector<uint32_t> stableOrder(const std::vector<uint32_t>& keys, uint32_t ke
 // portable passes with one tile a work group. The default groups kDefaultRadixTilesPerGroup (2) tiles
 // (Tuning::radixTilesPerGroup: a group's later tiles start where its earlier ones left each digit), so Radix
 // checks that; RadixOneTile the loops of one iteration, with no barrier after a group's tile.
-enum class Variant { Radix, OneSweep, Bitonic, Small, RadixOneTile };
+enum class Variant { Radix, OneSweep, Bitonic, Small, RadixOneTile, RadixPartitioned };
 static_assert(kDefaultRadixTilesPerGroup > 1, "RadixOneTile stands for the shape the default does not take");
 
 SortAlgorithm algorithmOf(Variant v) {
@@ -102,6 +103,7 @@ std::string variantName(Variant v) {
     case Variant::Bitonic: return "bitonic";
     case Variant::Small: return "small";
     case Variant::RadixOneTile: return "radix_one_tile";
+    case Variant::RadixPartitioned: return "radix_partitioned";
   }
   return "?";
 }
@@ -109,7 +111,7 @@ std::string variantName(Variant v) {
 class GpuSortTest : public test::GpuTest {
  protected:
   static GpuSorter& sorter(Variant variant) {
-    static std::unique_ptr<GpuSorter> sorters[5];
+    static std::unique_ptr<GpuSorter> sorters[6];
     auto& slot = sorters[static_cast<int>(variant)];
     if (!slot) {
       GpuSorter::Tuning tuning;
@@ -118,6 +120,7 @@ class GpuSortTest : public test::GpuTest {
       // it, lavapipe, the sorter runs one work group per dispatch, so the same shaders are checked.)
       if (variant != Variant::Small) tuning.smallSortMax = 0;
       if (variant == Variant::RadixOneTile) tuning.radixTilesPerGroup = 1;
+      tuning.radixRankPartitioned = variant == Variant::RadixPartitioned;
       slot = std::make_unique<GpuSorter>(ctx(), algorithmOf(variant), kMaxCount, tuning);
       EXPECT_EQ(slot->usesOneSweep(), variant == Variant::OneSweep);
     }
@@ -201,6 +204,39 @@ TEST_P(GpuSortCases, MatchesStableSort) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Sort, GpuSortCases, ::testing::ValuesIn(allCases()), caseName);
+
+// The scatter ranking with subgroupPartitionNV (Tuning::radixRankPartitioned) sorts as the ballots do: every
+// count and distribution of the cases above but the largest count, and 7, 16 and 23 key bits with dead keys. Only
+// on a device with VK_NV_shader_subgroup_partitioned (NVIDIA; lavapipe lacks it, and there the next test runs).
+TEST_F(GpuSortTest, PartitionedRankingMatchesStableSort) {
+  if (!ctx().info().subgroupPartitioned) GTEST_SKIP() << ctx().info().name << " lacks VK_NV_shader_subgroup_partitioned";
+  for (uint32_t n : {1u, 2u, 19u, 2001u, 3103u, 11025u, 65537u})
+    for (Dist d : {Dist::Uniform, Dist::Sorted, Dist::Reversed, Dist::Equal, Dist::Few, Dist::Full32, Dist::Dead12}) {
+      SCOPED_TRACE(std::to_string(n) + " " + distName(d));
+      sortAndCheck(Variant::RadixPartitioned, makeKeys(d, n, 3), distKeyBits(d));
+    }
+  std::mt19937 rng(5);
+  for (uint32_t bits : {7u, 16u, 23u}) {
+    std::vector<uint32_t> keys(70001);
+    for (uint32_t& k : keys) k = rng() % 5 == 0 ? kDead : rng() & ((1u << bits) - 1u);
+    SCOPED_TRACE(std::to_string(bits) + " bits");
+    sortAndCheck(Variant::RadixPartitioned, keys, bits);
+  }
+}
+
+// Where the device lacks the extension, or for another sort, the partitioned ranking is refused with the reason.
+TEST_F(GpuSortTest, PartitionedRankingIsRefusedWhereItCannotRun) {
+  GpuSorter::Tuning tuning;
+  tuning.radixRankPartitioned = true;
+  EXPECT_THROW(GpuSorter(ctx(), SortAlgorithm::OneSweep, 1000, tuning), VulkanError);
+  if (ctx().info().subgroupPartitioned) GTEST_SKIP() << ctx().info().name << " has the extension: nothing else to refuse";
+  try {
+    GpuSorter sorter(ctx(), SortAlgorithm::Radix, 1000, tuning);
+    ADD_FAILURE() << "accepted on a device without VK_NV_shader_subgroup_partitioned";
+  } catch (const VulkanError& e) {
+    EXPECT_NE(std::string(e.what()).find("VK_NV_shader_subgroup_partitioned"), std::string::npos) << e.what();
+  }
+}
 
 // Every key bit below keyBits matters (no pass skipped too many), including pass counts that are odd
 // (7 bits: 1 pass, copied back; 16 bits: 3 passes through both scratch sets) and dead keys on top.
