@@ -201,9 +201,9 @@ struct Row {
 };
 
 // Sorts of fresh copies of the input, back to back in one submission (the copy of each outside its scopes), so
-// that the GPU never idles between the timed sorts: one sort a submission, with the host's checks between them,
-// let an H100 lower its clocks and made every dispatch of a sort of 5-8M pairs 4-5x slower than the same sort
-// timed back to back (docs/results/sortbench-back-to-back). Returns each run's scopes in the order they began:
+// that the GPU never idles between the timed sorts: with one sort a submission and the host's checks between
+// them the GPU idled, and an H100 then ran every dispatch of a sort of 5-8M pairs 4-5x slower than the same sort
+// timed back to back, as lowered clocks would (docs/results/sortbench-back-to-back). Returns each run's scopes in the order they began:
 // the sort's, then its steps' (with --steps).
 std::vector<std::vector<StageTime>> sortBackToBack(const VulkanContext& ctx, GpuTimer& timer, GpuSorter& sorter,
                                                    const GpuBuffer& srcKeys, const GpuBuffer& srcValues,
