@@ -203,8 +203,8 @@ struct Row {
 // Sorts of fresh copies of the input, back to back in one submission (the copy of each outside its scopes), so
 // that the GPU never idles between the timed sorts: with one sort a submission and the host's checks between
 // them the GPU idled, and an H100 then ran every dispatch of a sort of 5-8M pairs 4-5x slower than the same sort
-// timed back to back, as lowered clocks would (docs/results/sortbench-back-to-back). Returns each run's scopes in the order they began:
-// the sort's, then its steps' (with --steps).
+// timed back to back, as lowered clocks would (docs/results/sortbench-back-to-back). Returns each run's scopes
+// in the order they began: the sort's, then its steps' (with --steps).
 std::vector<std::vector<StageTime>> sortBackToBack(const VulkanContext& ctx, GpuTimer& timer, GpuSorter& sorter,
                                                    const GpuBuffer& srcKeys, const GpuBuffer& srcValues,
                                                    const GpuBuffer& keys, const GpuBuffer& values, uint32_t n,
@@ -229,7 +229,8 @@ std::vector<std::vector<StageTime>> sortBackToBack(const VulkanContext& ctx, Gpu
     if (perRun.empty()) throw std::logic_error("sortbench: a step scope before the first sort's");
     perRun.back().push_back(std::move(t));
   }
-  if (perRun.size() != runs) throw std::logic_error("sortbench: " + std::to_string(perRun.size()) + " sorts timed of " + std::to_string(runs));
+  if (perRun.size() != runs)
+    throw std::logic_error("sortbench: " + std::to_string(perRun.size()) + " sorts timed of " + std::to_string(runs));
   return perRun;
 }
 
@@ -265,7 +266,8 @@ int runBench(const BenchOptions& o) {
   std::vector<Row> rows;
   bool allOk = true;
   GpuTimer timer(ctx, kRunsPerSubmission * kMaxScopesPerRun);  // each sort and, with --steps, its dispatches
-  // The columns every CSV line ends with (both files).
+  // The columns every CSV line ends with (both files), and their names.
+  const std::string csvExtraHeader = ",bits,dist,repeat,device,driver";
   const std::string csvExtra = "," + std::to_string(o.bits) + "," + o.dist + "," + std::to_string(o.repeat) + "," +
                                  csvText(dev.name) + "," + csvText(dev.driver);
   std::string stepsCsv;
@@ -308,10 +310,10 @@ int runBench(const BenchOptions& o) {
           ++done;
         }
       }
-      std::sort(ms.begin(), ms.end());
-      row.minMs = ms.front();
-      row.maxMs = ms.back();
-      row.medianMs = ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
+      const Spread spread = spreadOf(ms);  // as each step's (SortSteps)
+      row.minMs = spread.min;
+      row.maxMs = spread.max;
+      row.medianMs = spread.median;
       std::fputs(formatRow(row, false).c_str(), stdout);
       if (!steps.empty()) {
         std::fputs(steps.table(row.medianMs).c_str(), stdout);
@@ -322,12 +324,12 @@ int runBench(const BenchOptions& o) {
     }
   }
   if (!o.csv.empty()) {
-    std::string csv = "sort,n,median_ms,min_ms,max_ms,pairs_per_s,check,bits,dist,repeat,device,driver\n";
+    std::string csv = "sort,n,median_ms,min_ms,max_ms,pairs_per_s,check" + csvExtraHeader + "\n";
     for (const Row& r : rows) csv += formatRow(r, true, csvExtra);
     writeFileChecked(o.csv, csv);  // a WriteError is reported by runSortBenchCommand: exit 1
   }
   if (!o.steps.empty())
-    writeFileChecked(o.steps, std::string(SortSteps::kCsvHeader) + ",bits,dist,repeat,device,driver\n" + stepsCsv);
+    writeFileChecked(o.steps, SortSteps::kCsvHeader + csvExtraHeader + "\n" + stepsCsv);
   if (o.validation != ValidationMode::Off && ctx.validationErrors() > 0) {
     std::fprintf(stderr, "raylab sortbench: the validation layer reported %u errors\n", ctx.validationErrors());
     return kExitFailure;

@@ -1,6 +1,6 @@
 #version 460
 // Radix sort, step (a) of a pass: the digit histogram of one work group's tiles (TILES_PER_GROUP consecutive
-// ones, usually 1), written to the group's column of the digit-major count table (hist[digit * numGroups +
+// ones: kDefaultRadixTilesPerGroup, 2, by default), written to the group's column of the digit-major count table (hist[digit * numGroups +
 // group]). Same group size, keys per invocation and tiles as the scatter; all of an invocation's keys of a tile
 // are loaded before any is counted, so the loads overlap.
 #extension GL_GOOGLE_include_directive : require

@@ -29,9 +29,9 @@ layout(buffer_reference, scalar) coherent volatile buffer SortStateBuf { uint v[
 
 // sort_radix_histogram and sort_radix_scatter (both tile the keys by their group size times keys per
 // invocation, specialization constants; a work group takes TILES_PER_GROUP consecutive tiles, in order,
-// GpuSorter::Tuning::radixTilesPerGroup, so a hist column counts all of a group's tiles). `hist` holds SORT_RADIX * numGroups per-group digit counts,
-// digit-major (hist[digit * numGroups + group]) so that one work group scans one digit's row, followed by
-// SORT_RADIX digit totals written by sort_radix_scan.
+// GpuSorter::Tuning::radixTilesPerGroup, so a hist column counts all of a group's tiles). `hist` holds
+// SORT_RADIX * numGroups per-group digit counts, digit-major (hist[digit * numGroups + group]) so that one
+// work group scans one digit's row, followed by SORT_RADIX digit totals written by sort_radix_scan.
 struct SortRadixPush {
   SORT_REF(SortUintBuf) keysIn;
   SORT_REF(SortUintBuf) valuesIn;
