@@ -33,6 +33,7 @@ constexpr int kWarmups = 2;  // at least this many warm-up sorts, and at least k
 constexpr std::chrono::milliseconds kWarmUp{500};
 constexpr uint32_t kRunsPerSubmission = 64;  // sorts recorded back to back in one command buffer
 constexpr uint32_t kMaxScopesPerRun = 32;    // the sort and its dispatches (at most 4 passes of 3, small, copy)
+constexpr const char* kSortScope = "sort";   // the timer scope of a whole sort; its steps' scopes follow it
 
 const std::string kUsage =
     std::string("usage: raylab sortbench [options]\n"
@@ -217,7 +218,7 @@ std::vector<std::vector<StageTime>> sortBackToBack(const VulkanContext& ctx, Gpu
       vkCmdCopyBuffer(cmd, srcValues.handle(), values.handle(), 1, &region);
       computeBarrier(cmd);
       {
-        ScopedStage scope(&timer, cmd, "sort");
+        ScopedStage scope(&timer, cmd, kSortScope);
         sorter.record(cmd, keys.address(), values.address(), n, bits);
       }
       computeBarrier(cmd);  // the sort done before the next run's copy overwrites its pairs
@@ -225,7 +226,7 @@ std::vector<std::vector<StageTime>> sortBackToBack(const VulkanContext& ctx, Gpu
   });
   std::vector<std::vector<StageTime>> perRun;
   for (StageTime& t : timer.collect()) {
-    if (t.stage == "sort") perRun.emplace_back();
+    if (t.stage == kSortScope) perRun.emplace_back();
     if (perRun.empty()) throw std::logic_error("sortbench: a step scope before the first sort's");
     perRun.back().push_back(std::move(t));
   }
@@ -306,7 +307,7 @@ int runBench(const BenchOptions& o) {
       for (uint32_t done = 0; done < o.repeat;) {
         for (const std::vector<StageTime>& scopes : sortRuns(std::min(kRunsPerSubmission, o.repeat - done))) {
           ms.push_back(scopes.front().ms);
-          if (!o.steps.empty()) steps.addRun(scopes, "sort");
+          if (!o.steps.empty()) steps.addRun(scopes, kSortScope);
           ++done;
         }
       }
