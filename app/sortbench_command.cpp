@@ -55,9 +55,10 @@ const std::string kUsage =
     "  --radix-kpt K       radix keys per invocation (tuning; default 8)\n"
     "  --radix-tiles T     consecutive tiles a radix work group counts and scatters, 1..64 (tuning; default ") +
     std::to_string(kDefaultRadixTilesPerGroup) + ")\n"
-    "  --radix-rank R      ballot|partition: how the radix scatter finds a subgroup's lanes holding a digit, a\n"
-    "                      ballot per digit bit (default) or one subgroupPartitionNV (devices with\n"
-    "                      VK_NV_shader_subgroup_partitioned)\n";
+    "  --radix-rank R      auto|ballot|partition: how the radix scatter finds a subgroup's lanes holding a\n"
+    "                      digit, a ballot per digit bit or one subgroupPartitionNV (devices with\n"
+    "                      VK_NV_shader_subgroup_partitioned); auto (default): the partition where the\n"
+    "                      device has it\n";
 
 // --help: not an error, but it ends the parse the same way.
 struct HelpRequested {};
@@ -132,9 +133,9 @@ BenchOptions parseOptions(const std::vector<std::string>& args) {
     } else if (flag == "--radix-tiles") {
       o.tuning.radixTilesPerGroup = parseUint(flag, value, 1, 64);
     } else if (flag == "--radix-rank") {
-      if (value != "ballot" && value != "partition")
-        throw UsageError("--radix-rank '" + value + "' is not ballot or partition");
-      o.tuning.radixRankPartitioned = value == "partition";
+      if (value != "auto" && value != "ballot" && value != "partition")
+        throw UsageError("--radix-rank '" + value + "' is not auto, ballot or partition");
+      o.tuning.radixRank = value == "auto" ? RadixRank::Auto : value == "ballot" ? RadixRank::Ballot : RadixRank::Partition;
     } else {
       throw UsageError("unknown flag '" + flag + "'");
     }
@@ -143,7 +144,7 @@ BenchOptions parseOptions(const std::vector<std::string>& args) {
   const bool radixOnly = o.sorts.size() == 1 && o.sorts.front() == SortAlgorithm::Radix;
   if (o.tuning.radixTilesPerGroup != kDefaultRadixTilesPerGroup && !radixOnly)
     throw UsageError("--radix-tiles shapes the portable radix passes only: pass --sort radix");
-  if (o.tuning.radixRankPartitioned && !radixOnly)
+  if (o.tuning.radixRank == RadixRank::Partition && !radixOnly)
     throw UsageError("--radix-rank partition ranks in the portable radix passes only: pass --sort radix");
   if (!o.steps.empty() && std::count(o.sorts.begin(), o.sorts.end(), SortAlgorithm::Bitonic))
     throw UsageError("--steps times the radix sorts' dispatches, not bitonic's: pass --sort radix or onesweep");
@@ -257,9 +258,12 @@ int runBench(const BenchOptions& o) {
   const DeviceInfo& dev = ctx.info();
   if (!deviceTimesCompute(ctx, "raylab sortbench")) return kExitFailure;
   const uint32_t maxN = *std::max_element(o.counts.begin(), o.counts.end());
+  // The ranking the portable radix scatter takes here (RadixRank resolved for this device).
+  const char* radixRankName = GpuSorter::radixRanksPartitioned(ctx, o.tuning) ? "partition" : "ballot";
   std::printf("sortbench: device %s (driver %s), subgroup %u, %u-bit keys, %s, %u sorts back to back (after >= %d "
-              "warm-up sorts and %lld ms)\n", dev.name.c_str(), dev.driver.c_str(), dev.subgroupSize, o.bits,
-              o.dist.c_str(), o.repeat, kWarmups, static_cast<long long>(kWarmUp.count()));
+              "warm-up sorts and %lld ms), radix ranking by %s\n", dev.name.c_str(), dev.driver.c_str(),
+              dev.subgroupSize, o.bits, o.dist.c_str(), o.repeat, kWarmups, static_cast<long long>(kWarmUp.count()),
+              radixRankName);
   std::printf("%-8s %10s %11s %11s %11s %12s  %s\n", "sort", "n", "median_ms", "min_ms", "max_ms", "Mpairs/s",
               "check");
   std::fflush(stdout);
@@ -268,9 +272,9 @@ int runBench(const BenchOptions& o) {
   bool allOk = true;
   GpuTimer timer(ctx, kRunsPerSubmission * kMaxScopesPerRun);  // each sort and, with --steps, its dispatches
   // The columns every CSV line ends with (both files), and their names.
-  const std::string csvExtraHeader = ",bits,dist,repeat,device,driver";
+  const std::string csvExtraHeader = ",bits,dist,repeat,device,driver,radix_rank";
   const std::string csvExtra = "," + std::to_string(o.bits) + "," + o.dist + "," + std::to_string(o.repeat) + "," +
-                                 csvText(dev.name) + "," + csvText(dev.driver);
+                                 csvText(dev.name) + "," + csvText(dev.driver) + "," + radixRankName;
   std::string stepsCsv;
   GpuBuffer keys(ctx, VkDeviceSize(maxN) * 4), values(ctx, VkDeviceSize(maxN) * 4);
   for (SortAlgorithm sort : o.sorts) {

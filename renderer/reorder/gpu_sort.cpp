@@ -49,6 +49,10 @@ void dispatchSplit(const ComputePipeline& pipeline, VkCommandBuffer cmd, gpu::So
 
 }  // namespace
 
+bool GpuSorter::radixRanksPartitioned(const VulkanContext& ctx, const Tuning& tuning) {
+  return tuning.radixRank != RadixRank::Ballot && ctx.info().subgroupPartitioned;
+}
+
 GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t maxCount)
     : GpuSorter(ctx, algorithm, maxCount, Tuning{}) {}
 
@@ -61,9 +65,10 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
     if (tuning.radixTilesPerGroup < 1 || tuning.radixTilesPerGroup > 64)
       throw VulkanError("radix sort: tiles per work group must be 1..64");
     tilesPerGroup_ = tuning.radixTilesPerGroup;
-    if (tuning.radixRankPartitioned && (algorithm != SortAlgorithm::Radix || !ctx.info().subgroupPartitioned))
+    if (tuning.radixRank == RadixRank::Partition && (algorithm != SortAlgorithm::Radix || !ctx.info().subgroupPartitioned))
       throw VulkanError("radix sort: ranking by subgroupPartitionNV needs the portable radix passes and a device with "
                         "VK_NV_shader_subgroup_partitioned; " + ctx.info().name + (ctx.info().subgroupPartitioned ? " has it" : " lacks it"));
+    rankPartitioned_ = algorithm == SortAlgorithm::Radix && radixRanksPartitioned(ctx, tuning);
     // The scatter keeps one 256-bin histogram per subgroup; with small subgroups (lavapipe: 8) a 256-wide
     // group would need 32 KiB for them alone, so the group shrinks until everything fits.
     uint32_t group = tuning.radixGroupSize ? tuning.radixGroupSize : SORT_RADIX;
@@ -92,7 +97,7 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
       histogram_ = ComputePipeline(ctx, "sort_radix_histogram", sizeof(gpu::SortRadixPush), group,
                                    {{RL_SPEC_KEYS_PER_THREAD, kpt}, {RL_SPEC_TILES_PER_GROUP, tilesPerGroup_}});
       scan_ = ComputePipeline(ctx, "sort_radix_scan", sizeof(gpu::SortScanPush), std::max(kScanGroup, subgroup));
-      scatter_ = ComputePipeline(ctx, tuning.radixRankPartitioned ? "sort_radix_scatter_partitioned" : "sort_radix_scatter",
+      scatter_ = ComputePipeline(ctx, rankPartitioned_ ? "sort_radix_scatter_partitioned" : "sort_radix_scatter",
                                  sizeof(gpu::SortRadixPush), group,
                                  {{RL_SPEC_SUBGROUP_SIZE, subgroup}, {RL_SPEC_KEYS_PER_THREAD, kpt},
                                   {RL_SPEC_TILES_PER_GROUP, tilesPerGroup_}});

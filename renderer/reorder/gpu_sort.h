@@ -44,6 +44,13 @@ namespace raylab {
 // The default of GpuSorter::Tuning::radixTilesPerGroup (its comment says why 2).
 inline constexpr uint32_t kDefaultRadixTilesPerGroup = 2;
 
+// How the portable radix scatter finds the lanes of a subgroup holding the same digit: a ballot per digit bit
+// (any device), or one subgroupPartitionNV (devices with VK_NV_shader_subgroup_partitioned: NVIDIA). Auto: the
+// partition where the device has it, else the ballots.
+enum class RadixRank { Auto, Ballot, Partition };
+// The default of GpuSorter::Tuning::radixRank (its comment says why).
+inline constexpr RadixRank kDefaultRadixRank = RadixRank::Auto;
+
 class StageTimer;
 class VulkanContext;
 
@@ -59,14 +66,16 @@ class GpuSorter {
     // H100 the frame's three sorts took 4-12% less than with 1 (Sponza at 720p 1% more) and sortbench's
     // 2-10% less from 0.9M to 8.4M pairs; 4 lost at 0.9M (docs/results/sortbench-back-to-back).
     uint32_t radixTilesPerGroup = kDefaultRadixTilesPerGroup;
-    // The portable radix scatter ranks a tile's keys with subgroupPartitionNV (one instruction finds the lanes
-    // holding a digit) instead of a ballot per digit bit. Needs DeviceInfo::subgroupPartitioned (NVIDIA; not
-    // lavapipe); the constructor refuses it elsewhere. Not timed yet: sortbench --radix-rank partition.
-    bool radixRankPartitioned = false;
+    // How the portable radix scatter ranks a tile's keys (RadixRank). Partition needs
+    // DeviceInfo::subgroupPartitioned (NVIDIA; not lavapipe); the constructor refuses it elsewhere.
+    RadixRank radixRank = kDefaultRadixRank;
     // Radix counts up to this many pairs take the single-dispatch small sort; 0: never (the passes always run).
     uint32_t smallSortMax = SORT_SMALL_MAX;
   };
 
+  // Whether the portable radix passes rank with subgroupPartitionNV on this device under `tuning` (RadixRank
+  // resolved; Partition where the device lacks it is refused by the constructor, not here).
+  static bool radixRanksPartitioned(const VulkanContext& ctx, const Tuning& tuning);
   // Whether OneSweep's work groups may run together on this device (a GPU known to give forward progress).
   static bool oneSweepSupported(const VulkanContext& ctx);
 
@@ -109,6 +118,8 @@ class GpuSorter {
   // True when record() runs OneSweep passes (SortAlgorithm::OneSweep), and when it runs them one work group
   // per dispatch because the device may not run work groups together (see oneSweepSupported).
   bool usesOneSweep() const { return oneSweep_; }
+  // True when the portable radix scatter ranks with subgroupPartitionNV (Tuning::radixRank, resolved).
+  bool ranksPartitioned() const { return rankPartitioned_; }
   bool oneSweepSerial() const { return oneSweepSerial_; }
   // The most pairs record() sorts with the single-dispatch small sort (0: none; radix only, and where the
   // device's shared memory holds its arrays).
@@ -143,6 +154,7 @@ class GpuSorter {
   uint32_t radixTile_ = 0;
   uint32_t tilesPerGroup_ = 1;
   bool oneSweep_ = false;
+  bool rankPartitioned_ = false;
   bool oneSweepSerial_ = false;
   uint32_t smallSortMax_ = 0;
   StageTimer* stepTimer_ = nullptr;

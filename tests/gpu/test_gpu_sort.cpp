@@ -89,7 +89,7 @@ std::vector<uint32_t> stableOrder(const std::vector<uint32_t>& keys, uint32_t ke
 // portable passes with one tile a work group. The default groups kDefaultRadixTilesPerGroup (2) tiles
 // (Tuning::radixTilesPerGroup: a group's later tiles start where its earlier ones left each digit), so Radix
 // checks that; RadixOneTile the loops of one iteration, with no barrier after a group's tile.
-enum class Variant { Radix, OneSweep, Bitonic, Small, RadixOneTile, RadixPartitioned };
+enum class Variant { Radix, OneSweep, Bitonic, Small, RadixOneTile, RadixOtherRank };
 static_assert(kDefaultRadixTilesPerGroup > 1, "RadixOneTile stands for the shape the default does not take");
 
 SortAlgorithm algorithmOf(Variant v) {
@@ -103,7 +103,7 @@ std::string variantName(Variant v) {
     case Variant::Bitonic: return "bitonic";
     case Variant::Small: return "small";
     case Variant::RadixOneTile: return "radix_one_tile";
-    case Variant::RadixPartitioned: return "radix_partitioned";
+    case Variant::RadixOtherRank: return "radix_other_rank";
   }
   return "?";
 }
@@ -120,7 +120,10 @@ class GpuSortTest : public test::GpuTest {
       // it, lavapipe, the sorter runs one work group per dispatch, so the same shaders are checked.)
       if (variant != Variant::Small) tuning.smallSortMax = 0;
       if (variant == Variant::RadixOneTile) tuning.radixTilesPerGroup = 1;
-      tuning.radixRankPartitioned = variant == Variant::RadixPartitioned;
+      // The ranking the default does not take on this device: the ballots where it partitions (NVIDIA), the
+      // partition where it has the extension but the default ballots. Only built where the device can run it.
+      if (variant == Variant::RadixOtherRank)
+        tuning.radixRank = sorter(Variant::Radix).ranksPartitioned() ? RadixRank::Ballot : RadixRank::Partition;
       slot = std::make_unique<GpuSorter>(ctx(), algorithmOf(variant), kMaxCount, tuning);
       EXPECT_EQ(slot->usesOneSweep(), variant == Variant::OneSweep);
     }
@@ -205,29 +208,43 @@ TEST_P(GpuSortCases, MatchesStableSort) {
 
 INSTANTIATE_TEST_SUITE_P(Sort, GpuSortCases, ::testing::ValuesIn(allCases()), caseName);
 
-// The scatter ranking with subgroupPartitionNV (Tuning::radixRankPartitioned) sorts as the ballots do: every
-// count and distribution of the cases above but the largest count, and 7, 16 and 23 key bits with dead keys. Only
-// on a device with VK_NV_shader_subgroup_partitioned (NVIDIA; lavapipe lacks it, and there the next test runs).
-TEST_F(GpuSortTest, PartitionedRankingMatchesStableSort) {
+// The scatter's two rankings sort alike. The default one (RadixRank::Auto: subgroupPartitionNV where the device
+// has VK_NV_shader_subgroup_partitioned, the ballots elsewhere) runs every case above; this runs the other one,
+// where the device can: every count and distribution of the cases above but the largest count, and 7, 16 and 23
+// key bits with dead keys. On a device without the extension (lavapipe) only the ballots run, and the next test
+// checks the refusal.
+TEST_F(GpuSortTest, OtherRankingMatchesStableSort) {
   if (!ctx().info().subgroupPartitioned) GTEST_SKIP() << ctx().info().name << " lacks VK_NV_shader_subgroup_partitioned";
+  EXPECT_NE(sorter(Variant::RadixOtherRank).ranksPartitioned(), sorter(Variant::Radix).ranksPartitioned());
   for (uint32_t n : {1u, 2u, 19u, 2001u, 3103u, 11025u, 65537u})
     for (Dist d : {Dist::Uniform, Dist::Sorted, Dist::Reversed, Dist::Equal, Dist::Few, Dist::Full32, Dist::Dead12}) {
       SCOPED_TRACE(std::to_string(n) + " " + distName(d));
-      sortAndCheck(Variant::RadixPartitioned, makeKeys(d, n, 3), distKeyBits(d));
+      sortAndCheck(Variant::RadixOtherRank, makeKeys(d, n, 3), distKeyBits(d));
     }
   std::mt19937 rng(5);
   for (uint32_t bits : {7u, 16u, 23u}) {
     std::vector<uint32_t> keys(70001);
     for (uint32_t& k : keys) k = rng() % 5 == 0 ? kDead : rng() & ((1u << bits) - 1u);
     SCOPED_TRACE(std::to_string(bits) + " bits");
-    sortAndCheck(Variant::RadixPartitioned, keys, bits);
+    sortAndCheck(Variant::RadixOtherRank, keys, bits);
   }
+}
+
+// The default ranking resolves by the device: the partition exactly where the device has the extension (unless
+// the lab's default is the ballots), and never for OneSweep, whose passes rank with the ballots.
+TEST_F(GpuSortTest, DefaultRankingFollowsTheDevice) {
+  EXPECT_EQ(sorter(Variant::Radix).ranksPartitioned(),
+            kDefaultRadixRank != RadixRank::Ballot && ctx().info().subgroupPartitioned);
+  EXPECT_FALSE(sorter(Variant::OneSweep).ranksPartitioned());
+  GpuSorter::Tuning ballot;
+  ballot.radixRank = RadixRank::Ballot;
+  EXPECT_FALSE(GpuSorter(ctx(), SortAlgorithm::Radix, 1000, ballot).ranksPartitioned());
 }
 
 // Where the device lacks the extension, or for another sort, the partitioned ranking is refused with the reason.
 TEST_F(GpuSortTest, PartitionedRankingIsRefusedWhereItCannotRun) {
   GpuSorter::Tuning tuning;
-  tuning.radixRankPartitioned = true;
+  tuning.radixRank = RadixRank::Partition;
   EXPECT_THROW(GpuSorter(ctx(), SortAlgorithm::OneSweep, 1000, tuning), VulkanError);
   if (ctx().info().subgroupPartitioned) GTEST_SKIP() << ctx().info().name << " has the extension: nothing else to refuse";
   try {

@@ -29,7 +29,7 @@ check "unknown option" bench --frobnicate 1
 check "unknown flag" sortbench --frobnicate 1
 check "--sort radix" sortbench --radix-tiles 4 --sort onesweep
 check "--sort radix" sortbench --radix-rank partition --sort onesweep
-check "not ballot or partition" sortbench --radix-rank match
+check "not auto, ballot or partition" sortbench --radix-rank match
 check "not bitonic" sortbench --steps steps.csv
 check "did you mean --kinds?" tracebench --kind camera
 check "unknown kind 'camra'" tracebench --kinds camra

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Call 1 of 2 (about 3 minutes): the radix scatter ranking by subgroupPartitionNV (RadixRank::Partition), which
+# the lab now takes by default wherever the device has VK_NV_shader_subgroup_partitioned (RadixRank::Auto).
+# Part 1: the GPU tests of sorting and the invariant under the new default, with synchronization validation
+# (GpuSortTest.OtherRankingMatchesStableSort runs the ballots there). Part 2: sortbench, ballot against
+# partition at the frame's counts (0.9M-8.4M pairs), 23-bit keys, uniform and few-valued, every dispatch timed,
+# two rounds interleaved. Pack: bash .ci/device-build; bash .ci/device-pack ballot=<a build of the parent commit>.
+source docs/results/device-unpack.sh
+t0=$SECONDS
+RAYLAB_VALIDATE=1 timeout 150 build-device/tests/raylab_gpu_tests \
+  --gtest_filter='SortInvariant*:*GpuSort*:*Invariant*:*SortPolicy*' --gtest_brief=1 \
+  > $OUT/gpu-tests.log 2>&1; echo "exit $?" >> $OUT/gpu-tests.log
+echo "tests: $((SECONDS - t0)) s"; t0=$SECONDS
+for round in 1 2; do
+  for rank in ballot partition; do
+    for dist in uniform few; do
+      timeout 60 build-device/raylab sortbench --n 921600,2097152,4194304,8388608 --bits 23 --dist $dist --sort radix \
+        --radix-rank $rank --repeat 20 --csv /tmp/sb.csv --steps /tmp/st.csv > /tmp/sb.log 2>&1 \
+        || { echo "sortbench $rank $dist exit $?" >> $OUT/errors.txt; tail -3 /tmp/sb.log >> $OUT/errors.txt; }
+      appendRows /tmp/sb.csv $OUT/rank.csv round $round
+      appendRows /tmp/st.csv $OUT/rank-steps.csv round $round
+    done
+  done
+done
+echo "sortbench: $((SECONDS - t0)) s"
