@@ -105,6 +105,7 @@ json toJson(const DeviceInfo& d) {
           {"pci_bus", d.pciBus.empty() ? json(nullptr) : json(d.pciBus)},
           {"driver", d.driver},
           {"subgroup_size", d.subgroupSize},
+          {"subgroup_partitioned", d.subgroupPartitioned},
           {"cpu", d.isCpu},
           {"ray_tracing", d.rayTracing ? json("yes") : json("no: lacks " + d.rayTracingMissing)},
           {"ser", d.ser ? json("yes") : json("no: lacks " + d.serMissing)},

@@ -28,7 +28,9 @@ std::vector<std::string> benchCsvColumns() {
                         "camera_path", "path_frames", "path_total_ms", "path_mean_ms",
                         // a frame's fixed costs (issue 36): its commands, the run's empty dispatch, their product
                         "dispatches", "indirect_dispatches", "barriers", "size_writes", "submissions",
-                        "empty_dispatch_us", "fixed_cost_ms"})
+                        "empty_dispatch_us", "fixed_cost_ms",
+                        // how the radix scatter ranked (RadixRank resolved for the device)
+                        "radix_rank"})
     columns.push_back(c);
   for (const SettingRow& r : settingRows())
     for (const std::string& c : r.csvColumns)

@@ -11,6 +11,7 @@
 #include "renderer/checked_write.h"
 #include "app/bench/bench_spread.h"
 #include "renderer/git_revision.h"
+#include "renderer/reorder/gpu_sort.h"
 #include "renderer/settings/settings_table.h"
 #include "renderer/stages.h"
 #include "renderer/stats_json.h"
@@ -94,6 +95,10 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   row.add("dispatches", r.commands.dispatches()).add("indirect_dispatches", r.commands.indirectDispatches);
   row.add("barriers", r.commands.barriers).add("size_writes", r.commands.sizeWrites).add("submissions", r.submissions);
   row.add("empty_dispatch_us", csvNumber(run.emptyDispatchUs)).add("fixed_cost_ms", csvNumber(fixedCostMs(r.commands, run)));
+  // How the radix scatter found a digit's lanes: the frame's sorter takes the default, which resolves by the
+  // device (RadixRank::Auto), so the row says which ran; empty where no radix sort timed.
+  const bool radixSorted = s.sort == SortAlgorithm::Radix && r.stageMs.count("sort");
+  row.add("radix_rank", radixSorted ? (GpuSorter::radixRanksPartitioned(ctx, {}) ? "partition" : "ballot") : "");
   return row.values();
 }
 
