@@ -95,10 +95,11 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   row.add("dispatches", r.commands.dispatches()).add("indirect_dispatches", r.commands.indirectDispatches);
   row.add("barriers", r.commands.barriers).add("size_writes", r.commands.sizeWrites).add("submissions", r.submissions);
   row.add("empty_dispatch_us", csvNumber(run.emptyDispatchUs)).add("fixed_cost_ms", csvNumber(fixedCostMs(r.commands, run)));
-  // How the radix scatter found a digit's lanes: the frame's sorter takes the default, which resolves by the
-  // device (RadixRank::Auto), so the row says which ran; empty where no radix sort timed.
-  const bool radixSorted = s.sort == SortAlgorithm::Radix && r.stageMs.count("sort");
-  row.add("radix_rank", radixSorted ? (GpuSorter::radixRanksPartitioned(ctx, {}) ? "partition" : "ballot") : "");
+  // How the radix scatter finds a digit's lanes: the frame's sorter takes the default, which resolves by the
+  // device (RadixRank::Auto), so the row says which; empty where the settings sort no other way (from the
+  // settings, not from whether a sort ran: the auto policy's choice follows timings).
+  const bool radixSorts = s.sorts() && s.sort == SortAlgorithm::Radix;
+  row.add("radix_rank", radixSorts ? (GpuSorter::radixRanksPartitioned(ctx, {}) ? "partition" : "ballot") : "");
   return row.values();
 }
 

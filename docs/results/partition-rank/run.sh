@@ -11,14 +11,18 @@ RAYLAB_VALIDATE=1 timeout 150 build-device/tests/raylab_gpu_tests \
   --gtest_filter='SortInvariant*:*GpuSort*:*Invariant*:*SortPolicy*' --gtest_brief=1 \
   > $OUT/gpu-tests.log 2>&1; echo "exit $?" >> $OUT/gpu-tests.log
 echo "tests: $((SECONDS - t0)) s"; t0=$SECONDS
+# `leader` (when packed as .dev/leader/raylab): the partition ranking where only the lowest lane of each digit reads
+# and advances its running count and a shuffle hands it to its peers (one subgroup barrier a key, not two).
+ranks="ballot partition"; [ -x .dev/leader/raylab ] && ranks="ballot partition leader"
 for round in 1 2; do
-  for rank in ballot partition; do
+  for rank in $ranks; do
     for dist in uniform few; do
-      timeout 60 build-device/raylab sortbench --n 921600,2097152,4194304,8388608 --bits 23 --dist $dist --sort radix \
-        --radix-rank $rank --repeat 20 --csv /tmp/sb.csv --steps /tmp/st.csv > /tmp/sb.log 2>&1 \
+      B=build-device/raylab; r=$rank; [ $rank = leader ] && { B=.dev/leader/raylab; r=partition; }
+      timeout 60 $B sortbench --n 921600,2097152,4194304,8388608 --bits 23 --dist $dist --sort radix \
+        --radix-rank $r --repeat 20 --csv /tmp/sb.csv --steps /tmp/st.csv > /tmp/sb.log 2>&1 \
         || { echo "sortbench $rank $dist exit $?" >> $OUT/errors.txt; tail -3 /tmp/sb.log >> $OUT/errors.txt; }
-      appendRows /tmp/sb.csv $OUT/rank.csv round $round
-      appendRows /tmp/st.csv $OUT/rank-steps.csv round $round
+      appendRows /tmp/sb.csv $OUT/rank.csv round,variant $round,$rank
+      appendRows /tmp/st.csv $OUT/rank-steps.csv round,variant $round,$rank
     done
   done
 done
