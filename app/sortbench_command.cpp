@@ -57,8 +57,8 @@ const std::string kUsage =
     std::to_string(kDefaultRadixTilesPerGroup) + ")\n"
     "  --radix-rank R      auto|ballot|partition: how the radix scatter finds a subgroup's lanes holding a\n"
     "                      digit, a ballot per digit bit or one subgroupPartitionNV (devices with\n"
-    "                      VK_NV_shader_subgroup_partitioned); auto (default): the partition where the\n"
-    "                      device has it\n";
+    "                      VK_NV_shader_subgroup_partitioned); auto: the partition where the device has it\n"
+    "                      (default " + std::string(radixRankName(kDefaultRadixRank)) + ")\n";
 
 // --help: not an error, but it ends the parse the same way.
 struct HelpRequested {};
@@ -133,9 +133,10 @@ BenchOptions parseOptions(const std::vector<std::string>& args) {
     } else if (flag == "--radix-tiles") {
       o.tuning.radixTilesPerGroup = parseUint(flag, value, 1, 64);
     } else if (flag == "--radix-rank") {
-      if (value != "auto" && value != "ballot" && value != "partition")
-        throw UsageError("--radix-rank '" + value + "' is not auto, ballot or partition");
-      o.tuning.radixRank = value == "auto" ? RadixRank::Auto : value == "ballot" ? RadixRank::Ballot : RadixRank::Partition;
+      const auto rank = std::find_if(std::begin(kRadixRanks), std::end(kRadixRanks),
+                                     [&](RadixRank r) { return value == radixRankName(r); });
+      if (rank == std::end(kRadixRanks)) throw UsageError("--radix-rank '" + value + "' is not auto, ballot or partition");
+      o.tuning.radixRank = *rank;
     } else {
       throw UsageError("unknown flag '" + flag + "'");
     }

@@ -49,6 +49,10 @@ void dispatchSplit(const ComputePipeline& pipeline, VkCommandBuffer cmd, gpu::So
 
 }  // namespace
 
+const char* radixRankName(RadixRank rank) {
+  return rank == RadixRank::Auto ? "auto" : rank == RadixRank::Ballot ? "ballot" : "partition";
+}
+
 bool GpuSorter::radixRanksPartitioned(const VulkanContext& ctx, const Tuning& tuning) {
   return tuning.radixRank != RadixRank::Ballot && ctx.info().subgroupPartitioned;
 }

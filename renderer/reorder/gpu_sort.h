@@ -48,8 +48,12 @@ inline constexpr uint32_t kDefaultRadixTilesPerGroup = 2;
 // (any device), or one subgroupPartitionNV (devices with VK_NV_shader_subgroup_partitioned: NVIDIA). Auto: the
 // partition where the device has it, else the ballots.
 enum class RadixRank { Auto, Ballot, Partition };
-// The default of GpuSorter::Tuning::radixRank (its comment says why).
-inline constexpr RadixRank kDefaultRadixRank = RadixRank::Auto;
+inline constexpr RadixRank kRadixRanks[] = {RadixRank::Auto, RadixRank::Ballot, RadixRank::Partition};
+// The default of GpuSorter::Tuning::radixRank: the ballots until the partition is measured to pay on a GPU
+// (docs/results/partition-rank).
+inline constexpr RadixRank kDefaultRadixRank = RadixRank::Ballot;
+// "auto", "ballot" or "partition" (sortbench --radix-rank).
+const char* radixRankName(RadixRank rank);
 
 class StageTimer;
 class VulkanContext;
