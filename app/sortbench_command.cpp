@@ -260,11 +260,11 @@ int runBench(const BenchOptions& o) {
   if (!deviceTimesCompute(ctx, "raylab sortbench")) return kExitFailure;
   const uint32_t maxN = *std::max_element(o.counts.begin(), o.counts.end());
   // The ranking the portable radix scatter takes here (RadixRank resolved for this device).
-  const char* radixRankName = GpuSorter::radixRanksPartitioned(ctx, o.tuning) ? "partition" : "ballot";
+  const char* rankName = radixRankName(GpuSorter::resolvedRadixRank(ctx, o.tuning));
   std::printf("sortbench: device %s (driver %s), subgroup %u, %u-bit keys, %s, %u sorts back to back (after >= %d "
               "warm-up sorts and %lld ms), radix ranking by %s\n", dev.name.c_str(), dev.driver.c_str(),
               dev.subgroupSize, o.bits, o.dist.c_str(), o.repeat, kWarmups, static_cast<long long>(kWarmUp.count()),
-              radixRankName);
+              rankName);
   std::printf("%-8s %10s %11s %11s %11s %12s  %s\n", "sort", "n", "median_ms", "min_ms", "max_ms", "Mpairs/s",
               "check");
   std::fflush(stdout);
@@ -275,7 +275,7 @@ int runBench(const BenchOptions& o) {
   // The columns every CSV line ends with (both files), and their names.
   const std::string csvExtraHeader = ",bits,dist,repeat,device,driver,radix_rank";
   const std::string csvExtra = "," + std::to_string(o.bits) + "," + o.dist + "," + std::to_string(o.repeat) + "," +
-                                 csvText(dev.name) + "," + csvText(dev.driver) + "," + radixRankName;
+                                 csvText(dev.name) + "," + csvText(dev.driver) + "," + rankName;
   std::string stepsCsv;
   GpuBuffer keys(ctx, VkDeviceSize(maxN) * 4), values(ctx, VkDeviceSize(maxN) * 4);
   for (SortAlgorithm sort : o.sorts) {

@@ -99,7 +99,7 @@ nlohmann::json csvRowOf(const VulkanContext& ctx, const BenchCell& cell, const s
   // device (RadixRank::Auto), so the row says which; empty where the settings sort no other way (from the
   // settings, not from whether a sort ran: the auto policy's choice follows timings).
   const bool radixSorts = s.sorts() && s.sort == SortAlgorithm::Radix;
-  row.add("radix_rank", radixSorts ? (GpuSorter::radixRanksPartitioned(ctx, {}) ? "partition" : "ballot") : "");
+  row.add("radix_rank", radixSorts ? radixRankName(GpuSorter::resolvedRadixRank(ctx, {})) : "");
   return row.values();
 }
 

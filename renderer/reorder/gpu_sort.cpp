@@ -53,8 +53,9 @@ const char* radixRankName(RadixRank rank) {
   return rank == RadixRank::Auto ? "auto" : rank == RadixRank::Ballot ? "ballot" : "partition";
 }
 
-bool GpuSorter::radixRanksPartitioned(const VulkanContext& ctx, const Tuning& tuning) {
-  return tuning.radixRank != RadixRank::Ballot && ctx.info().subgroupPartitioned;
+RadixRank GpuSorter::resolvedRadixRank(const VulkanContext& ctx, const Tuning& tuning) {
+  return tuning.radixRank != RadixRank::Ballot && ctx.info().subgroupPartitioned ? RadixRank::Partition
+                                                                                 : RadixRank::Ballot;
 }
 
 GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t maxCount)
@@ -72,7 +73,7 @@ GpuSorter::GpuSorter(const VulkanContext& ctx, SortAlgorithm algorithm, uint32_t
     if (tuning.radixRank == RadixRank::Partition && (algorithm != SortAlgorithm::Radix || !ctx.info().subgroupPartitioned))
       throw VulkanError("radix sort: ranking by subgroupPartitionNV needs the portable radix passes and a device with "
                         "VK_NV_shader_subgroup_partitioned; " + ctx.info().name + (ctx.info().subgroupPartitioned ? " has it" : " lacks it"));
-    rankPartitioned_ = algorithm == SortAlgorithm::Radix && radixRanksPartitioned(ctx, tuning);
+    rankPartitioned_ = algorithm == SortAlgorithm::Radix && resolvedRadixRank(ctx, tuning) == RadixRank::Partition;
     // The scatter keeps one 256-bin histogram per subgroup; with small subgroups (lavapipe: 8) a 256-wide
     // group would need 32 KiB for them alone, so the group shrinks until everything fits.
     uint32_t group = tuning.radixGroupSize ? tuning.radixGroupSize : SORT_RADIX;

@@ -78,9 +78,9 @@ class GpuSorter {
     uint32_t smallSortMax = SORT_SMALL_MAX;
   };
 
-  // Whether the portable radix passes rank with subgroupPartitionNV on this device under `tuning` (RadixRank
-  // resolved; Partition where the device lacks it is refused by the constructor, not here).
-  static bool radixRanksPartitioned(const VulkanContext& ctx, const Tuning& tuning);
+  // The ranking the portable radix passes take on this device under `tuning`: Auto resolved to Partition or
+  // Ballot (Partition where the device lacks it is refused by the constructor, not here).
+  static RadixRank resolvedRadixRank(const VulkanContext& ctx, const Tuning& tuning);
   // Whether OneSweep's work groups may run together on this device (a GPU known to give forward progress).
   static bool oneSweepSupported(const VulkanContext& ctx);
 

@@ -208,10 +208,10 @@ TEST_P(GpuSortCases, MatchesStableSort) {
 
 INSTANTIATE_TEST_SUITE_P(Sort, GpuSortCases, ::testing::ValuesIn(allCases()), caseName);
 
-// The scatter's two rankings sort alike. The default one (RadixRank::Auto: subgroupPartitionNV where the device
-// has VK_NV_shader_subgroup_partitioned, the ballots elsewhere) runs every case above; this runs the other one,
-// where the device can: every count and distribution of the cases above but the largest count, and 7, 16 and 23
-// key bits with dead keys. On a device without the extension (lavapipe) only the ballots run, and the next test
+// The scatter's two rankings sort alike. The default one (kDefaultRadixRank resolved for the device: Auto takes
+// subgroupPartitionNV where the device has VK_NV_shader_subgroup_partitioned) runs every case above; this runs
+// the other one, where the device can: every count and distribution of the cases above but the largest count,
+// and 7, 16 and 23 key bits with dead keys. On a device without the extension (lavapipe) only the ballots run, and the next test
 // checks the refusal.
 TEST_F(GpuSortTest, OtherRankingMatchesStableSort) {
   if (!ctx().info().subgroupPartitioned) GTEST_SKIP() << ctx().info().name << " lacks VK_NV_shader_subgroup_partitioned";

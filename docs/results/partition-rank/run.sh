@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Call 1 of 2 (about 3 minutes): the radix scatter ranking by subgroupPartitionNV (RadixRank::Partition), which
-# the lab now takes by default wherever the device has VK_NV_shader_subgroup_partitioned (RadixRank::Auto).
+# the packed build took by default wherever the device has VK_NV_shader_subgroup_partitioned (RadixRank::Auto).
 # Part 1: the GPU tests of sorting and the invariant under the new default, with synchronization validation
 # (GpuSortTest.OtherRankingMatchesStableSort runs the ballots there). Part 2: sortbench, ballot against
 # partition at the frame's counts (0.9M-8.4M pairs), 23-bit keys, uniform and few-valued, every dispatch timed,
