@@ -19,6 +19,19 @@ appendRows() {
   [ -s "$2" ] || head -1 "$1" | sed "s/^/$3,/" > "$2"
   tail -n +2 "$1" | sed "s/^/$4,/" >> "$2"
 }
+# sortbenchRows NAME HEADER_PREFIX ROW_PREFIX BINARY SORTBENCH_ARGS...: one sortbench run (60 s at most) with every
+# dispatch timed; its rows to $OUT/NAME.csv and $OUT/NAME-steps.csv behind ROW_PREFIX (appendRows); a run that fails
+# goes to $OUT/errors.txt with its last lines, and adds no rows.
+sortbenchRows() {
+  local name=$1 header=$2 row=$3 bin=$4; shift 4
+  rm -f /tmp/sb.csv /tmp/st.csv
+  if timeout 60 $bin sortbench "$@" --csv /tmp/sb.csv --steps /tmp/st.csv > /tmp/sb.log 2>&1; then
+    appendRows /tmp/sb.csv $OUT/$name.csv $header $row
+    appendRows /tmp/st.csv $OUT/$name-steps.csv $header $row
+  else
+    echo "sortbench $row exit $?" >> $OUT/errors.txt; tail -3 /tmp/sb.log >> $OUT/errors.txt
+  fi
+}
 # benchBinaries CSV CASES SIZES TIMEOUT NAME=BINARY...: the frame bench of each binary at 4 bounces, two-point keys,
 # radix, split trace and shade, one round each, the binaries interleaved over two rounds; rows to $OUT/CSV behind
 # (binary, round); a bench that fails or runs past TIMEOUT seconds goes to $OUT/errors.txt.

@@ -18,11 +18,8 @@ for round in 1 2; do
   for rank in $ranks; do
     for dist in uniform few; do
       B=build-device/raylab; r=$rank; [ $rank = leader ] && { B=.dev/leader/raylab; r=partition; }
-      timeout 60 $B sortbench --n 921600,2097152,4194304,8388608 --bits 23 --dist $dist --sort radix \
-        --radix-rank $r --repeat 20 --csv /tmp/sb.csv --steps /tmp/st.csv > /tmp/sb.log 2>&1 \
-        || { echo "sortbench $rank $dist exit $?" >> $OUT/errors.txt; tail -3 /tmp/sb.log >> $OUT/errors.txt; }
-      appendRows /tmp/sb.csv $OUT/rank.csv round,variant $round,$rank
-      appendRows /tmp/st.csv $OUT/rank-steps.csv round,variant $round,$rank
+      sortbenchRows rank round,variant $round,$rank $B --n 921600,2097152,4194304,8388608 --bits 23 --dist $dist \
+        --sort radix --radix-rank $r --repeat 20
     done
   done
 done

@@ -27,11 +27,8 @@ for round in 1 2; do
     for shape in 256:8 256:4 128:8 128:4 few; do
       g=${shape%%:*} k=${shape#*:} dist=uniform
       [ $shape = few ] && { g=256 k=8 dist=few; }
-      timeout 60 $B sortbench --n 921600,2097152,8388608 --bits 23 --dist $dist --sort radix --radix-group $g \
-        --radix-kpt $k --repeat 20 --csv /tmp/sb.csv --steps /tmp/st.csv > /tmp/sb.log 2>&1 \
-        || { echo "sortbench $v $shape exit $?" >> $OUT/errors.txt; tail -3 /tmp/sb.log >> $OUT/errors.txt; }
-      appendRows /tmp/sb.csv $OUT/shape.csv round,variant,group,kpt $round,$v,$g,$k
-      appendRows /tmp/st.csv $OUT/shape-steps.csv round,variant,group,kpt $round,$v,$g,$k
+      sortbenchRows shape round,variant,group,kpt $round,$v,$g,$k $B --n 921600,2097152,8388608 --bits 23 \
+        --dist $dist --sort radix --radix-group $g --radix-kpt $k --repeat 20
     done
   done
 done

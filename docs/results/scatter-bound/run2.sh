@@ -19,11 +19,8 @@ done
 for round in 1 2; do
   for v in $variants; do
     for dist in uniform few; do
-      timeout 60 $(binary $v) sortbench --n 921600,2097152,8388608 --bits 23 --dist $dist --sort radix --repeat 20 \
-        --csv /tmp/sb.csv --steps /tmp/st.csv > /tmp/sb.log 2>&1 \
-        || { echo "sortbench $v $dist exit $?" >> $OUT/errors.txt; tail -3 /tmp/sb.log >> $OUT/errors.txt; }
-      appendRows /tmp/sb.csv $OUT/prefetch.csv round,variant $round,$v
-      appendRows /tmp/st.csv $OUT/prefetch-steps.csv round,variant $round,$v
+      sortbenchRows prefetch round,variant $round,$v $(binary $v) --n 921600,2097152,8388608 --bits 23 \
+        --dist $dist --sort radix --repeat 20
     done
   done
 done

@@ -9,10 +9,7 @@ source docs/results/device-unpack.sh
 for round in 1 2; do
   for v in base coalesced norank neither; do
     B=.dev/$v/raylab; [ $v = base ] && B=build-device/raylab
-    RAYLAB_DIAG_NOCHECK=1 timeout 30 $B sortbench --n 2097152,8388608 --bits 23 --sort radix --repeat 20 \
-      --csv /tmp/sb.csv --steps /tmp/st.csv > /tmp/sb.log 2>&1 \
-      || { echo "sortbench $v exit $?" >> $OUT/errors.txt; tail -3 /tmp/sb.log >> $OUT/errors.txt; }
-    appendRows /tmp/sb.csv $OUT/diag.csv round,variant $round,$v
-    appendRows /tmp/st.csv $OUT/diag-steps.csv round,variant $round,$v
+    RAYLAB_DIAG_NOCHECK=1 sortbenchRows diag round,variant $round,$v $B --n 2097152,8388608 --bits 23 --sort radix \
+      --repeat 20
   done
 done
