@@ -14,8 +14,8 @@
 // contiguous writes, the ranking about 26%, and the rest moves 1.8 TB/s. It takes 69 registers, so 3 groups of
 // 256 an SM, and none of these paid: the lowest lane of a digit advancing its count by an atomic and a shuffle
 // handing it on (no subgroup barriers; level), the values loaded with the keys or the next tile's keys prefetched
-// (-0.6% to +3%), the reordered tile behind the histograms filled as places become known (1.9x slower: its loads
-// no longer overlap), 4 keys an invocation or groups of 128 (12-61% slower at 2.1M-8.4M pairs).
+// (-0.6% to +3%), the reordered tile behind the histograms filled as places become known (1.9x slower; likely its
+// loads no longer overlap), 4 keys an invocation or groups of 128 (12-61% slower at 2.1M-8.4M pairs).
 //
 // The includer declares the push block `pc` (keysIn, valuesIn, keysOut, valuesOut, shift, keyBits),
 // the specialization constants SG_SIZE (id 1) and KPT (id 2), and includes sort_scan.glsl.
