@@ -3,7 +3,7 @@
 // functions as the wavefront stages, so both estimate the same integral with the same random streams.
 // Reordering a work group's paths through shared memory between bounces (by the direction cell of the next ray)
 // renders the same image and gives warps of more alike rays, but a group then waits at every bounce for its
-// slowest warp: on an H100 frames took 1.04-1.12x as long with groups of 64 and 1.23-2.38x with 256-512
+// slowest warp (the likely cost): on an H100 frames took 1.04-1.12x as long with groups of 64 and 1.23-2.38x with 256-512
 // (docs/results/group-sort-megakernel, whose group-sort.patch holds it).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
