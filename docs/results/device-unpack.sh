@@ -19,6 +19,9 @@ appendRows() {
   [ -s "$2" ] || head -1 "$1" | sed "s/^/$3,/" > "$2"
   tail -n +2 "$1" | sed "s/^/$4,/" >> "$2"
 }
+# packedRaylab NAME: the raylab binary of variant NAME: build-device/raylab for `base`, else the one device-pack
+# packed as NAME=BINARY (.dev/NAME/raylab).
+packedRaylab() { [ "$1" = base ] && echo build-device/raylab || echo ".dev/$1/raylab"; }
 # sortbenchRows NAME HEADER_PREFIX ROW_PREFIX BINARY SORTBENCH_ARGS...: one sortbench run (60 s at most) with every
 # dispatch timed; its rows to $OUT/NAME.csv and $OUT/NAME-steps.csv behind ROW_PREFIX (appendRows); a run that fails
 # goes to $OUT/errors.txt with its last lines, and adds no rows.

@@ -13,9 +13,8 @@
 source docs/results/device-unpack.sh
 t0=$SECONDS
 variants="base leader separate both"
-binary() { [ $1 = base ] && echo build-device/raylab || echo .dev/$1/raylab; }
 for v in $variants; do
-  B=$(binary $v)
+  B=$(packedRaylab $v)
   echo "== $B" >> $OUT/shader-stats.txt
   RAYLAB_SHADER_STATS=1 timeout 60 $B sortbench --n 8388608 --bits 23 --sort radix --repeat 20 \
     >> $OUT/shader-stats.txt 2>&1 || echo "shader-stats $B exit $?" >> $OUT/errors.txt
@@ -23,7 +22,7 @@ done
 echo "stats: $((SECONDS - t0)) s"; t0=$SECONDS
 for round in 1 2; do
   for v in $variants; do
-    B=$(binary $v)
+    B=$(packedRaylab $v)
     for shape in 256:8 256:4 128:8 128:4 few; do
       g=${shape%%:*} k=${shape#*:} dist=uniform
       [ $shape = few ] && { g=256 k=8 dist=few; }

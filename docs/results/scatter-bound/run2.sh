@@ -10,16 +10,15 @@
 source docs/results/device-unpack.sh
 t0=$SECONDS
 variants="base early prefetch earlypre"
-binary() { [ $1 = base ] && echo build-device/raylab || echo .dev/$1/raylab; }
 for v in $variants; do
   echo "== $v" >> $OUT/shader-stats2.txt
-  RAYLAB_SHADER_STATS=1 timeout 30 $(binary $v) sortbench --n 8388608 --bits 23 --sort radix --repeat 5 2>&1 \
+  RAYLAB_SHADER_STATS=1 timeout 30 $(packedRaylab $v) sortbench --n 8388608 --bits 23 --sort radix --repeat 5 2>&1 \
     | grep scatter >> $OUT/shader-stats2.txt
 done
 for round in 1 2; do
   for v in $variants; do
     for dist in uniform few; do
-      sortbenchRows prefetch round,variant $round,$v $(binary $v) --n 921600,2097152,8388608 --bits 23 \
+      sortbenchRows prefetch round,variant $round,$v $(packedRaylab $v) --n 921600,2097152,8388608 --bits 23 \
         --dist $dist --sort radix --repeat 20
     done
   done

@@ -8,8 +8,7 @@
 source docs/results/device-unpack.sh
 for round in 1 2; do
   for v in base coalesced norank neither; do
-    B=.dev/$v/raylab; [ $v = base ] && B=build-device/raylab
-    RAYLAB_DIAG_NOCHECK=1 sortbenchRows diag round,variant $round,$v $B --n 2097152,8388608 --bits 23 --sort radix \
+    RAYLAB_DIAG_NOCHECK=1 sortbenchRows diag round,variant $round,$v $(packedRaylab $v) --n 2097152,8388608 --bits 23 --sort radix \
       --repeat 20
   done
 done
